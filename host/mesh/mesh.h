@@ -1,0 +1,34 @@
+// A triangle mesh with per-vertex attributes (OBJ's separate v/vt/vn indices
+// are split into unique vertices on load).
+#pragma once
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace tsis {
+
+struct Mesh {
+    std::string name;                 // for messages: file path or "builtin:NAME"
+    std::vector<glm::vec3> positions;  // mm after normalizeMesh()
+    std::vector<glm::vec3> normals;    // empty, or one per vertex
+    std::vector<glm::vec2> uvs;        // empty, or one per vertex (atlas coordinates)
+    std::vector<glm::uvec3> triangles;
+
+    bool hasNormals() const { return !normals.empty(); }
+    bool hasUVs() const { return !uvs.empty(); }
+    double surfaceArea() const;       // Σ triangle areas (mm²)
+    double triangleArea(size_t t) const;
+    double triangleUVArea(size_t t) const;  // unsigned
+};
+
+// DESIGN §2: centre on the bounding-box centre and scale so the bounding-box
+// diagonal equals sizeMm.
+void normalizeMesh(Mesh& mesh, double sizeMm);
+
+// Area-weighted face normals when the mesh has none.
+void ensureNormals(Mesh& mesh);
+
+}  // namespace tsis

@@ -1,0 +1,24 @@
+// Loading meshes from OFF, OBJ and PLY files and the built-in procedural ones.
+// Every failure is a tsis::Error naming the file and the problem.
+#pragma once
+
+#include <string>
+
+#include "mesh/mesh.h"
+
+namespace tsis {
+
+// `spec` is a path (format from its extension, .off/.obj/.ply), "builtin:NAME",
+// or a bare name resolved under the unpacked data meshes (data/meshes/NAME.off).
+Mesh loadMesh(const std::string& spec);
+
+Mesh loadOFF(const std::string& path);
+Mesh loadOBJ(const std::string& path);
+Mesh loadPLY(const std::string& path);
+
+// Parsers from memory (used by the loaders and the fuzz targets).
+Mesh parseOFF(const std::string& text, const std::string& name);
+Mesh parseOBJ(const std::string& text, const std::string& name);
+Mesh parsePLY(const std::string& bytes, const std::string& name);
+
+}  // namespace tsis

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <chrono>
+
+namespace tsis {
+
+// Wall-clock stopwatch in milliseconds (host-side stages).
+class Timer {
+  public:
+    Timer() : start_(std::chrono::steady_clock::now()) {}
+    double ms() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
+            .count();
+    }
+    void reset() { start_ = std::chrono::steady_clock::now(); }
+
+  private:
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace tsis

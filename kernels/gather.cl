@@ -1,0 +1,1 @@
+#include "tsis_shared.h"

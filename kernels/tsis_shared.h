@@ -1,0 +1,42 @@
+/* Structs and constants read by both the host (C++) and the OpenCL kernels.
+ * Defined once here; kernels get it inlined at build time (cmake/Embed.cmake),
+ * the host includes it directly. Plain float fields only, so the layout is the
+ * same on both sides without packing pragmas. */
+#ifndef TSIS_SHARED_H
+#define TSIS_SHARED_H
+
+#ifndef __OPENCL_VERSION__
+#include <cstdint>
+typedef uint32_t tsis_uint;
+#else
+typedef uint tsis_uint;
+#endif
+
+/* One importance sample of the flux atlas: where it is, and its estimator
+ * weight per channel w_c = Phi_i(c) / (N p_i), with p_i = Y(Phi_i) / sum Y.
+ * B(xo) = sum_i w_i * Rd(|xo - x_i|). */
+typedef struct {
+    float px, py, pz;
+    float texel; /* atlas texel index (as float, exact below 2^24) for debugging views */
+    float wr, wg, wb;
+    float pad;
+} TsisSample;
+
+/* A radially symmetric profile f(r) (Rd, Rd*Wl, Rd*Wg) tabulated per channel at
+ * TSIS_TABLE_SIZE points r_k = k * r_max / (TSIS_TABLE_SIZE - 1), stored as
+ * float4 (r, g, b, 0); linear interpolation, zero beyond r_max. */
+#define TSIS_TABLE_SIZE 8192
+
+typedef struct {
+    float r_max;
+    float inv_step; /* (TSIS_TABLE_SIZE - 1) / r_max */
+    tsis_uint size;
+    tsis_uint pad;
+} TsisTableInfo;
+
+/* Luminance weights (Rec. 709) used for importance: Y(Phi). */
+#define TSIS_LUMA_R 0.2126f
+#define TSIS_LUMA_G 0.7152f
+#define TSIS_LUMA_B 0.0722f
+
+#endif /* TSIS_SHARED_H */
