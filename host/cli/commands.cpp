@@ -1,12 +1,163 @@
 #include "cli/commands.h"
 
 #include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "cli/scene_options.h"
+#include "image/image_io.h"
+#include "physics/report.h"
+#include "render/renderer.h"
+#include "util/error.h"
+#include "util/output_file.h"
 
 namespace tsis {
 
-int runCli(int, char**) {
-    std::fprintf(stderr, "tsis: not yet\n");
-    return 1;
+namespace {
+
+constexpr const char* kTopUsage = R"(tsis — real-time translucent rendering by texture-space importance sampling
+
+usage: tsis <command> [options]      (no command: render the default scene)
+
+commands:
+  render      render a frame to a PNG (and AOVs, stats)
+  materials   list the preset materials with their coefficients
+  dipole      evaluate the dipole profile Rd(r) of a material
+  help        this text; `tsis <command> --help` for a command's options
+)";
+
+struct Command {
+    const char* name;
+    int (*run)(const std::vector<std::string>& argv);
+};
+
+bool wantsHelp(const std::vector<std::string>& argv) {
+    for (const std::string& a : argv)
+        if (a == "--help" || a == "-h") return true;
+    return false;
+}
+
+std::vector<OptionSpec> renderSpecs() {
+    std::vector<OptionSpec> specs = sceneOptionSpecs();
+    specs.push_back({"output|o", true, false, "FILE  output PNG (default tsis.png)"});
+    specs.push_back({"aov", true, false, "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, flux_atlas"});
+    specs.push_back({"stats", true, false, "FILE.json  per-stage timings, bytes, counts"});
+    return specs;
+}
+
+int runRender(const std::vector<std::string>& argv) {
+    const std::vector<OptionSpec> specs = renderSpecs();
+    if (wantsHelp(argv)) {
+        std::cout << usageText("tsis render [options]", specs);
+        return 0;
+    }
+    Args args("render", specs, argv);
+    if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
+    Scene scene = sceneFromArgs(args);
+    RenderOptions options = renderOptionsFromArgs(args);
+    const std::string output = args.getString("output", "tsis.png");
+    const auto aovDir = args.value("aov");
+    options.keepAovs = aovDir.has_value();
+
+    Renderer renderer(args.getString("cl-device", ""));
+    FrameResult frame = renderer.render(scene, options);
+
+    writeImage8(output, frame.width, frame.height, 3, frame.rgb8);
+    if (aovDir) {
+        std::filesystem::create_directories(*aovDir);
+        auto path = [&](const char* name) { return (std::filesystem::path(*aovDir) / name).string(); };
+        writeImageF(path("radiosity.exr"), frame.radiosity, {"R", "G", "B"});
+        writeImageF(path("radiance.exr"), frame.radiance, {"R", "G", "B"});
+        writeImageF(path("position.exr"), frame.position, {"X", "Y", "Z"});
+        writeImageF(path("normal.exr"), frame.normal, {"X", "Y", "Z"});
+        writeImageF(path("coverage.exr"), frame.coverage, {"Y"});
+        writeImageF(path("flux_atlas.exr"), frame.fluxAtlas, {"R", "G", "B"});
+    }
+    if (auto statsPath = args.value("stats")) {
+        Json j = frame.stats.toJson();
+        j.set("mesh", scene.mesh.name);
+        j.set("material", scene.material.name);
+        j.set("lavg", frame.lavg);
+        writeTextFile(*statsPath, j.dump() + "\n");
+    }
+    return 0;
+}
+
+int runMaterials(const std::vector<std::string>& argv) {
+    if (wantsHelp(argv)) {
+        std::cout << "usage: tsis materials\n\nLists the preset materials (Jensen et al. 2001).\n";
+        return 0;
+    }
+    Args args("materials", {}, argv);
+    if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
+    std::cout << materialsTable();
+    return 0;
+}
+
+int runDipole(const std::vector<std::string>& argv) {
+    const std::vector<OptionSpec> specs = {
+        {"material", true, false, "NAME  preset (default marble)"},
+        {"sigma-s", true, false, "R,G,B  reduced scattering σs' (1/mm)"},
+        {"sigma-a", true, false, "R,G,B  absorption σa (1/mm)"},
+        {"eta", true, false, "E  relative index of refraction"},
+        {"r", true, false, "LIST  comma-separated radii in mm (default 0,0.1,1)"},
+        {"rp-bound", true, false, "B  importance lower bound for Rp (default 0.1)"},
+        {"json", false, false, "print JSON"},
+    };
+    if (wantsHelp(argv)) {
+        std::cout << usageText("tsis dipole [options]", specs);
+        return 0;
+    }
+    Args args("dipole", specs, argv);
+    if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
+    Material m = materialFromArgs(args);
+    std::vector<double> radii = parseList("--r", args.getString("r", "0,0.1,1"));
+    for (double r : radii)
+        if (r < 0) fail("--r: radius ", r, " is negative");
+    Json report = dipoleReport(m, radii, args.getDouble("rp-bound", 0.1, 1e-9, 1e9));
+    std::cout << report.dump(2) << "\n";
+    return 0;
+}
+
+const Command kCommands[] = {
+    {"render", runRender},
+    {"materials", runMaterials},
+    {"dipole", runDipole},
+};
+
+}  // namespace
+
+int runCli(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.empty()) return runRender({});
+        const std::string cmd = args[0];
+        if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+            std::cout << kTopUsage;
+            return 0;
+        }
+        std::vector<std::string> rest(args.begin() + 1, args.end());
+        for (const Command& c : kCommands)
+            if (cmd == c.name) return c.run(rest);
+        if (!cmd.empty() && cmd[0] == '-') return runRender(args);
+        fail("unknown command '", cmd, "' (see tsis help)");
+    } catch (const Error& e) {
+        std::fprintf(stderr, "tsis: error: %s\n", e.what());
+        return 1;
+    } catch (const cl::Error& e) {
+        std::fprintf(stderr, "tsis: error: OpenCL call %s failed with code %d\n", e.what(), e.err());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "tsis: error: out of memory\n");
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "tsis: error: %s\n", e.what());
+        return 1;
+    }
 }
 
 }  // namespace tsis

@@ -1,0 +1,60 @@
+#include "gl/gpu_mesh.h"
+
+#include <vector>
+
+#include "gl/gl_context.h"
+#include "util/error.h"
+
+namespace tsis {
+
+GpuMesh::GpuMesh(const Mesh& mesh) {
+    TSIS_CHECK(mesh.hasNormals());
+    TSIS_CHECK(mesh.hasUVs());
+    constexpr int kStride = 9;
+    std::vector<float> data;
+    data.reserve(mesh.triangles.size() * 3 * kStride);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        double uvArea = mesh.triangleUVArea(t);
+        // A triangle without UV area holds no texel; its ratio is never read.
+        float ratio = uvArea > 0 ? static_cast<float>(mesh.triangleArea(t) / uvArea) : 0.0f;
+        for (int k = 0; k < 3; ++k) {
+            unsigned v = mesh.triangles[t][k];
+            const glm::vec3& p = mesh.positions[v];
+            const glm::vec3& n = mesh.normals[v];
+            const glm::vec2& uv = mesh.uvs[v];
+            data.insert(data.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, ratio});
+        }
+    }
+    count_ = mesh.triangles.size() * 3;
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(1, &vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)),
+                 data.data(), GL_STATIC_DRAW);
+    const GLsizei stride = kStride * sizeof(float);
+    auto attrib = [&](GLuint index, GLint size, size_t offset) {
+        glEnableVertexAttribArray(index);
+        glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(offset * sizeof(float)));
+    };
+    attrib(0, 3, 0);  // position
+    attrib(1, 3, 3);  // normal
+    attrib(2, 2, 6);  // uv
+    attrib(3, 1, 8);  // area ratio
+    glBindVertexArray(0);
+    checkGl("GpuMesh upload");
+}
+
+GpuMesh::~GpuMesh() {
+    if (vbo_) glDeleteBuffers(1, &vbo_);
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+void GpuMesh::draw() const {
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count_));
+    glBindVertexArray(0);
+}
+
+}  // namespace tsis

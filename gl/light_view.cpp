@@ -1,0 +1,77 @@
+#include "gl/light_view.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+glm::vec3 anyPerpendicularUp(const glm::vec3& dir) {
+    return std::abs(dir.y) < 0.99f * glm::length(dir) ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+}
+
+}  // namespace
+
+LightView makeLightView(const Light& light, float radius, int resolution) {
+    LightView lv;
+    lv.light = light;
+    const glm::vec3 centre(0.0f);
+    const float margin = 1.05f;
+    if (light.type == Light::Type::Point) {
+        float d = glm::length(light.vec - centre);
+        if (!(d > radius * margin))
+            fail("point light at (", light.vec.x, ",", light.vec.y, ",", light.vec.z,
+                 ") is inside the object's bounding sphere (radius ", radius * margin,
+                 " mm); place it farther out");
+        float half = std::asin(std::min(1.0f, radius * margin / d));
+        glm::mat4 view = glm::lookAt(light.vec, centre, anyPerpendicularUp(centre - light.vec));
+        float nearP = std::max(d - radius * margin, d * 1e-3f);
+        glm::mat4 proj = glm::perspective(2.0f * half, 1.0f, nearP, d + radius * margin);
+        lv.viewProj = proj * view;
+        lv.tanHalf = std::tan(half);
+        lv.texelMm = 2.0f * d * lv.tanHalf / static_cast<float>(resolution);
+    } else {
+        float len = glm::length(light.vec);
+        if (!(len > 0)) fail("directional light has a zero direction");
+        glm::vec3 dir = light.vec / len;
+        float r = radius * margin;
+        glm::vec3 eye = centre - dir * (2.0f * r);
+        glm::mat4 view = glm::lookAt(eye, centre, anyPerpendicularUp(dir));
+        glm::mat4 proj = glm::ortho(-r, r, -r, r, r, 3.0f * r);
+        lv.viewProj = proj * view;
+        lv.texelMm = 2.0f * r / static_cast<float>(resolution);
+        lv.texelAreaMm = lv.texelMm * lv.texelMm;
+    }
+    lv.target = std::make_unique<RenderTarget>(
+        resolution, resolution, std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F}, true);
+    return lv;
+}
+
+void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
+                int firstUnit) {
+    TSIS_CHECK_LE(lights.size(), static_cast<size_t>(kMaxLights));
+    program.set("u_lightCount", static_cast<int>(lights.size()));
+    program.set("u_eta", eta);
+    for (int i = 0; i < kMaxLights; ++i) {
+        std::string idx = "[" + std::to_string(i) + "]";
+        // Every sampler in the array needs a valid unit, used or not.
+        int unit = firstUnit + i;
+        program.set(("u_shadowMap" + idx).c_str(), unit);
+        if (i >= static_cast<int>(lights.size())) continue;
+        const LightView& lv = lights[static_cast<size_t>(i)];
+        program.set(("u_lightType" + idx).c_str(), lv.light.type == Light::Type::Point ? 0 : 1);
+        program.set(("u_lightVec" + idx).c_str(), lv.light.vec);
+        program.set(("u_lightRgb" + idx).c_str(), lv.light.rgb);
+        program.set(("u_lightViewProj" + idx).c_str(), lv.viewProj);
+        program.set(("u_shadowTexelMm" + idx).c_str(), lv.texelMm);
+        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+        glBindTexture(GL_TEXTURE_2D, lv.target->depth());
+    }
+}
+
+}  // namespace tsis

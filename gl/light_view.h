@@ -1,0 +1,33 @@
+// Each light's view of the object: the projection used for its shadow map and
+// light-view flux map, and the uniforms every shader that lights reads.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <memory>
+#include <vector>
+
+#include "gl/render_target.h"
+#include "gl/shader.h"
+#include "render/scene.h"
+
+namespace tsis {
+
+struct LightView {
+    Light light;
+    glm::mat4 viewProj{1.0f};
+    float tanHalf = 0;       // point lights: tan of half the field of view
+    float texelAreaMm = 0;   // directional: area of one texel (mm²)
+    float texelMm = 0;       // a texel's size at the object centre (shadow offsets)
+    std::unique_ptr<RenderTarget> target;  // flux, position; depth = shadow map
+};
+
+// Projections that fit the object's bounding sphere (centre 0, radius R).
+// Throws tsis::Error for a point light inside that sphere or a zero direction.
+LightView makeLightView(const Light& light, float boundingRadius, int resolution);
+
+// Sets u_lightCount, u_light*, u_shadow* and u_eta on `program`, binding the
+// shadow maps to texture units firstUnit…
+void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
+                int firstUnit);
+
+}  // namespace tsis

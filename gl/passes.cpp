@@ -1,0 +1,128 @@
+#include "gl/passes.h"
+
+#include "gl/gl_context.h"
+
+namespace tsis {
+
+namespace {
+
+// Texture units: 0–3 for a pass's own inputs, 4… for shadow maps.
+constexpr int kShadowUnit = 4;
+
+void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
+    p.set(name, unit);
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_2D, tex);
+}
+
+// (Re)creates a target when missing or of another size.
+void ensureTarget(std::unique_ptr<RenderTarget>& t, int w, int h, std::vector<GLenum> formats,
+                  bool depth) {
+    if (!t || t->width() != w || t->height() != h)
+        t = std::make_unique<RenderTarget>(w, h, std::move(formats), depth);
+}
+
+}  // namespace
+
+LightViewPass::LightViewPass() : program_("mesh.vert", "light_view.frag") {}
+
+void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta) {
+    program_.use();
+    bindLights(program_, lights, eta, kShadowUnit);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    for (size_t i = 0; i < lights.size(); ++i) {
+        // The shadow map being written must not be bound for sampling.
+        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(kShadowUnit + i));
+        glBindTexture(GL_TEXTURE_2D, 0);
+        RenderTarget& t = *lights[i].target;
+        t.bindAndClear();
+        program_.set("u_viewProj", lights[i].viewProj);
+        program_.set("u_light", static_cast<int>(i));
+        program_.set("u_tanHalf", lights[i].tanHalf);
+        program_.set("u_texelAreaMm", lights[i].texelAreaMm);
+        program_.set("u_resolution", glm::vec2(t.width(), t.height()));
+        mesh.draw();
+    }
+    glDisable(GL_DEPTH_TEST);
+    checkGl("LightViewPass");
+}
+
+AtlasPass::AtlasPass() : program_("atlas.vert", "atlas.frag") {}
+
+void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
+                    int resolution) {
+    ensureTarget(target_, resolution, resolution, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, false);
+    target_->bindAndClear();
+    program_.use();
+    bindLights(program_, lights, eta, kShadowUnit);
+    program_.set("u_texelArea", 1.0f / (static_cast<float>(resolution) * resolution));
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    mesh.draw();
+    checkGl("AtlasPass");
+}
+
+GBufferPass::GBufferPass() : program_("mesh.vert", "gbuffer.frag") {}
+
+void GBufferPass::run(const GpuMesh& mesh, const glm::mat4& viewProj, int width, int height) {
+    ensureTarget(target_, width, height, {GL_RGBA32F, GL_RGBA32F}, true);
+    target_->bindAndClear();
+    program_.use();
+    program_.set("u_viewProj", viewProj);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    mesh.draw();
+    glDisable(GL_DEPTH_TEST);
+    checkGl("GBufferPass");
+}
+
+CompositePass::CompositePass()
+    : radianceProgram_("fullscreen.vert", "radiance.frag"),
+      toneMapProgram_("fullscreen.vert", "tonemap.frag") {
+    glGenVertexArrays(1, &emptyVao_);
+}
+
+void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbuffer,
+                             const glm::vec3& eye, float eta) {
+    int w = gbuffer.width(), h = gbuffer.height();
+    ensureTarget(radianceTarget_, w, h, {GL_RGBA32F}, false);
+    if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
+        radiosity_ = std::make_unique<FloatTexture>(w, h);
+    radiosity_->upload(radiosityRGBA);
+    radianceTarget_->bindAndClear();
+    radianceProgram_.use();
+    radianceProgram_.set("u_eta", eta);
+    radianceProgram_.set("u_eye", eye);
+    bindTexture(radianceProgram_, "u_radiosity", 0, radiosity_->id());
+    bindTexture(radianceProgram_, "u_position", 1, gbuffer.color(0));
+    bindTexture(radianceProgram_, "u_normal", 2, gbuffer.color(1));
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    checkGl("CompositePass::radiance");
+}
+
+void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
+                            const glm::vec3& eye, float eta, float key, float lavg,
+                            float specular, float shininess) {
+    int w = gbuffer.width(), h = gbuffer.height();
+    ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
+    colorTarget_->bindAndClear();
+    toneMapProgram_.use();
+    bindLights(toneMapProgram_, lights, eta, kShadowUnit);
+    toneMapProgram_.set("u_eye", eye);
+    toneMapProgram_.set("u_key", key);
+    toneMapProgram_.set("u_lavg", lavg);
+    toneMapProgram_.set("u_specular", specular);
+    toneMapProgram_.set("u_shininess", shininess);
+    bindTexture(toneMapProgram_, "u_radiance", 0, radianceTarget_->color(0));
+    bindTexture(toneMapProgram_, "u_position", 1, gbuffer.color(0));
+    bindTexture(toneMapProgram_, "u_normal", 2, gbuffer.color(1));
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    checkGl("CompositePass::toneMap");
+}
+
+}  // namespace tsis

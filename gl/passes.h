@@ -1,0 +1,74 @@
+// The GL passes of a frame (DESIGN §1). Each owns its program and its render
+// target and is reused across frames; a target is re-made only when its size
+// changes. What each reads and writes is declared where the frame graph
+// schedules it (host/render/renderer.cpp).
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+#include "gl/gpu_mesh.h"
+#include "gl/light_view.h"
+#include "gl/render_target.h"
+#include "gl/shader.h"
+#include "render/scene.h"
+
+namespace tsis {
+
+// Pass B: per light, depth (shadow map), light-view flux and position maps.
+class LightViewPass {
+  public:
+    LightViewPass();
+    void run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta);
+
+  private:
+    ShaderProgram program_;
+};
+
+// Pass A: flux, position and normal atlases (attachments 0, 1, 2).
+class AtlasPass {
+  public:
+    AtlasPass();
+    void run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta, int resolution);
+    const RenderTarget& target() const { return *target_; }
+
+  private:
+    ShaderProgram program_;
+    std::unique_ptr<RenderTarget> target_;
+};
+
+// Pass C: camera G-buffer, position (w = coverage) and normal (attachments 0, 1).
+class GBufferPass {
+  public:
+    GBufferPass();
+    void run(const GpuMesh& mesh, const glm::mat4& viewProj, int width, int height);
+    const RenderTarget& target() const { return *target_; }
+
+  private:
+    ShaderProgram program_;
+    std::unique_ptr<RenderTarget> target_;
+};
+
+// Composite: radiance L = Ft/π·B, then tone map + specular + sRGB.
+class CompositePass {
+  public:
+    CompositePass();
+    // radiosity: width*height RGBA floats, GL row order. Returns nothing; read
+    // radiance() after it, then call toneMap().
+    void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
+                  float eta);
+    void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
+                 const glm::vec3& eye, float eta, float key, float lavg, float specular,
+                 float shininess);
+    const RenderTarget& radianceTarget() const { return *radianceTarget_; }
+    const RenderTarget& colorTarget() const { return *colorTarget_; }
+
+  private:
+    ShaderProgram radianceProgram_, toneMapProgram_;
+    std::unique_ptr<FloatTexture> radiosity_;
+    std::unique_ptr<RenderTarget> radianceTarget_, colorTarget_;
+    GLuint emptyVao_ = 0;
+};
+
+}  // namespace tsis

@@ -1,0 +1,57 @@
+// A framebuffer object with float colour attachments and an optional depth
+// texture (which doubles as a shadow map). Owned textures, read back as floats.
+#pragma once
+
+#include <vector>
+
+#include "gl/gl.h"
+
+namespace tsis {
+
+class RenderTarget {
+  public:
+    // colorFormats: internal formats (GL_RGBA32F, GL_RGBA8, …), one per attachment.
+    RenderTarget(int width, int height, std::vector<GLenum> colorFormats, bool depth);
+    ~RenderTarget();
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+
+    // Binds, sets the viewport and clears colour (to zero) and depth.
+    void bindAndClear();
+    int width() const { return width_; }
+    int height() const { return height_; }
+    GLuint color(int i) const { return colors_[static_cast<size_t>(i)]; }
+    GLuint depth() const { return depth_; }
+
+    // Attachment i as RGBA floats, GL order (row 0 = bottom).
+    std::vector<float> readRGBA(int i) const;
+    // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
+    std::vector<unsigned char> readRGBA8(int i) const;
+
+    size_t bytesPerTexel(int i) const;
+
+  private:
+    int width_, height_;
+    std::vector<GLenum> formats_;
+    std::vector<GLuint> colors_;
+    GLuint depth_ = 0, fbo_ = 0;
+};
+
+// A 2D float texture uploaded from host data (RGBA, row 0 = bottom).
+class FloatTexture {
+  public:
+    FloatTexture(int width, int height);
+    ~FloatTexture();
+    FloatTexture(const FloatTexture&) = delete;
+    FloatTexture& operator=(const FloatTexture&) = delete;
+    void upload(const float* rgba);
+    GLuint id() const { return id_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+  private:
+    int width_, height_;
+    GLuint id_ = 0;
+};
+
+}  // namespace tsis

@@ -1,0 +1,76 @@
+#include "gl/shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <vector>
+
+#include "util/embedded.h"
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+GLuint compile(GLenum stage, const std::string& file) {
+    std::string src = "#version 450 core\n";
+    src += embeddedText(embeddedShaders(), "common.glsl");
+    src += "\n#line 1 1\n";  // messages: source string 1 = the stage's own file
+    src += embeddedText(embeddedShaders(), file);
+    GLuint s = glCreateShader(stage);
+    const char* text = src.c_str();
+    glShaderSource(s, 1, &text, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint len = 0;
+        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+        std::vector<char> log(static_cast<size_t>(len) + 1);
+        glGetShaderInfoLog(s, len, nullptr, log.data());
+        checkFailed(__FILE__, __LINE__, concat("GLSL compile of ", file, " failed:\n", log.data()));
+    }
+    return s;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile)
+    : name_(vertexFile + "+" + fragmentFile) {
+    GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
+    GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    id_ = glCreateProgram();
+    glAttachShader(id_, vs);
+    glAttachShader(id_, fs);
+    glLinkProgram(id_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint len = 0;
+        glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
+        std::vector<char> log(static_cast<size_t>(len) + 1);
+        glGetProgramInfoLog(id_, len, nullptr, log.data());
+        checkFailed(__FILE__, __LINE__, concat("GLSL link of ", name_, " failed:\n", log.data()));
+    }
+}
+
+ShaderProgram::~ShaderProgram() {
+    if (id_) glDeleteProgram(id_);
+}
+
+GLint ShaderProgram::location(const char* name) const { return glGetUniformLocation(id_, name); }
+void ShaderProgram::set(const char* name, int v) const { glProgramUniform1i(id_, location(name), v); }
+void ShaderProgram::set(const char* name, float v) const {
+    glProgramUniform1f(id_, location(name), v);
+}
+void ShaderProgram::set(const char* name, const glm::vec2& v) const {
+    glProgramUniform2fv(id_, location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, const glm::vec3& v) const {
+    glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, const glm::mat4& m) const {
+    glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(m));
+}
+
+}  // namespace tsis

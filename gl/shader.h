@@ -1,0 +1,35 @@
+// GLSL programs built from the shader files under gl/shaders (embedded at build
+// time). Every stage gets "#version 450 core" and gl/shaders/common.glsl first,
+// so the Fresnel and shadow helpers exist once.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+
+#include "gl/gl.h"
+
+namespace tsis {
+
+class ShaderProgram {
+  public:
+    ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile);
+    ~ShaderProgram();
+    ShaderProgram(const ShaderProgram&) = delete;
+    ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+    void use() const { glUseProgram(id_); }
+    GLint location(const char* name) const;  // -1 when optimised away
+    void set(const char* name, int v) const;
+    void set(const char* name, float v) const;
+    void set(const char* name, const glm::vec2& v) const;
+    void set(const char* name, const glm::vec3& v) const;
+    void set(const char* name, const glm::mat4& m) const;
+
+  private:
+    GLuint id_ = 0;
+    std::string name_;
+};
+
+}  // namespace tsis

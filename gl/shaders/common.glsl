@@ -1,0 +1,68 @@
+// Prepended (after #version) to every tsis shader stage.
+const float PI = 3.14159265358979;
+#define MAX_LIGHTS 8
+
+// Exact unpolarized Fresnel reflectance from air into a medium of relative
+// index eta (DESIGN §2: not Schlick).
+float fresnelR(float eta, float cosI) {
+    cosI = clamp(cosI, 0.0, 1.0);
+    float sin2T = (1.0 - cosI * cosI) / (eta * eta);
+    float cosT = sqrt(max(0.0, 1.0 - sin2T));
+    float rs = (cosI - eta * cosT) / (cosI + eta * cosT);
+    float rp = (eta * cosI - cosT) / (eta * cosI + cosT);
+    return 0.5 * (rs * rs + rp * rp);
+}
+float fresnelT(float eta, float cosI) { return 1.0 - fresnelR(eta, cosI); }
+
+// Lights (DESIGN §2): type 0 = point (vec = position, rgb = intensity),
+// 1 = directional (vec = direction of travel, rgb = irradiance).
+uniform int u_lightCount;
+uniform int u_lightType[MAX_LIGHTS];
+uniform vec3 u_lightVec[MAX_LIGHTS];
+uniform vec3 u_lightRgb[MAX_LIGHTS];
+uniform mat4 u_lightViewProj[MAX_LIGHTS];
+uniform float u_shadowTexelMm[MAX_LIGHTS];  // a shadow-map texel's size at the object
+uniform sampler2DShadow u_shadowMap[MAX_LIGHTS];
+uniform float u_eta;
+
+// Unit vector from p towards light i, and the 1/d² falloff of a point light.
+vec3 toLight(int i, vec3 p, out float falloff) {
+    if (u_lightType[i] == 0) {
+        vec3 d = u_lightVec[i] - p;
+        float d2 = max(dot(d, d), 1e-12);
+        falloff = 1.0 / d2;
+        return d * inversesqrt(d2);
+    }
+    falloff = 1.0;
+    return -normalize(u_lightVec[i]);
+}
+
+// Shadow-map visibility with a normal offset that grows at grazing angles (no
+// acne on curved translucent surfaces) and 3×3 bilinear PCF.
+float visibility(int i, vec3 p, vec3 n, vec3 l) {
+    float cosT = clamp(dot(n, l), 0.0, 1.0);
+    float sinT = sqrt(1.0 - cosT * cosT);
+    vec3 q = p + n * u_shadowTexelMm[i] * (1.0 + 2.0 * sinT);
+    vec4 c = u_lightViewProj[i] * vec4(q, 1.0);
+    vec3 s = c.xyz / c.w * 0.5 + 0.5;
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+    vec2 texel = 1.0 / vec2(textureSize(u_shadowMap[i], 0));
+    float sum = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            sum += texture(u_shadowMap[i], vec3(s.xy + vec2(dx, dy) * texel, s.z - 2e-5));
+    return sum / 9.0;
+}
+
+// E(x) of DESIGN §2, summed over the lights.
+vec3 irradiance(vec3 p, vec3 n) {
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < u_lightCount; ++i) {
+        float falloff;
+        vec3 l = toLight(i, p, falloff);
+        float c = dot(n, l);
+        if (c <= 0.0) continue;
+        e += u_lightRgb[i] * (fresnelT(u_eta, c) * c * falloff * visibility(i, p, n, l));
+    }
+    return e;
+}

@@ -1,0 +1,149 @@
+#include "cli/scene_options.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "mesh/mesh_io.h"
+#include "mesh/uv_check.h"
+#include "physics/material.h"
+#include "util/error.h"
+
+namespace tsis {
+
+const std::vector<OptionSpec>& sceneOptionSpecs() {
+    static const std::vector<OptionSpec> specs = {
+        {"mesh", true, false, "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default builtin:default)"},
+        {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
+        {"material", true, false, "NAME  preset material (default marble; see tsis materials)"},
+        {"sigma-s", true, false, "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
+        {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
+        {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
+        {"light", true, true, "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, irradiance); repeatable"},
+        {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
+        {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
+        {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
+        {"fov", true, false, "DEG  vertical field of view (default 35)"},
+        {"width", true, false, "W  image width (default 512)"},
+        {"height", true, false, "H  image height (default 512)"},
+        {"method", true, false, "NAME  tsis (default); see README for the others"},
+        {"samples", true, false, "N  importance samples (default 900)"},
+        {"seed", true, false, "S  random seed (default 1)"},
+        {"atlas-res", true, false, "R  atlas resolution, a power of two (default 1024)"},
+        {"light-res", true, false, "R  shadow/light-view map resolution (default 1024)"},
+        {"key", true, false, "K  tone-mapping key (default 0.18)"},
+        {"no-specular", false, false, "turn off the Phong highlight"},
+        {"cl-device", true, false, "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
+    };
+    return specs;
+}
+
+Material materialFromArgs(const Args& args) {
+    Material m = presetMaterial(args.getString("material", "marble"));
+    bool custom = false;
+    if (auto v = args.value("sigma-s")) {
+        m.sigmaSPrime = parseVec3("--sigma-s", *v);
+        custom = true;
+    }
+    if (auto v = args.value("sigma-a")) {
+        m.sigmaA = parseVec3("--sigma-a", *v);
+        custom = true;
+    }
+    if (auto v = args.value("eta")) {
+        m.eta = parseNumber("--eta", *v);
+        custom = true;
+    }
+    if (custom) m.name = "custom";
+    validateMaterial(m);
+    return m;
+}
+
+Light parseLight(const std::string& spec) {
+    auto c1 = spec.find(':');
+    auto c2 = c1 == std::string::npos ? c1 : spec.find(':', c1 + 1);
+    if (c2 == std::string::npos)
+        fail("--light '", spec, "': expected point:X,Y,Z:R,G,B or dir:X,Y,Z:R,G,B");
+    std::string kind = spec.substr(0, c1);
+    Light l;
+    if (kind == "point")
+        l.type = Light::Type::Point;
+    else if (kind == "dir")
+        l.type = Light::Type::Directional;
+    else
+        fail("--light '", spec, "': unknown kind '", kind, "' (point or dir)");
+    l.vec = glm::vec3(parseVec3("--light position/direction", spec.substr(c1 + 1, c2 - c1 - 1)));
+    l.rgb = glm::vec3(parseVec3("--light colour", spec.substr(c2 + 1)));
+    if (l.rgb.x < 0 || l.rgb.y < 0 || l.rgb.z < 0)
+        fail("--light '", spec, "': negative intensity");
+    if (l.type == Light::Type::Directional && glm::length(l.vec) == 0.0f)
+        fail("--light '", spec, "': zero direction");
+    return l;
+}
+
+std::vector<Light> defaultLights(double sizeMm) {
+    const float s = static_cast<float>(sizeMm);
+    Light back;
+    back.type = Light::Type::Point;
+    back.vec = glm::vec3(-0.45f, 0.75f, -1.0f) * (1.3f * s);
+    // Intensity so that the irradiance at the object's centre is about 1.
+    back.rgb = glm::vec3(glm::dot(back.vec, back.vec));
+    Light fill;
+    fill.type = Light::Type::Directional;
+    fill.vec = glm::vec3(0.5f, -0.3f, -1.0f);
+    fill.rgb = glm::vec3(0.25f);
+    return {back, fill};
+}
+
+Camera defaultCamera(double sizeMm, float fovYDegrees) {
+    Camera c;
+    c.fovYDegrees = fovYDegrees;
+    float halfFov = glm::radians(fovYDegrees) * 0.5f;
+    float dist = 0.5f * static_cast<float>(sizeMm) / std::sin(halfFov) * 1.05f;
+    c.eye = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)) * dist;
+    return c;
+}
+
+Scene sceneFromArgs(const Args& args) {
+    Scene scene;
+    double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    scene.material = materialFromArgs(args);
+    scene.mesh = loadMesh(args.getString("mesh", "builtin:default"));
+    normalizeMesh(scene.mesh, size);
+    ensureNormals(scene.mesh);
+    if (!scene.mesh.hasUVs())
+        fail("mesh '", scene.mesh.name, "' has no UVs (texture coordinates)");
+    if (UVCheck uv = checkUVs(scene.mesh); !uv.ok) fail(uv.problem);
+    for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
+    if (scene.lights.empty()) scene.lights = defaultLights(size);
+    float fov = static_cast<float>(args.getDouble("fov", 35.0, 1.0, 170.0));
+    scene.camera = defaultCamera(size, fov);
+    if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
+    if (auto v = args.value("target")) scene.camera.target = glm::vec3(parseVec3("--target", *v));
+    if (auto v = args.value("up")) scene.camera.up = glm::vec3(parseVec3("--up", *v));
+    glm::vec3 forward = scene.camera.target - scene.camera.eye;
+    if (glm::length(forward) == 0.0f) fail("--eye and --target are the same point");
+    if (glm::length(glm::cross(forward, scene.camera.up)) < 1e-6f * glm::length(forward))
+        fail("--up is parallel to the view direction (or zero)");
+    return scene;
+}
+
+RenderOptions renderOptionsFromArgs(const Args& args) {
+    RenderOptions o;
+    o.method = args.getString("method", "tsis");
+    o.width = args.getInt("width", 512, 1, 8192);
+    o.height = args.getInt("height", 512, 1, 8192);
+    o.samples = args.getInt("samples", 900, 1, 1 << 22);
+    o.seed = static_cast<uint32_t>(args.getInt("seed", 1, 0, 0xffffffffll >> 1));
+    auto powerOfTwo = [&](const char* name, int def) {
+        int r = args.getInt(name, def, 1, 8192);
+        if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");
+        return r;
+    };
+    o.atlasResolution = powerOfTwo("atlas-res", 1024);
+    if (o.atlasResolution > 4096) fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
+    o.lightResolution = args.getInt("light-res", 1024, 16, 8192);
+    o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
+    o.specular = !args.flag("no-specular");
+    return o;
+}
+
+}  // namespace tsis

@@ -1,0 +1,31 @@
+// `tsis render` options → a Scene and RenderOptions (defaults, parsing, validation).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "render/render_options.h"
+#include "render/scene.h"
+
+namespace tsis {
+
+// Options every command that renders shares (render, compare-style tools, bench).
+const std::vector<OptionSpec>& sceneOptionSpecs();
+
+// Material from --material (default marble) with --sigma-s/--sigma-a/--eta overrides.
+Material materialFromArgs(const Args& args);
+
+// "point:X,Y,Z:R,G,B" or "dir:X,Y,Z:R,G,B".
+Light parseLight(const std::string& spec);
+
+// The default lights for an object of bounding-box diagonal sizeMm: a back
+// light that makes thin parts glow and a weaker front fill.
+std::vector<Light> defaultLights(double sizeMm);
+Camera defaultCamera(double sizeMm, float fovYDegrees);
+
+// Loads, normalises and prepares (normals, UVs) the mesh; builds the scene.
+Scene sceneFromArgs(const Args& args);
+RenderOptions renderOptionsFromArgs(const Args& args);
+
+}  // namespace tsis

@@ -1,0 +1,42 @@
+// Image files through OpenImageIO. Buffers are top row first (row 0 = top,
+// DESIGN §2); callers holding GL read-backs (bottom row first) flip them.
+// Writes are atomic (temporary name, then rename).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tsis {
+
+struct ImageF {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> pixels;  // width*height*channels, row 0 = top
+    float at(int x, int y, int c) const {
+        return pixels[(static_cast<size_t>(y) * width + x) * channels + c];
+    }
+};
+
+// Linear float image (EXR: half or float by extension's writer defaults; we ask for float).
+void writeImageF(const std::string& path, const ImageF& image,
+                 const std::vector<std::string>& channelNames = {});
+
+// 8-bit image (PNG), values already encoded (sRGB).
+void writeImage8(const std::string& path, int width, int height, int channels,
+                 const std::vector<uint8_t>& pixels);
+
+ImageF readImageF(const std::string& path);
+
+// Reorders rows so that row 0 becomes the last (GL read-backs → images).
+template <typename T>
+void flipRows(std::vector<T>& data, int width, int height, int channels) {
+    size_t row = static_cast<size_t>(width) * channels;
+    for (int y = 0; y < height / 2; ++y)
+        for (size_t i = 0; i < row; ++i)
+            std::swap(data[y * row + i], data[(height - 1 - y) * row + i]);
+}
+
+// sRGB encoding of a linear value in [0, 1] (IEC 61966-2-1).
+float srgbEncode(float linear);
+
+}  // namespace tsis

@@ -1,0 +1,44 @@
+#include "render/frame_stats.h"
+
+namespace tsis {
+
+void FrameStats::addStage(const std::string& name, double ms, long long bytes) {
+    for (Stage& s : stages)
+        if (s.name == name) {
+            s.ms += ms;
+            if (bytes >= 0) s.bytes = (s.bytes < 0 ? 0 : s.bytes) + bytes;
+            return;
+        }
+    stages.push_back({name, ms, bytes});
+}
+
+void FrameStats::set(const std::string& key, Json value) {
+    for (auto& [k, v] : values)
+        if (k == key) {
+            v = std::move(value);
+            return;
+        }
+    values.emplace_back(key, std::move(value));
+}
+
+double FrameStats::stageMs(const std::string& name) const {
+    for (const Stage& s : stages)
+        if (s.name == name) return s.ms;
+    return 0;
+}
+
+Json FrameStats::toJson() const {
+    Json root = Json::object();
+    for (const auto& [k, v] : values) root.set(k, v);
+    Json ms = Json::object();
+    Json bytes = Json::object();
+    for (const Stage& s : stages) {
+        ms.set(s.name, s.ms);
+        if (s.bytes >= 0) bytes.set(s.name, s.bytes);
+    }
+    root.set("ms", ms);
+    root.set("bytes", bytes);
+    return root;
+}
+
+}  // namespace tsis

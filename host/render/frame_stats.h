@@ -1,0 +1,28 @@
+// What a frame cost: per-stage milliseconds, bytes across GL↔CL, counters.
+// Written by --stats FILE.json.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "util/json.h"
+
+namespace tsis {
+
+struct FrameStats {
+    struct Stage {
+        std::string name;
+        double ms = 0;
+        long long bytes = -1;  // transfers only
+    };
+    std::vector<Stage> stages;  // in execution order
+    std::vector<std::pair<std::string, Json>> values;
+
+    void addStage(const std::string& name, double ms, long long bytes = -1);
+    void set(const std::string& key, Json value);
+    double stageMs(const std::string& name) const;  // 0 when absent
+    Json toJson() const;
+};
+
+}  // namespace tsis

@@ -1,0 +1,23 @@
+// How a frame is rendered (as opposed to what it shows: render/scene.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace tsis {
+
+struct RenderOptions {
+    std::string method = "tsis";
+    int width = 512, height = 512;
+    int atlasResolution = 1024;  // flux/position atlas (power of two)
+    int lightResolution = 1024;  // shadow map and light-view flux map
+    int samples = 900;           // N, the shared importance samples (tsis, hybrid global part)
+    uint32_t seed = 1;
+    float key = 0.18f;           // Reinhard key
+    bool specular = true;
+    float specularKs = 0.2f;
+    float shininess = 40.0f;
+    bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
+};
+
+}  // namespace tsis

@@ -1,0 +1,248 @@
+#include "render/renderer.h"
+
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "tsis_shared.h"
+#include "util/error.h"
+#include "util/timer.h"
+
+namespace tsis {
+
+namespace {
+
+template <typename T>
+void hashBytes(uint64_t& h, const T* data, size_t count) {
+    const auto* p = reinterpret_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < count * sizeof(T); ++i) {
+        h ^= p[i];
+        h *= 1099511628211ull;
+    }
+}
+
+float boundingRadius(const Mesh& mesh) {
+    float r2 = 0;
+    for (const glm::vec3& p : mesh.positions) r2 = std::max(r2, glm::dot(p, p));
+    return std::sqrt(r2);
+}
+
+// GL RGBA (row 0 = bottom) → ImageF with `channels` of them, row 0 = top.
+ImageF toImage(const std::vector<float>& rgba, int w, int h, int channels, int first = 0) {
+    ImageF img;
+    img.width = w;
+    img.height = h;
+    img.channels = channels;
+    img.pixels.resize(static_cast<size_t>(w) * h * channels);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < channels; ++c)
+                img.pixels[(static_cast<size_t>(h - 1 - y) * w + x) * channels + c] =
+                    rgba[(static_cast<size_t>(y) * w + x) * 4 + first + c];
+    return img;
+}
+
+}  // namespace
+
+uint64_t meshHash(const Mesh& mesh) {
+    uint64_t h = 1469598103934665603ull;
+    hashBytes(h, mesh.positions.data(), mesh.positions.size());
+    hashBytes(h, mesh.normals.data(), mesh.normals.size());
+    hashBytes(h, mesh.uvs.data(), mesh.uvs.size());
+    hashBytes(h, mesh.triangles.data(), mesh.triangles.size());
+    return h;
+}
+
+float logAverageLuminance(const std::vector<float>& rgba) {
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        if (rgba[i + 3] <= 0) continue;
+        double y = TSIS_LUMA_R * rgba[i] + TSIS_LUMA_G * rgba[i + 1] + TSIS_LUMA_B * rgba[i + 2];
+        sum += std::log(1e-12 + std::max(0.0, y));
+        ++n;
+    }
+    return n ? static_cast<float>(std::exp(sum / static_cast<double>(n))) : 1.0f;
+}
+
+Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::uploadMeshIfChanged(const Mesh& mesh) {
+    uint64_t h = meshHash(mesh);
+    if (gpuMesh_ && h == meshHash_) return;
+    gpuMesh_ = std::make_unique<GpuMesh>(mesh);
+    meshHash_ = h;
+}
+
+Method& Renderer::method(const std::string& name) {
+    auto it = methods_.find(name);
+    if (it == methods_.end()) it = methods_.emplace(name, makeMethod(name, cl_)).first;
+    return *it->second;
+}
+
+FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
+    Timer total;
+    FrameResult result;
+    FrameStats& stats = result.stats;
+    const int w = opt.width, h = opt.height, res = opt.atlasResolution;
+    const float eta = static_cast<float>(scene.material.eta);
+    if (scene.lights.empty()) fail("the scene has no light; add one with --light");
+    if (static_cast<int>(scene.lights.size()) > kMaxLights)
+        fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
+    Method& m = method(opt.method);
+
+    FrameContext ctx;
+    ctx.scene = &scene;
+    ctx.options = &opt;
+    ctx.cl = &cl_;
+    ctx.stats = &stats;
+    ctx.boundingRadius = boundingRadius(scene.mesh);
+    ctx.atlasResolution = res;
+    ctx.lights = &lights_;
+
+    const Camera& cam = scene.camera;
+    const float camDist = glm::length(cam.eye - cam.target);
+    const float nearP = std::max({glm::length(cam.eye) - ctx.boundingRadius * 1.5f,
+                                  camDist * 1e-3f, 1e-4f});
+    const float farP = glm::length(cam.eye) + ctx.boundingRadius * 1.5f;
+    const glm::mat4 viewProj =
+        glm::perspective(glm::radians(cam.fovYDegrees), static_cast<float>(w) / h, nearP, farP) *
+        glm::lookAt(cam.eye, cam.target, cam.up);
+
+    std::vector<float> gbufferPosition, radianceRGBA;
+    std::vector<int> pointPixel;  // GL pixel index of each covered point
+
+    FrameGraph graph;
+    graph.addPass({"upload_mesh", {}, {"mesh"}, [&] { uploadMeshIfChanged(scene.mesh); }});
+    graph.addPass({"gl_light_view", {"mesh"}, {"light_maps"}, [&] {
+                       lights_.clear();
+                       for (const Light& l : scene.lights)
+                           lights_.push_back(
+                               makeLightView(l, ctx.boundingRadius, opt.lightResolution));
+                       lightPass_.run(*gpuMesh_, lights_, eta);
+                       glFinish();
+                   }});
+    graph.addPass({"gl_atlas", {"mesh", "light_maps"}, {"atlas"}, [&] {
+                       atlasPass_.run(*gpuMesh_, lights_, eta, res);
+                       glFinish();
+                   }});
+    graph.addPass({"gl_gbuffer", {"mesh"}, {"gbuffer"}, [&] {
+                       gbufferPass_.run(*gpuMesh_, viewProj, w, h);
+                       glFinish();
+                   }});
+    // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on
+    // OSMesa + PoCL). Flux and position atlases cross at full float precision.
+    graph.addPass({"gl_to_cl_atlas", {"atlas"}, {"flux_atlas_cl", "position_atlas_cl"},
+                   [&] {
+                       Timer t;
+                       size_t bytes = static_cast<size_t>(res) * res * 16;
+                       fluxAtlas_.reserve(cl_.context(), bytes);
+                       positionAtlas_.reserve(cl_.context(), bytes);
+                       std::vector<float> flux = atlasPass_.target().readRGBA(0);
+                       std::vector<float> pos = atlasPass_.target().readRGBA(1);
+                       cl_.queue().enqueueWriteBuffer(fluxAtlas_.buffer, CL_FALSE, 0, bytes, flux.data());
+                       cl_.queue().enqueueWriteBuffer(positionAtlas_.buffer, CL_FALSE, 0, bytes,
+                                                      pos.data());
+                       cl_.queue().finish();
+                       ctx.fluxAtlas = fluxAtlas_.buffer;
+                       ctx.positionAtlas = positionAtlas_.buffer;
+                       stats.addStage("gl_to_cl_atlas", t.ms(), static_cast<long long>(2 * bytes));
+                       if (opt.keepAovs) result.fluxAtlas = toImage(flux, res, res, 3);
+                   },
+                   true});
+    // Only covered pixels cross, packed (xyz per point).
+    graph.addPass({"gl_to_cl_points", {"gbuffer"}, {"points_cl"},
+                   [&] {
+                       Timer t;
+                       gbufferPosition = gbufferPass_.target().readRGBA(0);
+                       std::vector<float> packed;
+                       pointPixel.clear();
+                       for (int i = 0; i < w * h; ++i)
+                           if (gbufferPosition[static_cast<size_t>(i) * 4 + 3] > 0) {
+                               pointPixel.push_back(i);
+                               packed.insert(packed.end(),
+                                             gbufferPosition.begin() + i * 4,
+                                             gbufferPosition.begin() + i * 4 + 4);
+                           }
+                       ctx.pointCount = static_cast<int>(pointPixel.size());
+                       size_t bytes = packed.size() * sizeof(float);
+                       points_.reserve(cl_.context(), bytes);
+                       radiosity_.reserve(cl_.context(), bytes);
+                       if (bytes)
+                           cl_.queue().enqueueWriteBuffer(points_.buffer, CL_TRUE, 0, bytes,
+                                                          packed.data());
+                       ctx.points = points_.buffer;
+                       ctx.radiosity = radiosity_.buffer;
+                       stats.addStage("gl_to_cl_points", t.ms(), static_cast<long long>(bytes));
+                   },
+                   true});
+
+    m.addPasses(graph, ctx);
+
+    std::vector<float> radiosityRGBA(static_cast<size_t>(w) * h * 4, 0.0f);
+    graph.addPass({"cl_to_gl", {"radiosity_cl"}, {"radiosity"},
+                   [&] {
+                       Timer t;
+                       std::vector<float> packed(static_cast<size_t>(ctx.pointCount) * 4);
+                       if (!packed.empty())
+                           cl_.queue().enqueueReadBuffer(ctx.radiosity, CL_TRUE, 0,
+                                                         packed.size() * sizeof(float),
+                                                         packed.data());
+                       for (size_t k = 0; k < pointPixel.size(); ++k) {
+                           size_t i = static_cast<size_t>(pointPixel[k]) * 4;
+                           std::memcpy(&radiosityRGBA[i], &packed[k * 4], 3 * sizeof(float));
+                           radiosityRGBA[i + 3] = 1.0f;
+                       }
+                       stats.addStage("cl_to_gl", t.ms(),
+                                      static_cast<long long>(packed.size() * sizeof(float)));
+                   },
+                   true});
+    graph.addPass({"composite", {"radiosity", "gbuffer", "light_maps"}, {"image"}, [&] {
+                       compositePass_.radiance(radiosityRGBA.data(), gbufferPass_.target(),
+                                               cam.eye, eta);
+                       radianceRGBA = compositePass_.radianceTarget().readRGBA(0);
+                       result.lavg = logAverageLuminance(radianceRGBA);
+                       compositePass_.toneMap(gbufferPass_.target(), lights_, cam.eye, eta,
+                                              opt.key, result.lavg,
+                                              opt.specular ? opt.specularKs : 0.0f,
+                                              opt.shininess);
+                       std::vector<unsigned char> rgba = compositePass_.colorTarget().readRGBA8(0);
+                       result.rgb8.resize(static_cast<size_t>(w) * h * 3);
+                       for (int y = 0; y < h; ++y)
+                           for (int x = 0; x < w; ++x)
+                               for (int c = 0; c < 3; ++c)
+                                   result.rgb8[(static_cast<size_t>(h - 1 - y) * w + x) * 3 + c] =
+                                       rgba[(static_cast<size_t>(y) * w + x) * 4 + c];
+                   }});
+    graph.execute({"image"}, stats);
+
+    result.width = w;
+    result.height = h;
+    if (opt.keepAovs) {
+        result.radiosity = toImage(radiosityRGBA, w, h, 3);
+        result.radiance = toImage(radianceRGBA, w, h, 3);
+        result.position = toImage(gbufferPosition, w, h, 3);
+        std::vector<float> normals = gbufferPass_.target().readRGBA(1);
+        result.normal = toImage(normals, w, h, 3);
+        result.coverage = toImage(gbufferPosition, w, h, 1, 3);
+    }
+    stats.addStage("total", total.ms());
+    stats.set("method", opt.method);
+    stats.set("device", cl_.deviceName());
+    stats.set("gl_renderer", gl_.renderer());
+    stats.set("width", w);
+    stats.set("height", h);
+    stats.set("atlas_resolution", res);
+    stats.set("samples", opt.samples);
+    stats.set("covered_pixels", ctx.pointCount);
+    stats.set("triangles", static_cast<double>(scene.mesh.triangles.size()));
+    Json passes = Json::array();
+    for (const std::string& p : graph.executed()) passes.push(p);
+    stats.set("passes", passes);
+    return result;
+}
+
+}  // namespace tsis

@@ -1,0 +1,78 @@
+// The frame: owns the GL context and passes, the OpenCL runtime and buffers,
+// and the methods, and reuses them across frames (a moving light, a new
+// material or size re-renders without re-creating anything).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cl/cl_runtime.h"
+#include "gl/gl_context.h"
+#include "gl/gpu_mesh.h"
+#include "gl/passes.h"
+#include "image/image_io.h"
+#include "render/frame_stats.h"
+#include "render/method.h"
+#include "render/render_options.h"
+#include "render/scene.h"
+
+namespace tsis {
+
+struct FrameResult {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb8;  // tone-mapped sRGB image, row 0 = top
+    // With RenderOptions::keepAovs (row 0 = top; atlas row 0 = v = 1):
+    ImageF radiosity, radiance, position, normal, coverage, fluxAtlas;
+    float lavg = 0;  // log-average radiance luminance over covered pixels
+    FrameStats stats;
+};
+
+class Renderer {
+  public:
+    // clDevice: see ClRuntime. Throws tsis::Error when GL or OpenCL is missing.
+    explicit Renderer(const std::string& clDevice = "");
+    ~Renderer();
+
+    FrameResult render(const Scene& scene, const RenderOptions& options);
+
+    ClRuntime& cl() { return cl_; }
+    std::string glRenderer() const { return gl_.renderer(); }
+
+  private:
+    void uploadMeshIfChanged(const Mesh& mesh);
+    Method& method(const std::string& name);
+
+    GlContext gl_;
+    ClRuntime cl_;
+    LightViewPass lightPass_;
+    AtlasPass atlasPass_;
+    GBufferPass gbufferPass_;
+    CompositePass compositePass_;
+    std::unique_ptr<GpuMesh> gpuMesh_;
+    uint64_t meshHash_ = 0;
+    std::map<std::string, std::unique_ptr<Method>> methods_;
+    std::vector<LightView> lights_;
+    // CL buffers, grown as needed and kept across frames.
+    struct GrowingBuffer {
+        cl::Buffer buffer;
+        size_t capacity = 0;
+        void reserve(const cl::Context& ctx, size_t bytes) {
+            if (capacity >= bytes && capacity > 0) return;
+            capacity = std::max<size_t>(bytes, 16);
+            buffer = cl::Buffer(ctx, CL_MEM_READ_WRITE, capacity);
+        }
+    };
+    GrowingBuffer fluxAtlas_, positionAtlas_, points_, radiosity_;
+};
+
+// FNV-1a over the mesh's geometry and UVs: decides when to re-upload.
+uint64_t meshHash(const Mesh& mesh);
+
+// The log-average luminance (Reinhard's L_avg) of RGBA pixels whose alpha > 0.
+float logAverageLuminance(const std::vector<float>& rgba);
+
+}  // namespace tsis

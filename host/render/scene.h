@@ -1,0 +1,38 @@
+// What a frame shows: the object, its material, the lights and the camera.
+// Plain data, shared by the GL passes and the methods.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.h"
+#include "physics/material.h"
+
+namespace tsis {
+
+struct Light {
+    enum class Type { Point, Directional };
+    Type type = Type::Point;
+    glm::vec3 vec{0.0f};  // point: position (mm); directional: direction the light travels
+    glm::vec3 rgb{1.0f};  // point: intensity (W/sr); directional: irradiance (W/mm²)
+};
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 20.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDegrees = 40.0f;
+};
+
+struct Scene {
+    Mesh mesh;  // normalised (mm), with normals and valid UVs
+    Material material;
+    std::vector<Light> lights;
+    Camera camera;
+};
+
+// The largest number of lights a frame takes (GL uniform arrays are sized by it).
+constexpr int kMaxLights = 8;
+
+}  // namespace tsis
