@@ -1,0 +1,96 @@
+#include "physics/material.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "physics/dipole.h"
+#include "util/error.h"
+
+namespace tsis {
+namespace {
+
+// The message validateMaterial throws for m ("" when it accepts m).
+std::string rejection(const Material& m) {
+    try {
+        validateMaterial(m);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expectRejected(const Material& m, std::initializer_list<const char*> words) {
+    const std::string msg = rejection(m);
+    ASSERT_FALSE(msg.empty()) << "accepted a bad material";
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    for (const char* w : words) EXPECT_NE(msg.find(w), std::string::npos) << w << " ∉ " << msg;
+}
+
+TEST(Material, PresetsAreJensensTableAndValid) {
+    ASSERT_EQ(presetMaterials().size(), 12u);
+    for (const Material& m : presetMaterials()) {
+        EXPECT_EQ(rejection(m), "") << m.name;
+        EXPECT_EQ(m.eta, m.name == "marble" ? 1.5 : 1.3) << m.name;
+    }
+    // Spot checks against DESIGN §2, including the rows Mitsuba 0.x misprints.
+    EXPECT_EQ(presetMaterial("chicken1").sigmaA, glm::dvec3(0.015, 0.077, 0.19));
+    EXPECT_EQ(presetMaterial("chicken2").sigmaA, glm::dvec3(0.018, 0.088, 0.20));
+    EXPECT_EQ(presetMaterial("cream").sigmaSPrime, glm::dvec3(7.38, 5.47, 3.15));
+    EXPECT_EQ(presetMaterial("spectralon").sigmaA, glm::dvec3(0.0));
+    EXPECT_EQ(presetMaterial("wholemilk").sigmaA, glm::dvec3(0.0011, 0.0024, 0.014));
+}
+
+TEST(Material, UnknownPresetListsValidNames) {
+    try {
+        presetMaterial("nope");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("'nope'"), std::string::npos) << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+        for (const Material& m : presetMaterials())
+            EXPECT_NE(msg.find(m.name), std::string::npos) << m.name << " ∉ " << msg;
+    }
+}
+
+TEST(Material, RejectsBadCoefficientsNamingFieldAndChannel) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    Material m = presetMaterial("skin1");
+    m.name = "bad";
+
+    Material a = m;
+    a.sigmaSPrime.y = nan;
+    expectRejected(a, {"'bad'", "sigma_s'", "green", "finite"});
+    a = m;
+    a.sigmaA.z = inf;
+    expectRejected(a, {"sigma_a", "blue", "finite"});
+    a = m;
+    a.sigmaA.x = -0.01;
+    expectRejected(a, {"sigma_a", "red", "negative"});
+    a = m;
+    a.sigmaSPrime.x = -1.0;
+    expectRejected(a, {"sigma_s'", "red", "negative"});
+    a = m;
+    a.sigmaSPrime.y = a.sigmaA.y = 0.0;
+    expectRejected(a, {"sigma_t'", "green", "0"});
+    for (double eta : {1.0, 4.0, 0.5, nan, inf}) {
+        a = m;
+        a.eta = eta;
+        expectRejected(a, {"eta", "(1, 4)"});
+    }
+    a = m;
+    a.eta = 3.9;
+    EXPECT_EQ(rejection(a), "");
+}
+
+TEST(Material, DipoleOfBadMaterialIsUserError) {
+    Material m = presetMaterial("apple");
+    m.sigmaA.x = -1.0;
+    EXPECT_THROW(Dipole{m}, Error);
+}
+
+}  // namespace
+}  // namespace tsis
