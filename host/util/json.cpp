@@ -71,7 +71,7 @@ void Json::write(std::string& out, int indent, int depth) const {
                 break;
             }
             char buf[32];
-            std::snprintf(buf, sizeof buf, "%.10g", number_);
+            std::snprintf(buf, sizeof buf, "%.17g", number_);
             out += buf;
             break;
         }

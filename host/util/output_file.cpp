@@ -13,8 +13,11 @@ namespace fs = std::filesystem;
 
 fs::path temporaryPathFor(const fs::path& target) {
     fs::path dir = target.parent_path();
-    std::string name = "." + target.stem().string() + ".tsis-tmp-" + std::to_string(::getpid()) +
-                       target.extension().string();
+    std::string name = ".";
+    name += target.stem().string();
+    name += ".tsis-tmp-";
+    name += std::to_string(::getpid());
+    name += target.extension().string();
     return dir.empty() ? fs::path(name) : dir / name;
 }
 
