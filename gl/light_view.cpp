@@ -58,17 +58,23 @@ void bindLights(const ShaderProgram& program, const std::vector<LightView>& ligh
     program.set("u_lightCount", static_cast<int>(lights.size()));
     program.set("u_eta", eta);
     for (int i = 0; i < kMaxLights; ++i) {
-        std::string idx = "[" + std::to_string(i) + "]";
+        auto at = [i](const char* base) {
+            std::string s(base);
+            s += '[';
+            s += std::to_string(i);
+            s += ']';
+            return s;
+        };
         // Every sampler in the array needs a valid unit, used or not.
         int unit = firstUnit + i;
-        program.set(("u_shadowMap" + idx).c_str(), unit);
+        program.set(at("u_shadowMap").c_str(), unit);
         if (i >= static_cast<int>(lights.size())) continue;
         const LightView& lv = lights[static_cast<size_t>(i)];
-        program.set(("u_lightType" + idx).c_str(), lv.light.type == Light::Type::Point ? 0 : 1);
-        program.set(("u_lightVec" + idx).c_str(), lv.light.vec);
-        program.set(("u_lightRgb" + idx).c_str(), lv.light.rgb);
-        program.set(("u_lightViewProj" + idx).c_str(), lv.viewProj);
-        program.set(("u_shadowTexelMm" + idx).c_str(), lv.texelMm);
+        program.set(at("u_lightType").c_str(), lv.light.type == Light::Type::Point ? 0 : 1);
+        program.set(at("u_lightVec").c_str(), lv.light.vec);
+        program.set(at("u_lightRgb").c_str(), lv.light.rgb);
+        program.set(at("u_lightViewProj").c_str(), lv.viewProj);
+        program.set(at("u_shadowTexelMm").c_str(), lv.texelMm);
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
         glBindTexture(GL_TEXTURE_2D, lv.target->depth());
     }

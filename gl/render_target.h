@@ -2,6 +2,7 @@
 // texture (which doubles as a shadow map). Owned textures, read back as floats.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "gl/gl.h"

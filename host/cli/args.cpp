@@ -109,12 +109,20 @@ std::string usageText(const std::string& synopsis, const std::vector<OptionSpec>
             alias = name.substr(bar + 1);
             name = name.substr(0, bar);
         }
-        std::string left = "  " + (alias.empty() ? "" : "-" + alias + ", ") + "--" + name;
+        std::string left = "  ";
+        if (!alias.empty()) {
+            left += '-';
+            left += alias;
+            left += ", ";
+        }
+        left += "--";
+        left += name;
         std::string help = o.help;
         // The help's first word is the value's placeholder, when the option takes one.
         if (o.takesValue) {
             auto sp = help.find(' ');
-            left += " " + help.substr(0, sp);
+            left += ' ';
+            left += help.substr(0, sp);
             help = sp == std::string::npos ? "" : help.substr(sp + 1);
             while (!help.empty() && help[0] == ' ') help.erase(0, 1);
         }

@@ -1,5 +1,6 @@
 #include "util/json.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -70,9 +71,10 @@ void Json::write(std::string& out, int indent, int depth) const {
                 out += "null";  // JSON has no inf/nan
                 break;
             }
+            // Shortest text that reads back as the same double.
             char buf[32];
-            std::snprintf(buf, sizeof buf, "%.17g", number_);
-            out += buf;
+            auto res = std::to_chars(buf, buf + sizeof buf, number_);
+            out.append(buf, res.ptr);
             break;
         }
         case Kind::String: writeString(out, string_); break;
