@@ -49,6 +49,12 @@ std::vector<OptionSpec> renderSpecs() {
     return specs;
 }
 
+void requireParentDir(const std::string& path) {
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+        fail("cannot write '", path, "': directory '", dir.string(), "' does not exist");
+}
+
 int runRender(const std::vector<std::string>& argv) {
     const std::vector<OptionSpec> specs = renderSpecs();
     if (wantsHelp(argv)) {
@@ -57,9 +63,12 @@ int runRender(const std::vector<std::string>& argv) {
     }
     Args args("render", specs, argv);
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
+    const std::string output = args.getString("output", "tsis.png");
+    // Output folders are checked before the (long) render, not after it.
+    requireParentDir(output);
+    if (auto s = args.value("stats")) requireParentDir(*s);
     Scene scene = sceneFromArgs(args);
     RenderOptions options = renderOptionsFromArgs(args);
-    const std::string output = args.getString("output", "tsis.png");
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
 

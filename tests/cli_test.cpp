@@ -1,0 +1,127 @@
+// End to end through the tsis binary: outputs, determinism, and bad input —
+// one clear line on stderr, a non-zero exit, and no output file left behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "test_util.h"
+
+namespace tsis::test {
+namespace {
+
+// Small and fast, but the whole pipeline.
+const std::string kFast = "--width 96 --height 96 --atlas-res 256 --light-res 256 --samples 64 ";
+
+TEST(Cli, RendersPngAovsAndStats) {
+    ScratchDir dir;
+    RunResult r = runTsis("render " + kFast + "-o " + dir.file("a.png") + " --aov " +
+                          dir.file("aov") + " --stats " + dir.file("s.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("a.png")));
+    for (const char* f : {"radiosity.exr", "radiance.exr", "position.exr", "normal.exr",
+                          "coverage.exr", "flux_atlas.exr"})
+        EXPECT_TRUE(std::filesystem::exists(dir.path() / "aov" / f)) << f;
+    std::string stats = readFile(dir.file("s.json"));
+    for (const char* key : {"\"gl_atlas\"", "\"gl_light_view\"", "\"gl_gbuffer\"", "\"gl_to_cl_atlas\"",
+                            "\"cl_to_gl\"", "\"cdf\"", "\"sample\"", "\"gather\"", "\"composite\"",
+                            "\"total\"", "\"rd_evaluations\"", "\"device\"", "\"samples\""})
+        EXPECT_NE(stats.find(key), std::string::npos) << key;
+    EXPECT_EQ(fileCount(dir.path()), 3u) << "no temporary files left";
+}
+
+TEST(Cli, SameSeedSameBytesOtherSeedOtherImage) {
+    ScratchDir dir;
+    for (const char* name : {"a", "b"})
+        ASSERT_EQ(runTsis("render " + kFast + "--seed 7 -o " + dir.file(std::string(name) + ".png"))
+                      .exitCode,
+                  0);
+    ASSERT_EQ(runTsis("render " + kFast + "--seed 8 -o " + dir.file("c.png")).exitCode, 0);
+    std::string a = readFile(dir.file("a.png")), b = readFile(dir.file("b.png")),
+                c = readFile(dir.file("c.png"));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+}
+
+struct BadInput {
+    const char* name;
+    std::string args;
+    std::string env;
+    const char* expect;  // a phrase the one-line message must contain
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneLineErrorNonZeroExitNoOutput) {
+    const BadInput& c = GetParam();
+    ScratchDir dir;
+    std::string args = c.args;
+    for (size_t p; (p = args.find("@DIR@")) != std::string::npos;)
+        args.replace(p, 5, dir.path().string());
+    if (args.find(" -o ") == std::string::npos) args += " -o " + dir.file("out.png");
+    RunResult r = runTsis(args, c.env);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_LT(r.exitCode, 128) << "crashed: " << r.err;
+    ASSERT_FALSE(r.err.empty());
+    EXPECT_EQ(r.err.rfind("tsis: error: ", 0), 0u) << r.err;
+    // One line (notes about repairs may precede it only for meshes; none here).
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.png")));
+    for (auto& e : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(e.path().extension(), ".off") << "left behind: " << e.path();
+}
+
+const BadInput kBadInputs[] = {
+    {"MissingMesh", "render --mesh @DIR@/nope.off", "", "nope.off"},
+    {"NanEye", "render --eye 0,nan,1", "", "--eye"},
+    {"NegativeCoefficient", "render --sigma-a -1,0.1,0.1", "", "negative"},
+    {"AbsurdSampleCount", "render --samples 1000000000000", "", "--samples"},
+    {"ZeroSamples", "render --samples 0", "", "--samples"},
+    {"UnknownMaterial", "render --material unobtainium", "", "unobtainium"},
+    {"BadLight", "render --light spot:0,0,0:1,1,1", "", "--light"},
+    {"BadAtlasRes", "render --atlas-res 1000", "", "power of two"},
+    {"UnknownOption", "render --sampels 10", "", "--sampels"},
+    {"UnknownMethod", "render --method magic", "", "magic"},
+    {"NoGlContext", "render " + kFast, "TSIS_NO_GL=1", "no GL context"},
+    {"NoOpenClDevice", "render " + kFast, "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=",
+     "no OpenCL device"},
+    {"NoSuchClDevice", "render " + kFast + "--cl-device no-such-gpu", "", "no-such-gpu"},
+    {"MissingOutputDir", "render " + kFast + "-o @DIR@/missing/x.png", "", "missing"},
+};
+
+INSTANTIATE_TEST_SUITE_P(All, CliBadInput, ::testing::ValuesIn(kBadInputs),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// A header that promises more than the file holds.
+TEST(Cli, TruncatedMeshIsRefusedWithoutCrash) {
+    ScratchDir dir;
+    {
+        std::ofstream f(dir.file("broken.off"));
+        f << "OFF\n4 2 0\n0 0 0\n1 0 0\n";
+    }
+    RunResult r = runTsis("render --mesh " + dir.file("broken.off") + " -o " + dir.file("x.png"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_LT(r.exitCode, 128);
+    EXPECT_NE(r.err.find("broken.off"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+TEST(Cli, HelpAndInfoCommands) {
+    RunResult help = runTsis("render --help");
+    EXPECT_EQ(help.exitCode, 0);
+    for (const char* opt : {"--mesh", "--size-mm", "--material", "--sigma-s", "--light", "--samples",
+                            "--seed", "--aov", "--stats", "--atlas-res", "--eye", "--fov",
+                            "--no-specular", "--cl-device"})
+        EXPECT_NE(help.out.find(opt), std::string::npos) << opt;
+    RunResult mats = runTsis("materials");
+    EXPECT_EQ(mats.exitCode, 0);
+    EXPECT_NE(mats.out.find("skimmilk"), std::string::npos);
+    RunResult dip = runTsis("dipole --material skin1 --r 0,0.1,1 --json");
+    EXPECT_EQ(dip.exitCode, 0);
+    EXPECT_NE(dip.out.find("\"total_reflectance\""), std::string::npos);
+    EXPECT_NE(dip.out.find("\"rd\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tsis::test

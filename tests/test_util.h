@@ -1,0 +1,41 @@
+// Helpers for end-to-end tests: run the tsis binary, scratch folders, scenes.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/scene.h"
+
+namespace tsis::test {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+// Runs `tsis <args>` through the shell with extra environment assignments
+// (e.g. "TSIS_NO_GL=1"); captures stdout and stderr.
+RunResult runTsis(const std::string& args, const std::string& env = "");
+
+// A fresh empty folder under the build's temp area, removed by the destructor.
+class ScratchDir {
+  public:
+    ScratchDir();
+    ~ScratchDir();
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+  private:
+    std::filesystem::path path_;
+};
+
+std::string readFile(const std::string& path);
+
+// Number of files in a folder (to prove nothing half-written was left).
+size_t fileCount(const std::filesystem::path& dir);
+
+}  // namespace tsis::test
