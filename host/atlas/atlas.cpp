@@ -1,0 +1,159 @@
+// buildAtlas: segmentation, charts, packing, output mesh (see atlas.h).
+#include "atlas/atlas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+
+#include "atlas/cache.h"
+#include "atlas/chart.h"
+#include "atlas/pack.h"
+#include "util/error.h"
+#include "util/timer.h"
+
+namespace tsis {
+
+namespace {
+
+// Stand-in segmentation when CGAL cannot make a polygon mesh of the soup:
+// breadth-first patches of about `size` faces.
+std::vector<int> patchLabels(const atlas::Adjacency& adj, int size) {
+    const size_t n = adj.across.size();
+    std::vector<int> labels(n, -1);
+    int next = 0;
+    for (size_t s = 0; s < n; ++s) {
+        if (!adj.usable[s] || labels[s] >= 0) continue;
+        std::deque<int> queue{int(s)};
+        labels[s] = next;
+        int count = 1;
+        while (!queue.empty() && count < size) {
+            const int f = queue.front();
+            queue.pop_front();
+            for (int g : adj.across[f])
+                if (g >= 0 && labels[g] < 0 && count < size) {
+                    labels[g] = next;
+                    ++count;
+                    queue.push_back(g);
+                }
+        }
+        ++next;
+    }
+    return labels;
+}
+
+void validateInput(const Mesh& mesh, const AtlasOptions& opt) {
+    if (mesh.triangles.empty()) fail(mesh.name, ": no triangles to make an atlas of");
+    if (opt.resolution < 16 || opt.resolution > 32768)
+        fail("atlas: resolution ", opt.resolution, " is outside 16..32768");
+    if (opt.gutterTexels < 0 || opt.gutterTexels > opt.resolution / 8)
+        fail("atlas: gutter of ", opt.gutterTexels, " texels does not suit resolution ", opt.resolution);
+    for (const glm::vec3& p : mesh.positions)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            fail(mesh.name, ": a vertex position is not finite");
+    for (const glm::uvec3& t : mesh.triangles)
+        if (t.x >= mesh.positions.size() || t.y >= mesh.positions.size() || t.z >= mesh.positions.size())
+            fail(mesh.name, ": a triangle refers to a missing vertex");
+    if (mesh.hasNormals() && mesh.normals.size() != mesh.positions.size())
+        fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(), " vertices");
+}
+
+}  // namespace
+
+namespace atlas {
+
+Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats,
+                           std::vector<uint32_t>* sourceVertex) {
+    const Timer timer;
+    validateInput(mesh, opt);
+    const Adjacency adj = buildAdjacency(mesh);
+    const size_t usable = size_t(std::count(adj.usable.begin(), adj.usable.end(), 1));
+    if (usable == 0) fail(mesh.name, ": every triangle is degenerate (no area)");
+
+    const int proxies =
+        std::max(opt.minProxies, int(usable / size_t(std::max(1, opt.trianglesPerProxy))));
+    std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
+    if (labels.empty()) labels = patchLabels(adj, std::max(1, opt.trianglesPerProxy));
+    smoothLabels(adj, labels);
+
+    ChartOptions copt;
+    copt.maxDistortion = opt.maxChartDistortion;
+    copt.threads = opt.threads;
+    const std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
+
+    std::vector<PackChart> packIn;
+    for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
+    const PackResult packed = packCharts(packIn, opt.resolution, opt.gutterTexels);
+    if (std::getenv("TSIS_ATLAS_DEBUG")) std::fprintf(stderr, "pack footprint %.3f\n", packed.footprint);
+
+    // Output vertices: one per (chart, chart vertex), numbered in the order the
+    // triangles first use them; degenerate triangles get their own vertices
+    // parked on one UV point.
+    struct Where {
+        int chart = -1, tri = -1;
+    };
+    std::vector<Where> where(mesh.triangles.size());
+    std::vector<size_t> base(charts.size() + 1, 0);
+    for (size_t c = 0; c < charts.size(); ++c) {
+        for (size_t i = 0; i < charts[c].mesh.faces.size(); ++i)
+            where[charts[c].mesh.faces[i]] = {int(c), int(i)};
+        base[c + 1] = base[c] + charts[c].mesh.positions.size();
+    }
+    std::vector<int64_t> outOf(base.back(), -1);
+    std::vector<int64_t> firstCopy(mesh.positions.size(), -1);  // an output vertex per input vertex
+    Mesh out;
+    out.name = mesh.name;
+    out.triangles.resize(mesh.triangles.size());
+    std::vector<uint32_t> source;
+    auto addVertex = [&](uint32_t src, glm::dvec2 uv) {
+        source.push_back(src);
+        out.uvs.emplace_back(glm::vec2(uv));
+        if (firstCopy[src] < 0) firstCopy[src] = int64_t(source.size() - 1);
+        return uint32_t(source.size() - 1);
+    };
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const Where w = where[t];
+        if (w.chart < 0) continue;
+        const Chart& c = charts[w.chart];
+        for (int k = 0; k < 3; ++k) {
+            const int local = c.mesh.triangles[w.tri][k];
+            int64_t& o = outOf[base[w.chart] + local];
+            if (o < 0) o = addVertex(c.mesh.sourceVertex[local], packed.uv[w.chart][local]);
+            out.triangles[t][k] = uint32_t(o);
+        }
+    }
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (where[t].chart >= 0) continue;
+        const glm::uvec3 tri = mesh.triangles[t];
+        glm::dvec2 park(0.5 / opt.resolution);
+        for (int k = 0; k < 3; ++k)
+            if (firstCopy[tri[k]] >= 0) {
+                park = glm::dvec2(out.uvs[size_t(firstCopy[tri[k]])]);
+                break;
+            }
+        if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty()) park = glm::dvec2(out.uvs[0]);
+        for (int k = 0; k < 3; ++k) out.triangles[t][k] = addVertex(tri[k], park);
+    }
+    out.positions.resize(source.size());
+    for (size_t v = 0; v < source.size(); ++v) out.positions[v] = mesh.positions[source[v]];
+    if (mesh.hasNormals()) {
+        out.normals.resize(source.size());
+        for (size_t v = 0; v < source.size(); ++v) out.normals[v] = mesh.normals[source[v]];
+    }
+    if (stats) {
+        *stats = measureAtlas(out, opt.resolution);
+        stats->seconds = timer.ms() / 1000.0;
+        stats->fromCache = false;
+    }
+    if (sourceVertex) *sourceVertex = std::move(source);
+    return out;
+}
+
+}  // namespace atlas
+
+Mesh buildAtlas(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats) {
+    return atlas::buildAtlasWithSources(mesh, opt, stats, nullptr);
+}
+
+}  // namespace tsis

@@ -1,0 +1,81 @@
+// Texture atlases: every triangle of a mesh gets a place in [0,1]² so that the
+// integral over the surface becomes an integral over texture space (DESIGN §1).
+//
+// Pipeline of buildAtlas (host/atlas/atlas.cpp):
+//   segment   Variational Shape Approximation (CGAL), proxies ≈ faces/200 (≥ 50),
+//             labels smoothed, every label split into connected pieces;
+//   charts    each piece made a topological disk (connected, Euler characteristic 1,
+//             one boundary loop), else split in two (recursively);
+//   param     ARAP (CGAL ARAP_parameterizer_3, λ = 1000) per chart, in parallel;
+//             validated here: no flipped triangle, simple border, RMS of
+//             log(A3D/AUV) ≤ maxChartDistortion — a chart that fails is split;
+//   pack      charts scaled to one texel density, rotated to their smallest
+//             bounding rectangle, packed by a skyline packer on their dilated
+//             raster outlines at `resolution`, the density chosen by bisection
+//             to fill the square.
+// No CGAL type leaks out of this header.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "mesh/mesh.h"
+#include "util/json.h"
+
+namespace tsis {
+
+struct AtlasOptions {
+    int resolution = 1024;  // texels per side the atlas is made for (texel centres at (i+½)/res)
+    int gutterTexels = 2;   // empty texels at least between two charts at `resolution`
+    // Charts from VSA: max(minProxies, triangles / trianglesPerProxy).
+    int trianglesPerProxy = 200;
+    int minProxies = 50;
+    // A chart whose area-weighted RMS of log(A3D/AUV) (after uniform scaling) is
+    // above this is split in two and each half parameterised again.
+    double maxChartDistortion = 0.06;
+    int threads = 0;        // chart-level worker threads; 0 = hardware concurrency
+    bool useCache = true;   // ensureAtlas: read and write the on-disk cache
+};
+
+struct AtlasStats {
+    int charts = 0;          // connected pieces in UV space
+    double coverage = 0;     // fraction of texel centres covered at the resolution
+    double rWstd = 0;        // area-weighted stddev of r = (A3D/AUV)/(ΣA3D/ΣAUV)
+    double rP01 = 0, rP99 = 0;  // area-weighted 1st / 99th percentiles of r
+    double rMin = 0, rMax = 0;
+    size_t flipped = 0;      // triangles oriented against their chart (or with zero UV area)
+    size_t overlaps = 0;     // triangles overlapping another in UV space
+    double seconds = 0;      // build (or cache load) wall time
+    bool fromCache = false;
+};
+
+// Gives the mesh UVs for every vertex, splitting vertices along chart seams:
+// the result may have more vertices than the input (positions and normals
+// copied); triangles keep their order and count. Throws tsis::Error with a
+// clear line when it cannot (empty mesh, non-finite positions).
+Mesh buildAtlas(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats = nullptr);
+
+// The policy behind `--atlas`:
+//   "auto"  the mesh's own UVs when tsis::checkUVs accepts them, else a built atlas;
+//   "file"  the mesh's own UVs, a tsis::Error when it has none or they are invalid;
+//   "build" always a built atlas.
+// Built atlases go through the on-disk cache (see atlas/cache.h) unless
+// opt.useCache is false.
+Mesh ensureAtlas(const Mesh& mesh, const std::string& mode, const AtlasOptions& opt,
+                 AtlasStats* stats = nullptr);
+
+// r statistics, flips, overlaps (texel-centre raster of triangle ids at
+// `resolution` plus exact segment tests between UV border edges) and coverage
+// (texel centres covered at `resolution`). `seconds` is 0.
+AtlasStats measureAtlas(const Mesh& meshWithUVs, int resolution);
+
+// Keys: charts, coverage, r_wstd, r_p01, r_p99, r_min, r_max, flipped, overlaps,
+// seconds, from_cache.
+Json atlasStatsJson(const AtlasStats& stats);
+
+// A (2·res)×res PNG: charts in colour on the left, a heat map of log2 r on the
+// right (blue r < 1, white r = 1, red r > 1; saturated at r = 2^∓½ ≈ 0.71 and 1.41).
+// Row 0 is v = 1. Written atomically.
+void writeAtlasPng(const std::string& path, const Mesh& meshWithUVs, int resolution);
+
+}  // namespace tsis

@@ -1,0 +1,367 @@
+#include "atlas/atlas.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <numeric>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "atlas/atlas_test_util.h"
+#include "atlas/cache.h"
+#include "atlas/chart.h"
+#include "util/error.h"
+
+namespace tsis {
+namespace {
+
+// Every output triangle keeps its input corners (same positions, normals
+// copied) and has UVs inside the 1-texel margin.
+void expectSameSurface(const Mesh& in, const Mesh& out, int resolution) {
+    ASSERT_EQ(out.triangles.size(), in.triangles.size());
+    ASSERT_EQ(out.uvs.size(), out.positions.size());
+    ASSERT_GE(out.positions.size(), in.positions.size());
+    if (in.hasNormals()) {
+        ASSERT_EQ(out.normals.size(), out.positions.size());
+    }
+    for (size_t t = 0; t < in.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = in.triangles[t][k], b = out.triangles[t][k];
+            ASSERT_LT(b, out.positions.size());
+            ASSERT_EQ(out.positions[b], in.positions[a]) << "triangle " << t;
+            if (in.hasNormals()) {
+                ASSERT_EQ(out.normals[b], in.normals[a]);
+            }
+        }
+    const float lo = 1.0f / float(resolution), hi = 1.0f - lo;
+    for (const glm::vec2& uv : out.uvs) {
+        ASSERT_GE(uv.x, lo);
+        ASSERT_GE(uv.y, lo);
+        ASSERT_LE(uv.x, hi);
+        ASSERT_LE(uv.y, hi);
+    }
+}
+
+double pointSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 d = b - a;
+    const double l2 = glm::dot(d, d);
+    const double t = l2 > 0 ? std::clamp(glm::dot(p - a, d) / l2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * d));
+}
+
+// Smallest distance in texels between UV border edges of different charts
+// (charts: triangles connected through shared vertices).
+double minChartGap(const Mesh& m, int resolution) {
+    std::vector<uint32_t> parent(m.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const auto& t : m.triangles) {
+        const uint32_t a = find(t.x), b = find(t.y), c = find(t.z), s = std::min({a, b, c});
+        parent[a] = parent[b] = parent[c] = s;
+    }
+    std::map<std::pair<uint32_t, uint32_t>, int> count;
+    for (const auto& t : m.triangles)
+        for (int e = 0; e < 3; ++e) ++count[{std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])}];
+    struct Seg {
+        glm::dvec2 a, b;
+        uint32_t chart;
+    };
+    std::vector<Seg> segs;
+    for (const auto& [e, c] : count)
+        if (c == 1)
+            segs.push_back({glm::dvec2(m.uvs[e.first]) * double(resolution),
+                            glm::dvec2(m.uvs[e.second]) * double(resolution), find(e.first)});
+    // Grid of 4-texel cells; only neighbouring cells can hold pairs closer than 4.
+    std::map<std::pair<int, int>, std::vector<size_t>> grid;
+    for (size_t i = 0; i < segs.size(); ++i) {
+        const glm::dvec2 lo = glm::min(segs[i].a, segs[i].b) / 4.0, hi = glm::max(segs[i].a, segs[i].b) / 4.0;
+        for (int y = int(lo.y); y <= int(hi.y); ++y)
+            for (int x = int(lo.x); x <= int(hi.x); ++x) grid[{x, y}].push_back(i);
+    }
+    double best = 4;
+    for (const auto& [cell, ids] : grid)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                auto it = grid.find({cell.first + dx, cell.second + dy});
+                if (it == grid.end()) continue;
+                for (size_t i : ids)
+                    for (size_t j : it->second) {
+                        const Seg &s = segs[i], &t = segs[j];
+                        if (s.chart == t.chart) continue;
+                        best = std::min({best, pointSegment(s.a, t.a, t.b), pointSegment(s.b, t.a, t.b),
+                                         pointSegment(t.a, s.a, s.b), pointSegment(t.b, s.a, s.b)});
+                    }
+            }
+    return best;
+}
+
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (old_) ::setenv(name_, old_->c_str(), 1);
+        else ::unsetenv(name_);
+    }
+
+  private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+std::filesystem::path scratchDir(const std::string& tag) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("tsis_atlas_test_" + tag + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Core invariants of a built atlas.
+void checkAtlas(const Mesh& in, const AtlasOptions& opt) {
+    AtlasStats st;
+    const Mesh out = buildAtlas(in, opt, &st);
+    expectSameSurface(in, out, opt.resolution);
+    EXPECT_EQ(st.flipped, 0u);
+    EXPECT_EQ(st.overlaps, 0u);
+    EXPECT_GT(st.charts, 0);
+    // Independent of the build's own statistics: overlaps at 2048² and exact
+    // border tests; gutters at the target resolution.
+    const AtlasStats fine = measureAtlas(out, 2048);
+    EXPECT_EQ(fine.overlaps, 0u);
+    EXPECT_EQ(fine.flipped, 0u);
+    EXPECT_GE(minChartGap(out, opt.resolution), double(opt.gutterTexels) - 1e-3);
+    std::printf("  %s: %d charts, coverage %.3f, r_wstd %.4f, r p1-p99 %.3f-%.3f, %.2f s\n", in.name.c_str(),
+                st.charts, st.coverage, st.rWstd, st.rP01, st.rP99, st.seconds);
+}
+
+TEST(Atlas, CowAndElephant) {
+    for (const char* name : {"cow", "elephant"}) {
+        const std::string path = test::cgalMesh(name);
+        if (path.empty()) GTEST_SKIP() << test::kCgalTarball << " is not installed";
+        const Mesh mesh = test::readOFF(path);
+        ASSERT_FALSE(mesh.triangles.empty()) << path;
+        checkAtlas(mesh, AtlasOptions());
+    }
+}
+
+TEST(Atlas, ClosedSphereAndTube) {
+    AtlasOptions opt;
+    opt.resolution = 512;
+    checkAtlas(test::sphereMesh(24, 48), opt);
+    checkAtlas(test::tubeMesh(20, 32, 6.0), opt);
+}
+
+TEST(Atlas, GutterOfFourTexels) {
+    AtlasOptions opt;
+    opt.resolution = 256;
+    opt.gutterTexels = 4;
+    checkAtlas(test::sphereMesh(16, 32), opt);
+}
+
+TEST(Atlas, DegenerateAndNonManifoldTrianglesStillGetUVs) {
+    Mesh m = test::sphereMesh(8, 16);
+    const unsigned n = unsigned(m.positions.size());
+    m.triangles.emplace_back(0, 0, 1);          // repeated index
+    m.triangles.emplace_back(1, 2, 1);          // repeated index
+    m.triangles.emplace_back(0, 1, 2);          // third face on an edge (non-manifold)
+    m.positions.emplace_back(5, 5, 5);          // an isolated zero-area triangle
+    m.normals.emplace_back(0, 1, 0);
+    m.triangles.emplace_back(n, n, n);
+    AtlasStats st;
+    const Mesh out = buildAtlas(m, AtlasOptions(), &st);
+    expectSameSurface(m, out, 1024);
+    EXPECT_EQ(st.flipped, 0u);
+    EXPECT_EQ(st.overlaps, 0u);
+}
+
+TEST(Atlas, ClearErrors) {
+    Mesh empty;
+    empty.name = "empty.off";
+    EXPECT_THROW(buildAtlas(empty, AtlasOptions()), Error);
+    Mesh bad = test::sphereMesh(4, 8);
+    bad.triangles.emplace_back(0, 1, 999);
+    try {
+        buildAtlas(bad, AtlasOptions());
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("test:sphere"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Atlas, SegmentsIntersectExactly) {
+    using atlas::segmentsIntersect;
+    EXPECT_TRUE(segmentsIntersect({0, 0}, {1, 1}, {0, 1}, {1, 0}));
+    EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {0, 1e-30}, {1, 1e-30}));
+    EXPECT_TRUE(segmentsIntersect({0, 0}, {1, 0}, {0.5, 0}, {0.5, 1}));  // touching
+    EXPECT_TRUE(segmentsIntersect({0, 0}, {2, 0}, {1, 0}, {3, 0}));      // collinear overlap
+    EXPECT_FALSE(segmentsIntersect({0, 0}, {1, 0}, {2, 0}, {3, 0}));
+    // One float ulp off a diagonal: decided exactly.
+    const glm::dvec2 a(0.1f, 0.1f), b(0.7f, 0.7f), d(0.3f, 0.9f);
+    EXPECT_FALSE(segmentsIntersect(a, b, {0.3f, std::nextafter(0.3f, 1.0f)}, d));
+    EXPECT_TRUE(segmentsIntersect(a, b, {0.3f, std::nextafter(0.3f, 0.0f)}, d));
+    EXPECT_TRUE(segmentsIntersect(a, b, {0.3f, 0.3f}, d));
+}
+
+TEST(Atlas, MeasureFindsFlipsAndOverlaps) {
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    m.triangles = {{0, 1, 2}, {1, 3, 2}};
+    m.uvs = {{0.1f, 0.1f}, {0.6f, 0.1f}, {0.1f, 0.6f}, {0.6f, 0.6f}};
+    AtlasStats ok = measureAtlas(m, 64);
+    EXPECT_EQ(ok.charts, 1);
+    EXPECT_EQ(ok.flipped, 0u);
+    EXPECT_EQ(ok.overlaps, 0u);
+    EXPECT_NEAR(ok.rWstd, 0, 1e-9);
+    EXPECT_NEAR(ok.coverage, 0.25, 0.02);
+    m.uvs[3] = {0.05f, 0.05f};  // folds the second triangle over the first
+    const AtlasStats bad = measureAtlas(m, 64);
+    EXPECT_EQ(bad.flipped, 1u);
+    EXPECT_GE(bad.overlaps, 1u);
+}
+
+TEST(Atlas, JsonKeys) {
+    AtlasStats st;
+    st.charts = 3;
+    const std::string j = atlasStatsJson(st).dump();
+    for (const char* key : {"charts", "coverage", "r_wstd", "r_p01", "r_p99", "r_min", "r_max", "flipped",
+                            "overlaps", "seconds"})
+        EXPECT_NE(j.find(std::string("\"") + key + "\""), std::string::npos) << key;
+}
+
+TEST(Atlas, Png) {
+    const auto dir = scratchDir("png");
+    const Mesh out = buildAtlas(test::sphereMesh(8, 16), AtlasOptions());
+    const std::string path = (dir / "atlas.png").string();
+    writeAtlasPng(path, out, 128);
+    std::ifstream in(path, std::ios::binary);
+    char sig[8] = {};
+    in.read(sig, 8);
+    EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+    std::filesystem::remove_all(dir);
+}
+
+TEST(AtlasCache, HitIsIdenticalAndCorruptEntryIsRebuilt) {
+    const auto dir = scratchDir("cache");
+    const ScopedEnv env("TSIS_CACHE_DIR", dir.string());
+    const std::string path = test::cgalMesh("cow");
+    const Mesh mesh = path.empty() ? test::sphereMesh(16, 32) : test::readOFF(path);
+    AtlasOptions opt;
+
+    AtlasStats first, second, third, fourth;
+    const Mesh a = atlas::buildAtlasCached(mesh, opt, &first);
+    EXPECT_FALSE(first.fromCache);
+    const Mesh b = atlas::buildAtlasCached(mesh, opt, &second);
+    EXPECT_TRUE(second.fromCache);
+    EXPECT_EQ(a.uvs, b.uvs);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(second.charts, first.charts);
+    EXPECT_EQ(second.coverage, first.coverage);
+    EXPECT_LT(second.seconds, first.seconds);
+
+    // Flip one byte in the middle of the entry: rebuilt, not trusted.
+    const auto file = dir / "atlas" / (atlas::cacheKey(mesh, opt) + ".atlas");
+    ASSERT_TRUE(std::filesystem::exists(file));
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(std::streamoff(std::filesystem::file_size(file) / 2));
+        f.put('\x5a');
+    }
+    const Mesh c = atlas::buildAtlasCached(mesh, opt, &third);
+    EXPECT_FALSE(third.fromCache);
+    EXPECT_EQ(c.uvs, a.uvs);  // the builder is deterministic
+    // A truncated entry too.
+    std::filesystem::resize_file(file, 100);
+    atlas::buildAtlasCached(mesh, opt, &third);
+    EXPECT_FALSE(third.fromCache);
+    atlas::buildAtlasCached(mesh, opt, &fourth);
+    EXPECT_TRUE(fourth.fromCache);
+
+    // Other options, other entry.
+    AtlasOptions other = opt;
+    other.resolution = 512;
+    EXPECT_NE(atlas::cacheKey(mesh, other), atlas::cacheKey(mesh, opt));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(AtlasPolicy, Modes) {
+    const auto dir = scratchDir("policy");
+    const ScopedEnv env("TSIS_CACHE_DIR", dir.string());
+    const Mesh plain = test::sphereMesh(8, 16);
+    AtlasOptions opt;
+    opt.resolution = 256;
+
+    // No UVs: auto builds, file is an error naming the mesh.
+    const Mesh built = ensureAtlas(plain, "auto", opt);
+    EXPECT_EQ(built.uvs.size(), built.positions.size());
+    try {
+        ensureAtlas(plain, "file", opt);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("test:sphere"), std::string::npos) << e.what();
+    }
+    // Valid UVs are used as they are by auto and file.
+    EXPECT_EQ(ensureAtlas(built, "auto", opt).uvs, built.uvs);
+    EXPECT_EQ(ensureAtlas(built, "file", opt).uvs, built.uvs);
+    // Invalid UVs (everything folded onto one triangle): auto rebuilds, file fails.
+    Mesh folded = built;
+    for (size_t v = 0; v < folded.uvs.size(); ++v) folded.uvs[v] = glm::vec2(0.1f + 0.3f * float(v % 3), 0.2f + 0.3f * float(v % 2));
+    const Mesh rebuilt = ensureAtlas(folded, "auto", opt);
+    EXPECT_EQ(measureAtlas(rebuilt, 512).overlaps, 0u);
+    EXPECT_THROW(ensureAtlas(folded, "file", opt), Error);
+    EXPECT_THROW(ensureAtlas(plain, "sometimes", opt), Error);
+    // build ignores valid UVs.
+    AtlasStats st;
+    ensureAtlas(built, "build", opt, &st);
+    EXPECT_GT(st.charts, 0);
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tsis
+
+namespace tsis {
+namespace {
+
+// The measured table of the report: run with --gtest_also_run_disabled_tests
+// (TSIS_ATLAS_MESHES="cow head ..." to choose meshes, TSIS_ATLAS_PNG_DIR to
+// also write the pictures).
+TEST(AtlasReport, DISABLED_DataMeshes) {
+    std::string names = "cow head elephant ChineseDragon-10kv armadillo bunny00";
+    if (const char* e = std::getenv("TSIS_ATLAS_MESHES")) names = e;
+    std::istringstream list(names);
+    std::printf("| mesh | triangles | charts | coverage | r_wstd | r p1–p99 | r min–max | flips | overlaps | seconds |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+    for (std::string name; list >> name;) {
+        const std::string path = test::cgalMesh(name);
+        if (path.empty()) GTEST_SKIP() << test::kCgalTarball << " is not installed";
+        const Mesh mesh = test::readOFF(path);
+        AtlasOptions opt;
+        if (const char* e = std::getenv("TSIS_ATLAS_MAXDIST")) opt.maxChartDistortion = std::atof(e);
+        if (const char* e = std::getenv("TSIS_ATLAS_TPP")) opt.trianglesPerProxy = std::atoi(e);
+        AtlasStats st;
+        const Mesh out = buildAtlas(mesh, opt, &st);
+        const AtlasStats fine = measureAtlas(out, 2048);
+        std::printf("| %s | %zu | %d | %.3f | %.4f | %.3f–%.3f | %.3f–%.3f | %zu | %zu (%zu at 2048²) | %.2f |\n",
+                    name.c_str(), mesh.triangles.size(), st.charts, st.coverage, st.rWstd, st.rP01, st.rP99,
+                    st.rMin, st.rMax, st.flipped, st.overlaps, fine.overlaps, st.seconds);
+        std::fflush(stdout);
+        if (const char* dir = std::getenv("TSIS_ATLAS_PNG_DIR"))
+            writeAtlasPng(std::string(dir) + "/" + name + ".png", out, 1024);
+    }
+}
+
+}  // namespace
+}  // namespace tsis

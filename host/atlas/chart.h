@@ -1,0 +1,85 @@
+// Internal pieces of the atlas builder shared by its .cpp files. Plain structs
+// only: the CGAL code stays in segment.cpp and parameterize.cpp.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "mesh/mesh.h"
+
+namespace tsis::atlas {
+
+using Tri = std::array<int, 3>;
+
+// Face adjacency of a triangle soup. Edge e of face f runs from corner e to
+// corner (e+1)%3. Two faces are neighbours across an edge only when exactly two
+// usable faces use it, in opposite directions (a consistently oriented manifold
+// edge); everything else is a border.
+struct Adjacency {
+    std::vector<std::array<int, 3>> across;  // neighbour face or -1
+    std::vector<char> usable;                // non-degenerate faces
+};
+Adjacency buildAdjacency(const Mesh& mesh);
+
+// A topological disk ready for parameterisation: local vertices (a vertex of
+// the input split where the chart's faces around it form several fans).
+struct ChartMesh {
+    std::vector<glm::dvec3> positions;
+    std::vector<uint32_t> sourceVertex;  // local vertex -> input vertex
+    std::vector<Tri> triangles;          // local vertex indices, input orientation
+    std::vector<uint32_t> faces;         // local triangle -> input triangle
+};
+
+// segment.cpp — VSA labels per face (-1 for unusable faces), or an empty
+// vector when CGAL cannot make a polygon mesh of the soup.
+std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, int proxies);
+
+// parameterize.cpp — ARAP (λ = 1000) of a disk. Returns false (with a reason)
+// when CGAL reports an error; the result is not validated here.
+bool parameterizeARAP(const ChartMesh& chart, std::vector<glm::dvec2>& uv, std::string* why);
+
+// charts.cpp — charts from labels: connected, disk-shaped, parameterised and
+// validated pieces, in a deterministic order (by smallest input face).
+struct Chart {
+    ChartMesh mesh;
+    std::vector<glm::dvec2> uv;  // per local vertex, same area as in 3D (ΣAUV = ΣA3D)
+};
+struct ChartOptions {
+    double maxDistortion = 0.06;
+    int threads = 0;
+};
+std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
+                              const ChartOptions& opt);
+
+// Label post-processing: majority smoothing over edge neighbours.
+void smoothLabels(const Adjacency& adj, std::vector<int>& labels, int passes = 8);
+
+// Area-weighted RMS of log(r) of a parameterised chart (after scaling UVs to
+// the chart's 3D area); +inf when a triangle is flipped or degenerate in UV.
+double chartDistortion(const ChartMesh& chart, const std::vector<glm::dvec2>& uv);
+
+// True when segments [a,b] and [c,d] share a point (exact for coordinates
+// whose pairwise differences are exact in double, e.g. floats in [0,1]).
+bool segmentsIntersect(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d);
+
+// Indices i of segments that intersect some other segment they do not share an
+// endpoint id with (ids: endpoints' vertex ids, used to skip neighbours).
+struct Segment {
+    glm::dvec2 a, b;
+    uint32_t ia, ib;  // endpoint ids
+};
+std::vector<size_t> intersectingSegments(const std::vector<Segment>& segs);
+
+// Calls fn(triangle, x, y) for every texel centre ((x+½)/res, (y+½)/res) inside
+// a triangle's UV image; a centre on an edge shared by two triangles goes to
+// one of them (a top-left-style rule). y counts up from v = 0.
+void rasterTriangles(const Mesh& mesh, int resolution,
+                     const std::function<void(size_t tri, int x, int y)>& fn);
+
+}  // namespace tsis::atlas

@@ -1,0 +1,351 @@
+// Skyline packing of chart outlines; see pack.h.
+#include "atlas/pack.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <numeric>
+
+#include "util/error.h"
+
+namespace tsis::atlas {
+
+namespace {
+
+double cross(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> p) {
+    std::sort(p.begin(), p.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    if (p.size() < 3) return p;
+    std::vector<glm::dvec2> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+// Rotation (cos, sin) that turns the chart's smallest-area bounding rectangle
+// axis-aligned, wider than tall.
+glm::dvec2 bestRotation(const std::vector<glm::dvec2>& uv) {
+    const std::vector<glm::dvec2> hull = convexHull(uv);
+    glm::dvec2 best(1, 0);
+    double bestArea = INFINITY, bestW = 0, bestH = 0;
+    for (size_t i = 0; i < hull.size(); ++i) {
+        glm::dvec2 e = hull[(i + 1) % hull.size()] - hull[i];
+        const double len = std::hypot(e.x, e.y);
+        if (len == 0) continue;
+        e /= len;
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        for (glm::dvec2 p : hull) {
+            const glm::dvec2 r(e.x * p.x + e.y * p.y, -e.y * p.x + e.x * p.y);
+            lo = glm::min(lo, r);
+            hi = glm::max(hi, r);
+        }
+        const double area = (hi.x - lo.x) * (hi.y - lo.y);
+        if (area < bestArea * (1 - 1e-9)) {
+            bestArea = area;
+            best = e;
+            bestW = hi.x - lo.x;
+            bestH = hi.y - lo.y;
+        }
+    }
+    if (bestH > bestW) best = glm::dvec2(-best.y, best.x);  // a quarter turn more
+    return best;
+}
+
+// A chart at one density and orientation: its dilated conservative raster as
+// runs of texels per row.
+struct Outline {
+    int w = 0, h = 0;
+    std::vector<std::vector<std::pair<int, int>>> runs;  // per row: [begin, end) columns
+    std::vector<int> longest;                            // per row: longest run
+    std::vector<int> testOrder;                          // rows, longest run first
+    glm::dvec2 shift;  // frame coordinates = quarterTurns(rotated)·scale + shift
+    int orientation = 0;
+    long long texels = 0;
+};
+
+glm::dvec2 quarterTurns(glm::dvec2 p, int o) {
+    for (int i = 0; i < o; ++i) p = glm::dvec2(-p.y, p.x);
+    return p;
+}
+
+Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& tris, double scale, int o,
+                    int dilate) {
+    constexpr double kEps = 1e-3;  // texels: float rounding of the final UVs stays inside
+    Outline out;
+    out.orientation = o;
+    glm::dvec2 lo(INFINITY), hi(-INFINITY);
+    std::vector<glm::dvec2> q(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+        q[i] = quarterTurns(pts[i], o) * scale;
+        lo = glm::min(lo, q[i]);
+        hi = glm::max(hi, q[i]);
+    }
+    out.shift = glm::dvec2(dilate + kEps) - lo;
+    for (glm::dvec2& p : q) p += out.shift;
+    hi += out.shift;
+    out.w = int(std::floor(hi.x + kEps)) + 1 + dilate;
+    out.h = int(std::floor(hi.y + kEps)) + 1 + dilate;
+    std::vector<uint8_t> mask(size_t(out.w) * out.h, 0);
+    for (const Tri& t : tris) {
+        const glm::dvec2 v[3] = {q[t[0]], q[t[1]], q[t[2]]};
+        const double ymin = std::min({v[0].y, v[1].y, v[2].y}), ymax = std::max({v[0].y, v[1].y, v[2].y});
+        const int ylo = std::max(0, int(std::floor(ymin - kEps))), yhi = std::min(out.h - 1, int(std::floor(ymax + kEps)));
+        for (int y = ylo; y <= yhi; ++y) {
+            // x-extent of the triangle within the slab [y, y+1] (widened by kEps).
+            const double y0 = y - kEps, y1 = y + 1 + kEps;
+            double xmin = INFINITY, xmax = -INFINITY;
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 a = v[k], b = v[(k + 1) % 3];
+                if (a.y >= y0 && a.y <= y1) {
+                    xmin = std::min(xmin, a.x);
+                    xmax = std::max(xmax, a.x);
+                }
+                for (double yl : {y0, y1})
+                    if ((a.y < yl && b.y > yl) || (a.y > yl && b.y < yl)) {
+                        const double x = a.x + (b.x - a.x) * (yl - a.y) / (b.y - a.y);
+                        xmin = std::min(xmin, x);
+                        xmax = std::max(xmax, x);
+                    }
+            }
+            if (!(xmin <= xmax)) continue;
+            const int x0 = std::max(0, int(std::floor(xmin - kEps)));
+            const int x1 = std::min(out.w - 1, int(std::floor(xmax + kEps)));
+            std::fill(mask.begin() + size_t(y) * out.w + x0, mask.begin() + size_t(y) * out.w + x1 + 1, 1);
+        }
+    }
+    // Chebyshev dilation: rows, then columns.
+    if (dilate > 0) {
+        std::vector<uint8_t> tmp(mask.size(), 0);
+        for (int y = 0; y < out.h; ++y)
+            for (int x = 0; x < out.w; ++x)
+                if (mask[size_t(y) * out.w + x])
+                    for (int xd = std::max(0, x - dilate); xd <= std::min(out.w - 1, x + dilate); ++xd)
+                        tmp[size_t(y) * out.w + xd] = 1;
+        std::fill(mask.begin(), mask.end(), 0);
+        for (int y = 0; y < out.h; ++y)
+            for (int x = 0; x < out.w; ++x)
+                if (tmp[size_t(y) * out.w + x])
+                    for (int yd = std::max(0, y - dilate); yd <= std::min(out.h - 1, y + dilate); ++yd)
+                        mask[size_t(yd) * out.w + x] = 1;
+    }
+    out.runs.resize(size_t(out.h));
+    out.longest.assign(size_t(out.h), 0);
+    for (int y = 0; y < out.h; ++y) {
+        const uint8_t* row = &mask[size_t(y) * out.w];
+        for (int x = 0; x < out.w;) {
+            if (!row[x]) {
+                ++x;
+                continue;
+            }
+            int e = x;
+            while (e < out.w && row[e]) ++e;
+            out.runs[y].emplace_back(x, e);
+            out.longest[y] = std::max(out.longest[y], e - x);
+            out.texels += e - x;
+            x = e;
+        }
+    }
+    out.testOrder.resize(size_t(out.h));
+    std::iota(out.testOrder.begin(), out.testOrder.end(), 0);
+    std::stable_sort(out.testOrder.begin(), out.testOrder.end(),
+                     [&](int a, int b) { return out.longest[a] > out.longest[b]; });
+    return out;
+}
+
+// Occupancy of the W×H packing area: a bit per texel, and per row the longest
+// free run (an upper bound is enough: it only prunes).
+class Occupancy {
+  public:
+    Occupancy(int W, int H) : W_(W), H_(H), words_((W + 63) / 64), bits_(size_t(words_) * H, 0), free_(size_t(H), W) {}
+
+    // The last occupied column in [a, b) of row y, or -1.
+    int lastOccupied(int y, int a, int b) const {
+        const uint64_t* row = &bits_[size_t(y) * words_];
+        for (int w = (b - 1) >> 6; w >= (a >> 6); --w) {
+            uint64_t m = row[w];
+            const int lo = w * 64, hi = lo + 64;
+            if (a > lo) m &= ~uint64_t(0) << (a - lo);
+            if (b < hi) m &= (b - lo) == 0 ? 0 : (~uint64_t(0) >> (64 - (b - lo)));
+            if (m) return lo + 63 - __builtin_clzll(m);
+        }
+        return -1;
+    }
+    void fill(int y, int a, int b) {
+        uint64_t* row = &bits_[size_t(y) * words_];
+        for (int x = a; x < b; ++x) row[x >> 6] |= uint64_t(1) << (x & 63);
+    }
+    void updateFree(int y) {
+        int best = 0, run = 0;
+        const uint64_t* row = &bits_[size_t(y) * words_];
+        for (int x = 0; x < W_; ++x) {
+            if (row[x >> 6] >> (x & 63) & 1) run = 0;
+            else best = std::max(best, ++run);
+        }
+        free_[y] = best;
+    }
+    int freeRun(int y) const { return free_[y]; }
+    int width() const { return W_; }
+    int height() const { return H_; }
+
+  private:
+    int W_, H_, words_;
+    std::vector<uint64_t> bits_;
+    std::vector<int> free_;
+};
+
+// The lowest (then leftmost) position where `ol` fits with its bottom row at
+// most at yLimit; false when none.
+bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int& by) {
+    const int W = occ.width();
+    for (int y = 0; y <= yLimit; ++y) {
+        bool rowsFree = true;
+        for (int r : ol.testOrder) {
+            if (ol.longest[r] == 0) break;
+            if (occ.freeRun(y + r) < ol.longest[r]) {
+                rowsFree = false;
+                break;
+            }
+        }
+        if (!rowsFree) continue;
+        for (int x = 0; x + ol.w <= W;) {
+            int jump = -1;
+            for (int r : ol.testOrder) {
+                for (auto [a, b] : ol.runs[r]) {
+                    const int p = occ.lastOccupied(y + r, x + a, x + b);
+                    if (p >= 0) {
+                        jump = std::max(jump, p - a + 1);
+                        break;
+                    }
+                }
+                if (jump >= 0) break;
+            }
+            if (jump < 0) {
+                bx = x;
+                by = y;
+                return true;
+            }
+            x = jump;
+        }
+    }
+    return false;
+}
+
+struct Placed {
+    int x = 0, y = 0;
+    Outline outline;
+};
+
+// Packs all charts at `scale` into W×H; false when one does not fit.
+bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
+            const std::vector<size_t>& order, double scale, int W, int H, int dilate, std::vector<Placed>& placed,
+            double* footprint) {
+    Occupancy occ(W, H);
+    placed.assign(charts.size(), Placed());
+    long long used = 0;
+    for (size_t c : order) {
+        int bestTop = INT_MAX;
+        Placed best;
+        for (int o = 0; o < 4; ++o) {
+            Outline ol = makeOutline(pts[c], *charts[c].triangles, scale, o, dilate);
+            if (ol.w > W || ol.h > H) continue;
+            // Lowest top wins; a position can only win with y < bestTop - h.
+            const int yLimit = std::min(H - ol.h, bestTop == INT_MAX ? H : bestTop - ol.h - 1);
+            int x, y;
+            if (yLimit >= 0 && firstFit(occ, ol, yLimit, x, y)) {
+                bestTop = y + ol.h;
+                best.x = x;
+                best.y = y;
+                best.outline = std::move(ol);
+            }
+        }
+        if (bestTop == INT_MAX) return false;
+        const Outline& ol = best.outline;
+        for (int r = 0; r < ol.h; ++r) {
+            for (auto [a, b] : ol.runs[r]) occ.fill(best.y + r, best.x + a, best.x + b);
+            if (!ol.runs[r].empty()) occ.updateFree(best.y + r);
+        }
+        used += ol.texels;
+        placed[c] = std::move(best);
+    }
+    if (footprint) *footprint = double(used) / (double(W) * H);
+    return true;
+}
+
+}  // namespace
+
+PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels) {
+    TSIS_CHECK_GT(resolution, 8);
+    TSIS_CHECK_GE(gutterTexels, 0);
+    PackResult result;
+    if (charts.empty()) return result;
+    const int dilate = (gutterTexels + 1) / 2;
+    // Dilated frames may reach `dilate - 1` texels into the 1-texel margin.
+    const int W = resolution - 2 + 2 * dilate, H = W;
+    const int offset = 1 - dilate;
+
+    // Each chart rotated to its smallest bounding rectangle.
+    std::vector<std::vector<glm::dvec2>> pts(charts.size());
+    std::vector<double> rectArea(charts.size());
+    double totalArea = 0;
+    for (size_t c = 0; c < charts.size(); ++c) {
+        const glm::dvec2 r = bestRotation(*charts[c].uv);
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        for (glm::dvec2 p : *charts[c].uv) {
+            pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
+            lo = glm::min(lo, pts[c].back());
+            hi = glm::max(hi, pts[c].back());
+        }
+        rectArea[c] = (hi.x - lo.x) * (hi.y - lo.y);
+        for (const Tri& t : *charts[c].triangles) {
+            const glm::dvec2 a = pts[c][t[0]], b = pts[c][t[1]], d = pts[c][t[2]];
+            totalArea += 0.5 * std::abs(cross(a, b, d));
+        }
+    }
+    std::vector<size_t> order(charts.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rectArea[a] > rectArea[b]; });
+
+    // Bisection on the density: lo fits, hi does not.
+    std::vector<Placed> placed, bestPlaced;
+    double lo = 0, hi = 0, bestFoot = 0;
+    double s = std::sqrt(0.8 * double(W) * H / std::max(totalArea, 1e-300));
+    for (int it = 0; it < 40; ++it) {
+        double foot = 0;
+        if (packAt(pts, charts, order, s, W, H, dilate, placed, &foot)) {
+            lo = s;
+            bestPlaced = placed;
+            bestFoot = foot;
+        } else {
+            hi = s;
+        }
+        if (hi > 0 && lo > 0 && hi / lo < 1.003) break;
+        s = hi == 0 ? s * 1.15 : (lo == 0 ? s * 0.85 : 0.5 * (lo + hi));
+    }
+    if (lo == 0) fail("atlas: cannot pack ", charts.size(), " charts into ", resolution, "² texels");
+
+    result.texelsPerUnit = lo;
+    result.footprint = bestFoot;
+    result.uv.resize(charts.size());
+    for (size_t c = 0; c < charts.size(); ++c) {
+        const Placed& p = bestPlaced[c];
+        const glm::dvec2 origin(p.x + offset, p.y + offset);
+        for (glm::dvec2 q : pts[c]) {
+            const glm::dvec2 frame = quarterTurns(q, p.outline.orientation) * lo + p.outline.shift;
+            result.uv[c].push_back((frame + origin) / double(resolution));
+        }
+    }
+    return result;
+}
+
+}  // namespace tsis::atlas

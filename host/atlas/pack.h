@@ -1,0 +1,39 @@
+// Chart packing into [0,1]² for a given texture resolution.
+//
+// Every chart is rotated to its smallest-area bounding rectangle, then
+// rasterised conservatively (every texel its triangles touch) at a common
+// density and dilated by ⌈gutter/2⌉ texels. Charts, largest first, go to the
+// free position of a bitmap of the square (lowest top, then lowest, then
+// leftmost) in whichever of four 90° orientations ends lowest, so small charts
+// fill the holes that large ones leave. The density is the largest one, found
+// by bisection, at which every chart fits inside the square with a 1-texel
+// margin.
+//
+// Guarantees at `resolution`: two charts' conservative texels are at least
+// 2·⌈gutter/2⌉ + 1 texels apart (so their geometry at least `gutter` texels),
+// and every chart is at least 1 texel from the [0,1] border.
+#pragma once
+
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
+#include "atlas/chart.h"
+
+namespace tsis::atlas {
+
+struct PackChart {
+    const std::vector<glm::dvec2>* uv;  // any scale (same for all charts), any placement
+    const std::vector<Tri>* triangles;
+};
+
+struct PackResult {
+    std::vector<std::vector<glm::dvec2>> uv;  // per chart, placed in [0,1]²
+    double texelsPerUnit = 0;                 // texel edge lengths per input UV unit
+    double footprint = 0;                     // fraction of the square under dilated rasters
+};
+
+PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels);
+
+}  // namespace tsis::atlas
