@@ -66,10 +66,12 @@ void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, f
 
 GBufferPass::GBufferPass() : program_("mesh.vert", "gbuffer.frag") {}
 
-void GBufferPass::run(const GpuMesh& mesh, const glm::mat4& viewProj, int width, int height) {
-    ensureTarget(target_, width, height, {GL_RGBA32F, GL_RGBA32F}, true);
+void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
+                      const glm::mat4& viewProj, int width, int height) {
+    ensureTarget(target_, width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, true);
     target_->bindAndClear();
     program_.use();
+    bindLights(program_, lights, eta, kShadowUnit);
     program_.set("u_viewProj", viewProj);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -38,11 +38,13 @@ class AtlasPass {
     std::unique_ptr<RenderTarget> target_;
 };
 
-// Pass C: camera G-buffer, position (w = coverage) and normal (attachments 0, 1).
+// Pass C: camera G-buffer: position (w = coverage), normal, irradiance
+// (attachments 0, 1, 2).
 class GBufferPass {
   public:
     GBufferPass();
-    void run(const GpuMesh& mesh, const glm::mat4& viewProj, int width, int height);
+    void run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
+             const glm::mat4& viewProj, int width, int height);
     const RenderTarget& target() const { return *target_; }
 
   private:

@@ -46,6 +46,7 @@ std::vector<OptionSpec> renderSpecs() {
     specs.push_back({"output|o", true, false, "FILE  output PNG (default tsis.png)"});
     specs.push_back({"aov", true, false, "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, flux_atlas"});
     specs.push_back({"stats", true, false, "FILE.json  per-stage timings, bytes, counts"});
+    specs.push_back({"frames", true, false, "N  render the frame N times, report the last (warm timings; default 1)"});
     return specs;
 }
 
@@ -72,8 +73,10 @@ int runRender(const std::vector<std::string>& argv) {
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
 
+    const int frames = args.getInt("frames", 1, 1, 100000);
     Renderer renderer(args.getString("cl-device", ""));
     FrameResult frame = renderer.render(scene, options);
+    for (int i = 1; i < frames; ++i) frame = renderer.render(scene, options);
 
     writeImage8(output, frame.width, frame.height, 3, frame.rgb8);
     if (aovDir) {
@@ -109,7 +112,7 @@ int runMaterials(const std::vector<std::string>& argv) {
 
 int runDipole(const std::vector<std::string>& argv) {
     const std::vector<OptionSpec> specs = {
-        {"material", true, false, "NAME  preset (default marble)"},
+        {"material", true, false, "NAME  preset (default skin1)"},
         {"sigma-s", true, false, "R,G,B  reduced scattering σs' (1/mm)"},
         {"sigma-a", true, false, "R,G,B  absorption σa (1/mm)"},
         {"eta", true, false, "E  relative index of refraction"},

@@ -15,7 +15,7 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
     static const std::vector<OptionSpec> specs = {
         {"mesh", true, false, "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default builtin:default)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
-        {"material", true, false, "NAME  preset material (default marble; see tsis materials)"},
+        {"material", true, false, "NAME  preset material (default skin1; see tsis materials)"},
         {"sigma-s", true, false, "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
         {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
         {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
@@ -39,7 +39,7 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
 }
 
 Material materialFromArgs(const Args& args) {
-    Material m = presetMaterial(args.getString("material", "marble"));
+    Material m = presetMaterial(args.getString("material", "skin1"));
     bool custom = false;
     if (auto v = args.value("sigma-s")) {
         m.sigmaSPrime = parseVec3("--sigma-s", *v);
@@ -89,8 +89,8 @@ std::vector<Light> defaultLights(double sizeMm) {
     back.rgb = glm::vec3(glm::dot(back.vec, back.vec));
     Light fill;
     fill.type = Light::Type::Directional;
-    fill.vec = glm::vec3(0.5f, -0.3f, -1.0f);
-    fill.rgb = glm::vec3(0.25f);
+    fill.vec = glm::vec3(0.6f, -0.4f, -1.0f);
+    fill.rgb = glm::vec3(0.12f);
     return {back, fill};
 }
 

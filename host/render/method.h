@@ -4,6 +4,7 @@
 // and the composite around it.
 #pragma once
 
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,7 +33,23 @@ struct FrameContext {
     std::vector<LightView>* lights = nullptr;  // "light_maps": depth, flux, position per light
     int pointCount = 0;           // covered pixels
     cl::Buffer points;            // "points_cl": pointCount float4 (xyz of each covered pixel)
+    std::vector<float> pointsHost;  // "points_cl" too: the same float4s on the host
+    std::vector<int> pointPixel;  // "points_cl" too: GL pixel index y*width+x (row 0 = bottom)
     cl::Buffer radiosity;         // "radiosity_cl": pointCount float4, written by the method
+
+    // Camera: "gbuffer_cl" holds width*height float4 per buffer, GL row order.
+    int width = 0, height = 0;
+    glm::mat4 viewProj{1.0f};
+    glm::vec3 eye{0.0f};
+    cl::Buffer gbufferPosition;   // xyz, w = coverage
+    cl::Buffer gbufferNormal;     // xyz
+    cl::Buffer gbufferIrradiance; // E rgb at the pixel's surface point (DESIGN §2)
+
+    // Light views: "light_maps_cl", per light lightResolution² float4 (GL row order);
+    // matrices in lights[i].viewProj.
+    int lightResolution = 0;
+    std::vector<cl::Buffer> lightFlux;      // flux per texel rgb (DESIGN §2), a = covered
+    std::vector<cl::Buffer> lightPosition;  // xyz, w = distance to the light (mm)
 };
 
 class Method {

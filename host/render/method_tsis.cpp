@@ -70,13 +70,4 @@ void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const Rad
                    true});
 }
 
-std::unique_ptr<Method> makeMethod(const std::string& name, ClRuntime& cl) {
-    if (name == "tsis") return std::make_unique<TsisMethod>(cl);
-    std::string list;
-    for (const std::string& m : methodNames()) list += (list.empty() ? "" : ", ") + m;
-    fail("unknown method '", name, "'; available: ", list);
-}
-
-std::vector<std::string> methodNames() { return {"tsis"}; }
-
 }  // namespace tsis

@@ -102,6 +102,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     ctx.boundingRadius = boundingRadius(scene.mesh);
     ctx.atlasResolution = res;
     ctx.lights = &lights_;
+    ctx.width = w;
+    ctx.height = h;
+    ctx.lightResolution = opt.lightResolution;
 
     const Camera& cam = scene.camera;
     const float camDist = glm::length(cam.eye - cam.target);
@@ -111,6 +114,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     const glm::mat4 viewProj =
         glm::perspective(glm::radians(cam.fovYDegrees), static_cast<float>(w) / h, nearP, farP) *
         glm::lookAt(cam.eye, cam.target, cam.up);
+    ctx.viewProj = viewProj;
+    ctx.eye = cam.eye;
 
     std::vector<float> gbufferPosition, radianceRGBA;
     std::vector<int> pointPixel;  // GL pixel index of each covered point
@@ -129,8 +134,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        atlasPass_.run(*gpuMesh_, lights_, eta, res);
                        glFinish();
                    }});
-    graph.addPass({"gl_gbuffer", {"mesh"}, {"gbuffer"}, [&] {
-                       gbufferPass_.run(*gpuMesh_, viewProj, w, h);
+    graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
+                       gbufferPass_.run(*gpuMesh_, lights_, eta, viewProj, w, h);
                        glFinish();
                    }});
     // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on
@@ -168,6 +173,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                                              gbufferPosition.begin() + i * 4 + 4);
                            }
                        ctx.pointCount = static_cast<int>(pointPixel.size());
+                       ctx.pointPixel = pointPixel;
+                       ctx.pointsHost = packed;
                        size_t bytes = packed.size() * sizeof(float);
                        points_.reserve(cl_.context(), bytes);
                        radiosity_.reserve(cl_.context(), bytes);
@@ -177,6 +184,48 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        ctx.points = points_.buffer;
                        ctx.radiosity = radiosity_.buffer;
                        stats.addStage("gl_to_cl_points", t.ms(), static_cast<long long>(bytes));
+                   },
+                   true});
+
+    // Full-resolution camera buffers, for methods that work in image space.
+    graph.addPass({"gl_to_cl_gbuffer", {"gbuffer"}, {"gbuffer_cl"},
+                   [&] {
+                       Timer t;
+                       size_t bytes = static_cast<size_t>(w) * h * 16;
+                       long long total = 0;
+                       cl::Buffer* dst[3] = {&ctx.gbufferPosition, &ctx.gbufferNormal,
+                                             &ctx.gbufferIrradiance};
+                       for (int i = 0; i < 3; ++i) {
+                           gbufferCl_[i].reserve(cl_.context(), bytes);
+                           std::vector<float> data = gbufferPass_.target().readRGBA(i);
+                           cl_.queue().enqueueWriteBuffer(gbufferCl_[i].buffer, CL_TRUE, 0, bytes,
+                                                          data.data());
+                           *dst[i] = gbufferCl_[i].buffer;
+                           total += static_cast<long long>(bytes);
+                       }
+                       stats.addStage("gl_to_cl_gbuffer", t.ms(), total);
+                   },
+                   true});
+    graph.addPass({"gl_to_cl_light_maps", {"light_maps"}, {"light_maps_cl"},
+                   [&] {
+                       Timer t;
+                       size_t bytes = static_cast<size_t>(opt.lightResolution) *
+                                      opt.lightResolution * 16;
+                       long long total = 0;
+                       lightCl_.resize(2 * lights_.size());
+                       ctx.lightFlux.clear();
+                       ctx.lightPosition.clear();
+                       for (size_t l = 0; l < lights_.size(); ++l)
+                           for (int i = 0; i < 2; ++i) {
+                               GrowingBuffer& b = lightCl_[2 * l + static_cast<size_t>(i)];
+                               b.reserve(cl_.context(), bytes);
+                               std::vector<float> data = lights_[l].target->readRGBA(i);
+                               cl_.queue().enqueueWriteBuffer(b.buffer, CL_TRUE, 0, bytes,
+                                                              data.data());
+                               (i == 0 ? ctx.lightFlux : ctx.lightPosition).push_back(b.buffer);
+                               total += static_cast<long long>(bytes);
+                           }
+                       stats.addStage("gl_to_cl_light_maps", t.ms(), total);
                    },
                    true});
 

@@ -66,7 +66,8 @@ class Renderer {
             buffer = cl::Buffer(ctx, CL_MEM_READ_WRITE, capacity);
         }
     };
-    GrowingBuffer fluxAtlas_, positionAtlas_, points_, radiosity_;
+    GrowingBuffer fluxAtlas_, positionAtlas_, points_, radiosity_, gbufferCl_[3];
+    std::vector<GrowingBuffer> lightCl_;
 };
 
 // FNV-1a over the mesh's geometry and UVs: decides when to re-upload.

@@ -1,0 +1,35 @@
+// The methods `--method` can name (DESIGN §4). Add a method here.
+#include "render/method.h"
+#include "render/method_tsis.h"
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+struct Entry {
+    const char* name;
+    std::unique_ptr<Method> (*make)(ClRuntime& cl);
+};
+
+const Entry kMethods[] = {
+    {"tsis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeMethod(const std::string& name, ClRuntime& cl) {
+    for (const Entry& e : kMethods)
+        if (name == e.name) return e.make(cl);
+    std::string list;
+    for (const Entry& e : kMethods) list += (list.empty() ? "" : ", ") + std::string(e.name);
+    fail("unknown method '", name, "'; available: ", list);
+}
+
+std::vector<std::string> methodNames() {
+    std::vector<std::string> names;
+    for (const Entry& e : kMethods) names.push_back(e.name);
+    return names;
+}
+
+}  // namespace tsis

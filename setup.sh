@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# tsis setup: installs the Debian 12 packages tsis needs (only those missing),
+# unpacks the CGAL data meshes, builds, and then renders or tests.
+#
+#   ./setup.sh            install + build
+#   ./setup.sh render     install + build + render the default scene to tsis.png
+#   ./setup.sh test       install + build + run the test suite (CTest)
+#
+# Idempotent; run as root on a fresh machine (or with the packages present).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(
+  build-essential cmake pkg-config ca-certificates
+  pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
+  libosmesa6-dev libglm-dev libopenimageio-dev openimageio-tools
+  libcgal-dev libeigen3-dev libcgal-demo
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+BUILD_DIR=${TSIS_BUILD_DIR:-build}
+JOBS=${TSIS_JOBS:-$(nproc)}
+
+log() { echo "setup: $*" >&2; }
+
+install_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    log "all packages present"
+    return
+  fi
+  if [ "$(id -u)" -ne 0 ]; then
+    log "missing packages: ${missing[*]} — run as root (or install them) and retry"
+    exit 1
+  fi
+  log "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# Real test meshes from CGAL's demo data (cow, head, elephant, dragon, …).
+unpack_meshes() {
+  local tarball=/usr/share/doc/libcgal-dev/data.tar.gz dest=data/meshes
+  [ -f "$tarball" ] || tarball=$(ls /usr/share/doc/libcgal-*/data.tar.gz 2>/dev/null | head -n1 || true)
+  if [ -z "$tarball" ] || [ ! -f "$tarball" ]; then
+    log "CGAL data meshes not found; real meshes unavailable"
+    return
+  fi
+  [ -f "$dest/.unpacked" ] && return
+  mkdir -p "$dest"
+  local tmp
+  tmp=$(mktemp -d)
+  tar -xzf "$tarball" -C "$tmp"
+  for name in $(cat data/meshes.txt); do
+    local f
+    f=$(find "$tmp" -name "$name" -print -quit)
+    if [ -n "$f" ]; then cp "$f" "$dest/"; else log "mesh $name not in $tarball"; fi
+  done
+  rm -rf "$tmp"
+  touch "$dest/.unpacked"
+  log "unpacked $(ls "$dest" | wc -l) meshes into $dest"
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+install_packages
+unpack_meshes
+build
+case "${1:-}" in
+  render)
+    "$BUILD_DIR/tsis" render -o tsis.png
+    log "wrote tsis.png"
+    ;;
+  test)
+    cd "$BUILD_DIR"
+    ctest --output-on-failure -j "$JOBS" --timeout 1200
+    ;;
+  "") ;;
+  *) log "unknown step '$1' (render or test)"; exit 2 ;;
+esac
