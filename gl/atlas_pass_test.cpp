@@ -75,7 +75,7 @@ class AtlasPassTest : public ::testing::Test {
         LightViewPass lightPass;
         lightPass.run(gpu, views, 1.3f);
         AtlasPass atlas;
-        atlas.run(gpu, views, 1.3f, res);
+        atlas.run(gpu, views, lightPass.shadows(), 1.3f, res);
         double expected = hostFlux(mesh, light, 1.3, 1);
         double got = atlasFlux(atlas.target(), 1);
         return std::abs(got - expected) / expected;

@@ -52,12 +52,43 @@ LightView makeLightView(const Light& light, float radius, int resolution) {
     return lv;
 }
 
+ShadowMapArray::~ShadowMapArray() {
+    if (id_) glDeleteTextures(1, &id_);
+}
+
+void ShadowMapArray::update(const std::vector<LightView>& lights) {
+    if (lights.empty()) return;
+    int res = lights[0].target->width();
+    int layers = static_cast<int>(lights.size());
+    if (!id_ || res != resolution_ || layers != layers_) {
+        if (id_) glDeleteTextures(1, &id_);
+        glGenTextures(1, &id_);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
+        glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, res, res, layers);
+        // Hardware depth comparison with bilinear filtering (PCF).
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        resolution_ = res;
+        layers_ = layers;
+    }
+    for (int i = 0; i < layers; ++i)
+        glCopyImageSubData(lights[static_cast<size_t>(i)].target->depth(), GL_TEXTURE_2D, 0, 0, 0,
+                           0, id_, GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, res, res, 1);
+}
+
 void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
-                int firstUnit) {
+                int unit, const ShadowMapArray& shadows) {
     TSIS_CHECK_LE(lights.size(), static_cast<size_t>(kMaxLights));
     program.set("u_lightCount", static_cast<int>(lights.size()));
     program.set("u_eta", eta);
-    for (int i = 0; i < kMaxLights; ++i) {
+    program.set("u_shadowMaps", unit);
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, shadows.id());
+    for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         auto at = [i](const char* base) {
             std::string s(base);
             s += '[';
@@ -65,18 +96,12 @@ void bindLights(const ShaderProgram& program, const std::vector<LightView>& ligh
             s += ']';
             return s;
         };
-        // Every sampler in the array needs a valid unit, used or not.
-        int unit = firstUnit + i;
-        program.set(at("u_shadowMap").c_str(), unit);
-        if (i >= static_cast<int>(lights.size())) continue;
         const LightView& lv = lights[static_cast<size_t>(i)];
         program.set(at("u_lightType").c_str(), lv.light.type == Light::Type::Point ? 0 : 1);
         program.set(at("u_lightVec").c_str(), lv.light.vec);
         program.set(at("u_lightRgb").c_str(), lv.light.rgb);
         program.set(at("u_lightViewProj").c_str(), lv.viewProj);
         program.set(at("u_shadowTexelMm").c_str(), lv.texelMm);
-        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-        glBindTexture(GL_TEXTURE_2D, lv.target->depth());
     }
 }
 

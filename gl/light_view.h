@@ -25,9 +25,26 @@ struct LightView {
 // Throws tsis::Error for a point light inside that sphere or a zero direction.
 LightView makeLightView(const Light& light, float boundingRadius, int resolution);
 
+// The lights' shadow maps as one depth texture array (a layer per light), the
+// form the shaders sample.
+class ShadowMapArray {
+  public:
+    ShadowMapArray() = default;
+    ~ShadowMapArray();
+    ShadowMapArray(const ShadowMapArray&) = delete;
+    ShadowMapArray& operator=(const ShadowMapArray&) = delete;
+    // Copies each light's depth into its layer (re-allocating on a size change).
+    void update(const std::vector<LightView>& lights);
+    GLuint id() const { return id_; }
+
+  private:
+    GLuint id_ = 0;
+    int resolution_ = 0, layers_ = 0;
+};
+
 // Sets u_lightCount, u_light*, u_shadow* and u_eta on `program`, binding the
-// shadow maps to texture units firstUnit…
+// shadow map array to texture unit `unit`.
 void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
-                int firstUnit);
+                int unit, const ShadowMapArray& shadows);
 
 }  // namespace tsis

@@ -6,7 +6,7 @@ namespace tsis {
 
 namespace {
 
-// Texture units: 0–3 for a pass's own inputs, 4… for shadow maps.
+// Texture units: 0–3 for a pass's own inputs, 4 for the shadow map array.
 constexpr int kShadowUnit = 4;
 
 void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
@@ -28,14 +28,11 @@ LightViewPass::LightViewPass() : program_("mesh.vert", "light_view.frag") {}
 
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta) {
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit);
+    bindLights(program_, lights, eta, kShadowUnit, shadows_);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     for (size_t i = 0; i < lights.size(); ++i) {
-        // The shadow map being written must not be bound for sampling.
-        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(kShadowUnit + i));
-        glBindTexture(GL_TEXTURE_2D, 0);
         RenderTarget& t = *lights[i].target;
         t.bindAndClear();
         program_.set("u_viewProj", lights[i].viewProj);
@@ -46,17 +43,18 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, flo
         mesh.draw();
     }
     glDisable(GL_DEPTH_TEST);
+    shadows_.update(lights);
     checkGl("LightViewPass");
 }
 
 AtlasPass::AtlasPass() : program_("atlas.vert", "atlas.frag") {}
 
-void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
-                    int resolution) {
+void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
+                    const ShadowMapArray& shadows, float eta, int resolution) {
     ensureTarget(target_, resolution, resolution, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, false);
     target_->bindAndClear();
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit);
+    bindLights(program_, lights, eta, kShadowUnit, shadows);
     program_.set("u_texelArea", 1.0f / (static_cast<float>(resolution) * resolution));
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -66,12 +64,13 @@ void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, f
 
 GBufferPass::GBufferPass() : program_("mesh.vert", "gbuffer.frag") {}
 
-void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
-                      const glm::mat4& viewProj, int width, int height) {
+void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
+                      const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj,
+                      int width, int height) {
     ensureTarget(target_, width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, true);
     target_->bindAndClear();
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit);
+    bindLights(program_, lights, eta, kShadowUnit, shadows);
     program_.set("u_viewProj", viewProj);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -107,13 +106,13 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbu
 }
 
 void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                            const glm::vec3& eye, float eta, float key, float lavg,
+                            const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key, float lavg,
                             float specular, float shininess) {
     int w = gbuffer.width(), h = gbuffer.height();
     ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
     colorTarget_->bindAndClear();
     toneMapProgram_.use();
-    bindLights(toneMapProgram_, lights, eta, kShadowUnit);
+    bindLights(toneMapProgram_, lights, eta, kShadowUnit, shadows);
     toneMapProgram_.set("u_eye", eye);
     toneMapProgram_.set("u_key", key);
     toneMapProgram_.set("u_lavg", lavg);

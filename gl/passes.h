@@ -21,16 +21,20 @@ class LightViewPass {
   public:
     LightViewPass();
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta);
+    // The shadow maps of the last run, for the passes that light.
+    const ShadowMapArray& shadows() const { return shadows_; }
 
   private:
     ShaderProgram program_;
+    ShadowMapArray shadows_;
 };
 
 // Pass A: flux, position and normal atlases (attachments 0, 1, 2).
 class AtlasPass {
   public:
     AtlasPass();
-    void run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta, int resolution);
+    void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
+             const ShadowMapArray& shadows, float eta, int resolution);
     const RenderTarget& target() const { return *target_; }
 
   private:
@@ -43,8 +47,9 @@ class AtlasPass {
 class GBufferPass {
   public:
     GBufferPass();
-    void run(const GpuMesh& mesh, const std::vector<LightView>& lights, float eta,
-             const glm::mat4& viewProj, int width, int height);
+    void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
+             const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj, int width,
+             int height);
     const RenderTarget& target() const { return *target_; }
 
   private:
@@ -61,7 +66,7 @@ class CompositePass {
     void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
                   float eta);
     void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                 const glm::vec3& eye, float eta, float key, float lavg, float specular,
+                 const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key, float lavg, float specular,
                  float shininess);
     const RenderTarget& radianceTarget() const { return *radianceTarget_; }
     const RenderTarget& colorTarget() const { return *colorTarget_; }

@@ -22,7 +22,9 @@ uniform vec3 u_lightVec[MAX_LIGHTS];
 uniform vec3 u_lightRgb[MAX_LIGHTS];
 uniform mat4 u_lightViewProj[MAX_LIGHTS];
 uniform float u_shadowTexelMm[MAX_LIGHTS];  // a shadow-map texel's size at the object
-uniform sampler2DShadow u_shadowMap[MAX_LIGHTS];
+// One layer per light: a single sampler, since dynamically indexed sampler
+// arrays cost one lookup per array element on llvmpipe.
+uniform sampler2DArrayShadow u_shadowMaps;
 uniform float u_eta;
 
 // Unit vector from p towards light i, and the 1/d² falloff of a point light.
@@ -46,11 +48,11 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     vec4 c = u_lightViewProj[i] * vec4(q, 1.0);
     vec3 s = c.xyz / c.w * 0.5 + 0.5;
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
-    vec2 texel = 1.0 / vec2(textureSize(u_shadowMap[i], 0));
+    vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
     float sum = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
-            sum += texture(u_shadowMap[i], vec3(s.xy + vec2(dx, dy) * texel, s.z - 2e-5));
+            sum += texture(u_shadowMaps, vec4(s.xy + vec2(dx, dy) * texel, float(i), s.z - 2e-5));
     return sum / 9.0;
 }
 

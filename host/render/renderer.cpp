@@ -131,11 +131,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        glFinish();
                    }});
     graph.addPass({"gl_atlas", {"mesh", "light_maps"}, {"atlas"}, [&] {
-                       atlasPass_.run(*gpuMesh_, lights_, eta, res);
+                       atlasPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, res);
                        glFinish();
                    }});
     graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
-                       gbufferPass_.run(*gpuMesh_, lights_, eta, viewProj, w, h);
+                       gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj, w, h);
                        glFinish();
                    }});
     // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on
@@ -254,7 +254,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                                                cam.eye, eta);
                        radianceRGBA = compositePass_.radianceTarget().readRGBA(0);
                        result.lavg = logAverageLuminance(radianceRGBA);
-                       compositePass_.toneMap(gbufferPass_.target(), lights_, cam.eye, eta,
+                       compositePass_.toneMap(gbufferPass_.target(), lights_, lightPass_.shadows(),
+                                              cam.eye, eta,
                                               opt.key, result.lavg,
                                               opt.specular ? opt.specularKs : 0.0f,
                                               opt.shininess);
