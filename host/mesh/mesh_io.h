@@ -1,5 +1,7 @@
 // Loading meshes from OFF, OBJ and PLY files and the built-in procedural ones.
-// Every failure is a tsis::Error naming the file and the problem.
+// Every failure is a tsis::Error naming the file and the problem. A loaded mesh
+// has been checked and repaired (repair.h; one stderr note per repair); its
+// normals are the file's, if any: callers run normalizeMesh and ensureNormals.
 #pragma once
 
 #include <string>

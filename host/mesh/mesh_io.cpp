@@ -1,0 +1,91 @@
+#include "mesh/mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "mesh/builtin.h"
+#include "util/error.h"
+
+#ifndef TSIS_DATA_DIR
+#define TSIS_DATA_DIR "data"
+#endif
+
+namespace tsis {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readFile(const std::string& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) fail("mesh '", path, "': is a directory");
+    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!f) fail("mesh '", path, "': cannot open (", std::strerror(errno), ")");
+    std::string bytes;
+    char buffer[1 << 16];
+    size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) bytes.append(buffer, n);
+    if (std::ferror(f.get())) fail("mesh '", path, "': read error (", std::strerror(errno), ")");
+    return bytes;
+}
+
+std::string lowerExtension(const std::string& spec) {
+    std::string ext = fs::path(spec).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+Mesh loadByExtension(const std::string& path, const std::string& ext) {
+    if (ext == ".off") return loadOFF(path);
+    if (ext == ".obj") return loadOBJ(path);
+    return loadPLY(path);
+}
+
+bool knownExtension(const std::string& ext) {
+    return ext == ".off" || ext == ".obj" || ext == ".ply";
+}
+
+}  // namespace
+
+Mesh loadOFF(const std::string& path) {
+    return parseOFF(readFile(path), path);
+}
+Mesh loadOBJ(const std::string& path) {
+    return parseOBJ(readFile(path), path);
+}
+Mesh loadPLY(const std::string& path) {
+    return parsePLY(readFile(path), path);
+}
+
+Mesh loadMesh(const std::string& spec) {
+    if (spec.empty()) fail("mesh: empty name (give a path, a data mesh name or builtin:NAME)");
+    if (spec.rfind("builtin:", 0) == 0) return builtinMesh(spec.substr(8));
+    const std::string ext = lowerExtension(spec);
+    if (knownExtension(ext)) return loadByExtension(spec, ext);
+    if (spec.find('/') != std::string::npos)
+        fail("mesh '", spec, "': unknown format '", ext, "' (known: .off, .obj, .ply)");
+
+    // A bare name: the data meshes, $TSIS_MESH_DIR first.
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv("TSIS_MESH_DIR"); env && *env) dirs.emplace_back(env);
+    dirs.emplace_back(TSIS_DATA_DIR "/meshes");
+    for (const std::string& dir : dirs)
+        for (const char* e : {".off", ".obj", ".ply"}) {
+            const std::string path = dir + "/" + spec + e;
+            std::error_code ec;
+            if (fs::is_regular_file(path, ec)) return loadByExtension(path, e);
+        }
+    std::string where;
+    for (const std::string& dir : dirs) where += (where.empty() ? "" : " or ") + dir;
+    fail("mesh '", spec, "': no ", spec, ".off, .obj or .ply in ", where,
+         " (setup.sh unpacks the CGAL data meshes there; or give a path or builtin:NAME)");
+}
+
+}  // namespace tsis

@@ -1,0 +1,185 @@
+// Wavefront OBJ: v, vt, vn and f (v, v/vt, v//vn, v/vt/vn; negative indices
+// count back from the latest). Corners with separate v/vt/vn indices become one
+// vertex per distinct combination, so every attribute is per vertex.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "mesh/mesh_io.h"
+#include "mesh/parse_util.h"
+#include "mesh/repair.h"
+
+namespace tsis {
+
+namespace {
+
+using namespace meshparse;
+
+constexpr uint32_t kNone = UINT32_MAX;
+
+struct Corner {
+    uint32_t v = kNone, vt = kNone, vn = kNone;  // 0-based
+    bool operator==(const Corner&) const = default;
+};
+
+struct CornerHash {
+    size_t operator()(const Corner& c) const {
+        const auto mix = [](size_t h, uint32_t x) {
+            return h ^ (std::hash<uint32_t>()(x) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2));
+        };
+        return mix(mix(std::hash<uint32_t>()(c.v), c.vt), c.vn);
+    }
+};
+
+// Resolves a 1-based or negative OBJ index against the `count` seen so far.
+uint32_t resolve(std::string_view token, size_t count, const char* what, const std::string& name,
+                 size_t line) {
+    long long i = 0;
+    if (!parseInt(token, i)) failAt(name, line, "bad ", what, " index '", token, "'");
+    if (i == 0) failAt(name, line, what, " index 0 (OBJ indices start at 1)");
+    const long long n = static_cast<long long>(count);
+    const long long r = i > 0 ? i - 1 : n + i;
+    if (r < 0 || r >= n)
+        failAt(name, line, what, " index ", i, " out of range (", n, " defined so far)");
+    return static_cast<uint32_t>(r);  // counts stay below kNone (see parseOBJ)
+}
+
+Corner parseCorner(std::string_view token, size_t nv, size_t nvt, size_t nvn,
+                   const std::string& name, size_t line) {
+    std::string_view part[3];
+    size_t parts = 0;
+    for (size_t start = 0;;) {
+        const size_t slash = token.find('/', start);
+        if (parts == 3) failAt(name, line, "bad face corner '", token, "'");
+        part[parts++] =
+            token.substr(start, slash == std::string_view::npos ? slash : slash - start);
+        if (slash == std::string_view::npos) break;
+        start = slash + 1;
+    }
+    Corner c;
+    c.v = resolve(part[0], nv, "vertex", name, line);
+    if (parts > 1 && !part[1].empty())
+        c.vt = resolve(part[1], nvt, "texture coordinate", name, line);
+    if (parts > 2 && !part[2].empty()) c.vn = resolve(part[2], nvn, "normal", name, line);
+    return c;
+}
+
+double number(std::string_view token, const std::string& name, size_t line) {
+    double v = 0;
+    if (!parseDouble(token, v)) failAt(name, line, "bad number '", token, "'");
+    return v;
+}
+
+}  // namespace
+
+Mesh parseOBJ(const std::string& text, const std::string& name) {
+    std::string_view body(text);
+    if (body.substr(0, 3) == "\xEF\xBB\xBF") body.remove_prefix(3);  // UTF-8 BOM
+    Lines lines(body, '#');
+    std::vector<std::string_view> tok;
+    std::vector<glm::vec3> pos, nrm;
+    std::vector<glm::vec2> tex;
+    // Faces as they are (corners, and where each face starts): triangulated
+    // only once the attributes to keep are known.
+    std::vector<Corner> corners;
+    std::vector<size_t> faceStart;
+    size_t lineCount = 0, shortFaces = 0, triangleCount = 0;
+    while (lines.next(tok)) {
+        ++lineCount;
+        const size_t line = lines.lineNumber();
+        const std::string_view key = tok[0];
+        if (std::max({pos.size(), tex.size(), nrm.size()}) >= kNone - 1)
+            failAt(name, line, "more than 2³² vertices, texture coordinates or normals");
+        if (key == "v") {
+            // "v x y z [w]" or "v x y z r g b": only x y z matter.
+            if (tok.size() < 4) failAt(name, line, "vertex needs 3 coordinates");
+            const size_t i = pos.size() + 1;  // the file's 1-based numbering
+            pos.emplace_back(coordinate(number(tok[1], name, line), name, i, line),
+                             coordinate(number(tok[2], name, line), name, i, line),
+                             coordinate(number(tok[3], name, line), name, i, line));
+        } else if (key == "vt") {
+            if (tok.size() < 2) failAt(name, line, "texture coordinate needs a value");
+            const double u = number(tok[1], name, line);
+            const double v = tok.size() > 2 ? number(tok[2], name, line) : 0.0;
+            if (!std::isfinite(toFloat(u)) || !std::isfinite(toFloat(v)))
+                failAt(name, line, "texture coordinate ", tex.size() + 1, " is not finite");
+            tex.emplace_back(toFloat(u), toFloat(v));
+        } else if (key == "vn") {
+            if (tok.size() < 4) failAt(name, line, "normal needs 3 components");
+            nrm.emplace_back(toFloat(number(tok[1], name, line)),
+                             toFloat(number(tok[2], name, line)),
+                             toFloat(number(tok[3], name, line)));
+        } else if (key == "f") {
+            if (tok.size() < 4) {
+                ++shortFaces;
+                continue;
+            }
+            faceStart.push_back(corners.size());
+            for (size_t k = 1; k < tok.size(); ++k)
+                corners.push_back(
+                    parseCorner(tok[k], pos.size(), tex.size(), nrm.size(), name, line));
+            triangleCount += tok.size() - 3;
+        }
+        // Everything else (o, g, s, usemtl, mtllib, l, p, curves) does not
+        // change the surface a renderer needs.
+    }
+    if (lineCount == 0) failIn(name, "empty file");
+    if (shortFaces)
+        note(name, concat("skipped ", shortFaces, " ", plural(shortFaces, "face", "faces"),
+                          " with fewer than 3 vertices"));
+    if (faceStart.empty()) failIn(name, "no faces (", pos.size(), " vertices and no triangles)");
+
+    // Attributes only when every corner has one: a partly textured mesh has
+    // no atlas, a partly shaded one gets computed normals.
+    size_t withUV = 0, withN = 0;
+    for (const Corner& c : corners) {
+        withUV += c.vt != kNone;
+        withN += c.vn != kNone;
+    }
+    const bool keepUV = withUV == corners.size(), keepN = withN == corners.size();
+    if (withUV && !keepUV)
+        note(name, concat("ignored texture coordinates: only ", withUV, " of ", corners.size(),
+                          " face corners have one"));
+    if (withN && !keepN)
+        note(name, concat("ignored normals: only ", withN, " of ", corners.size(),
+                          " face corners have one"));
+
+    Mesh mesh;
+    mesh.name = name;
+    std::unordered_map<Corner, uint32_t, CornerHash> index;
+    index.reserve(pos.size());
+    mesh.triangles.reserve(triangleCount);
+    std::vector<uint32_t> face;
+    faceStart.push_back(corners.size());
+    for (size_t f = 0; f + 1 < faceStart.size(); ++f) {
+        face.clear();
+        for (size_t k = faceStart[f]; k < faceStart[f + 1]; ++k) {
+            Corner c = corners[k];
+            if (!keepUV) c.vt = kNone;
+            if (!keepN) c.vn = kNone;
+            const auto [it, added] =
+                index.try_emplace(c, static_cast<uint32_t>(mesh.positions.size()));
+            if (added) {
+                mesh.positions.push_back(pos[c.v]);
+                if (keepUV) mesh.uvs.push_back(tex[c.vt]);
+                if (keepN) mesh.normals.push_back(nrm[c.vn]);
+            }
+            face.push_back(it->second);
+        }
+        for (size_t k = 2; k < face.size(); ++k)  // fan
+            mesh.triangles.emplace_back(face[0], face[k - 1], face[k]);
+    }
+    // Vertices no face uses never became mesh vertices; say so like the
+    // other formats do.
+    std::vector<char> used(pos.size(), 0);
+    for (const auto& [c, i] : index) used[c.v] = 1;
+    size_t unused = 0;
+    for (char u : used) unused += !u;
+    if (unused)
+        note(name,
+             concat("removed ", unused, " unreferenced ", plural(unused, "vertex", "vertices")));
+    repairMesh(mesh);
+    return mesh;
+}
+
+}  // namespace tsis

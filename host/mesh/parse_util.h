@@ -1,0 +1,77 @@
+// Pieces the mesh parsers share: line and token iteration, locale-free number
+// parsing, and errors that name the file and the line.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "util/error.h"
+
+namespace tsis::meshparse {
+
+// Lines of a text with '\r' and everything after `comment` removed.
+class Lines {
+  public:
+    Lines(std::string_view text, char comment) : text_(text), comment_(comment) {}
+
+    // The next line that has at least one token, split on whitespace; false at
+    // the end of the text.
+    bool next(std::vector<std::string_view>& tokens);
+    size_t lineNumber() const { return line_; }  // 1-based, of the last line returned
+    size_t bytesLeft() const { return text_.size() - pos_; }
+
+  private:
+    std::string_view text_;
+    char comment_;
+    size_t pos_ = 0, line_ = 0;
+};
+
+// Whitespace-separated tokens of a text, with their line numbers (ASCII PLY).
+class Tokens {
+  public:
+    // `firstLine`: the number of the text's first line in the whole file.
+    explicit Tokens(std::string_view text, size_t firstLine = 1) : text_(text), line_(firstLine) {}
+    bool next(std::string_view& token);
+    size_t lineNumber() const { return line_; }
+    size_t bytesLeft() const { return text_.size() - pos_; }
+
+  private:
+    std::string_view text_;
+    size_t pos_ = 0, line_;
+};
+
+void splitTokens(std::string_view line, std::vector<std::string_view>& out);
+
+// Whole-token parses; false on anything else (trailing junk, empty, overflow).
+bool parseDouble(std::string_view s, double& value);
+bool parseInt(std::string_view s, long long& value);
+
+// A double as float without undefined behaviour: ±infinity beyond float range.
+float toFloat(double value);
+
+// A vertex coordinate as float; refuses NaN, infinity and values beyond float range.
+// `line` 0: the message names no line (binary formats).
+float coordinate(double value, const std::string& name, size_t vertex, size_t line = 0);
+
+// The least bytes `count` records of `minBytes` each need, saturating.
+unsigned long long minBytes(unsigned long long count, unsigned long long bytesEach);
+
+// One repair note on stderr: "tsis: note: mesh 'NAME': WHAT".
+void note(const std::string& name, const std::string& what);
+inline const char* plural(size_t n, const char* one, const char* many) {
+    return n == 1 ? one : many;
+}
+
+template <typename... Args>
+[[noreturn]] void failAt(const std::string& name, size_t line, const Args&... args) {
+    fail("mesh '", name, "': line ", line, ": ", args...);
+}
+
+template <typename... Args>
+[[noreturn]] void failIn(const std::string& name, const Args&... args) {
+    fail("mesh '", name, "': ", args...);
+}
+
+}  // namespace tsis::meshparse

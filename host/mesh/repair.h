@@ -1,0 +1,34 @@
+// Checks and repairs every loaded mesh goes through: what a renderer can fix
+// is fixed with one note on stderr each, the rest is a tsis::Error.
+#pragma once
+
+#include <cstddef>
+
+#include "mesh/mesh.h"
+
+namespace tsis {
+
+// Edges by vertex index (an OBJ/atlas seam, with its duplicated vertices, is
+// two boundaries, not a joined edge).
+struct EdgeStats {
+    size_t edges = 0;        // distinct undirected edges
+    size_t boundary = 0;     // used by one triangle
+    size_t nonManifold = 0;  // used by three or more
+};
+EdgeStats edgeStats(const Mesh& mesh);
+
+struct RepairReport {
+    size_t mergedVertices = 0;        // exact duplicates folded into one (only without UVs)
+    size_t degenerateTriangles = 0;   // repeated index or area < 1e-12 · diagonal²
+    size_t unreferencedVertices = 0;  // used by no triangle, dropped
+    size_t nonManifoldEdges = 0;      // reported, kept
+};
+
+// Refuses non-finite positions or UVs and out-of-range indices (bugs in a
+// parser, or a mesh built by hand); merges exact duplicate vertices when the
+// mesh has no UVs (merging would close UV seams); drops degenerate triangles
+// and unreferenced vertices; reports non-manifold edges. Throws when no
+// triangle is left.
+RepairReport repairMesh(Mesh& mesh);
+
+}  // namespace tsis
