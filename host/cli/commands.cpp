@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "cli/args.h"
+#include "cli/compare_command.h"
 #include "cli/scene_options.h"
 #include "image/image_io.h"
+#include "mesh/mesh_io.h"
 #include "physics/report.h"
 #include "render/renderer.h"
 #include "util/error.h"
@@ -27,6 +29,8 @@ commands:
   render      render a frame to a PNG (and AOVs, stats)
   materials   list the preset materials with their coefficients
   dipole      evaluate the dipole profile Rd(r) of a material
+  compare     error metrics (and a heat map) of an image against a reference
+  atlas       build (or check) a mesh's texture atlas and report its quality
   help        this text; `tsis <command> --help` for a command's options
 )";
 
@@ -135,10 +139,54 @@ int runDipole(const std::vector<std::string>& argv) {
     return 0;
 }
 
+int runAtlas(const std::vector<std::string>& argv) {
+    const std::vector<OptionSpec> specs = {
+        {"mesh", true, false, "M  mesh file, builtin:NAME or a data mesh name (required)"},
+        {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
+        {"atlas", true, false, "MODE  auto (default), file or build"},
+        {"atlas-res", true, false, "R  resolution the atlas is made for (default 1024)"},
+        {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
+        {"json", false, false, "print the statistics as JSON"},
+    };
+    if (wantsHelp(argv)) {
+        std::cout << usageText("tsis atlas --mesh M [-o atlas.png] [--json]", specs);
+        return 0;
+    }
+    Args args("atlas", specs, argv);
+    if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
+    auto meshSpec = args.value("mesh");
+    if (!meshSpec) fail("tsis atlas needs --mesh");
+    if (auto o = args.value("output")) requireParentDir(*o);
+    Mesh mesh = loadMesh(*meshSpec);
+    normalizeMesh(mesh, args.getDouble("size-mm", 10.0, 1e-3, 1e5));
+    ensureNormals(mesh);
+    AtlasOptions ao = atlasOptionsFromArgs(args);
+    AtlasStats built;
+    mesh = ensureAtlas(mesh, atlasMode(args), ao, &built);
+    AtlasStats stats = measureAtlas(mesh, ao.resolution);
+    stats.seconds = built.seconds;
+    stats.fromCache = built.fromCache;
+    if (auto o = args.value("output")) writeAtlasPng(*o, mesh, ao.resolution);
+    Json j = atlasStatsJson(stats);
+    if (args.flag("json")) {
+        std::cout << j.dump() << "\n";
+    } else {
+        std::printf("%s: %zu triangles, %d charts, coverage %.3f\n", mesh.name.c_str(),
+                    mesh.triangles.size(), stats.charts, stats.coverage);
+        std::printf("area ratio r: weighted stddev %.4f, p1 %.3f, p99 %.3f, min %.3f, max %.3f\n",
+                    stats.rWstd, stats.rP01, stats.rP99, stats.rMin, stats.rMax);
+        std::printf("flipped %zu, overlapping %zu, %.2f s%s\n", stats.flipped, stats.overlaps,
+                    stats.seconds, stats.fromCache ? " (from cache)" : "");
+    }
+    return 0;
+}
+
 const Command kCommands[] = {
+    {"atlas", runAtlas},
     {"render", runRender},
     {"materials", runMaterials},
     {"dipole", runDipole},
+    {"compare", runCompare},
 };
 
 }  // namespace

@@ -4,9 +4,11 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "atlas/atlas.h"
 #include "mesh/mesh_io.h"
 #include "mesh/uv_check.h"
 #include "physics/material.h"
+#include "render/profiles.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -27,9 +29,19 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"width", true, false, "W  image width (default 512)"},
         {"height", true, false, "H  image height (default 512)"},
         {"method", true, false, "NAME  tsis (default); see README for the others"},
-        {"samples", true, false, "N  importance samples (default 900)"},
+        {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
         {"seed", true, false, "S  random seed (default 1)"},
+        {"spacing", true, false, "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = 1/max σt', the smallest mean free path"},
+        {"epsilon", true, false, "E  hierarchical: use an octree node whole when its area/distance^2 < E (default 0.05)"},
+        {"rp-bound", true, false, "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
+        {"rp-k", true, false, "K  hybrid: slope of the local/global weights around Rp, 1/mm (default 1.5)"},
+        {"rd-part", true, false, "P  tsis, ltsm: integrate Rd (full, default), Rd·Wl (local) or Rd·Wg (global)"},
+        {"ltsm-rings", true, false, "L  ltsm, hybrid: rings of the light-view filter (default 4)"},
+        {"ltsm-per-ring", true, false, "C  ltsm, hybrid: samples per ring (default 4; L×C+1 in all)"},
+        {"mis-distance", true, false, "M  mis: distance-driven samples per pixel and light (default 16)"},
+        {"tsm-radius", true, false, "K  tsm: filter radius K/σtr of the widest channel, at most the object's diameter (default 4)"},
         {"atlas-res", true, false, "R  atlas resolution, a power of two (default 1024)"},
+        {"atlas", true, false, "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or build"},
         {"light-res", true, false, "R  shadow/light-view map resolution (default 1024)"},
         {"key", true, false, "K  tone-mapping key (default 0.18)"},
         {"no-specular", false, false, "turn off the Phong highlight"},
@@ -103,6 +115,19 @@ Camera defaultCamera(double sizeMm, float fovYDegrees) {
     return c;
 }
 
+std::string atlasMode(const Args& args) {
+    std::string mode = args.getString("atlas", "auto");
+    if (mode != "auto" && mode != "file" && mode != "build")
+        fail("--atlas '", mode, "': expected auto, file or build");
+    return mode;
+}
+
+AtlasOptions atlasOptionsFromArgs(const Args& args) {
+    AtlasOptions o;
+    o.resolution = args.getInt("atlas-res", 1024, 16, 4096);
+    return o;
+}
+
 Scene sceneFromArgs(const Args& args) {
     Scene scene;
     double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
@@ -110,9 +135,7 @@ Scene sceneFromArgs(const Args& args) {
     scene.mesh = loadMesh(args.getString("mesh", "builtin:default"));
     normalizeMesh(scene.mesh, size);
     ensureNormals(scene.mesh);
-    if (!scene.mesh.hasUVs())
-        fail("mesh '", scene.mesh.name, "' has no UVs (texture coordinates)");
-    if (UVCheck uv = checkUVs(scene.mesh); !uv.ok) fail(uv.problem);
+    scene.mesh = ensureAtlas(scene.mesh, atlasMode(args), atlasOptionsFromArgs(args));
     for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
     if (scene.lights.empty()) scene.lights = defaultLights(size);
     float fov = static_cast<float>(args.getDouble("fov", 35.0, 1.0, 170.0));
@@ -134,6 +157,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.height = args.getInt("height", 512, 1, 8192);
     o.samples = args.getInt("samples", 900, 1, 1 << 22);
     o.seed = static_cast<uint32_t>(args.getInt("seed", 1, 0, 0xffffffffll >> 1));
+    o.spacingMm = args.getDouble("spacing", 0.0, 1e-4, 1e4);
+    o.epsilon = static_cast<float>(args.getDouble("epsilon", o.epsilon, 0.0, 1e3));
     auto powerOfTwo = [&](const char* name, int def) {
         int r = args.getInt(name, def, 1, 8192);
         if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");
@@ -142,6 +167,14 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.atlasResolution = powerOfTwo("atlas-res", 1024);
     if (o.atlasResolution > 4096) fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
     o.lightResolution = args.getInt("light-res", 1024, 16, 8192);
+    o.rpBound = args.getDouble("rp-bound", 0.1, 1e-9, 1e9);
+    o.rpK = args.getDouble("rp-k", 1.5, 0.0, 1e6);
+    o.rdPart = args.getString("rd-part", "full");
+    parseRdPart(o.rdPart);
+    o.ltsmRings = args.getInt("ltsm-rings", 4, 0, 64);
+    o.ltsmPerRing = args.getInt("ltsm-per-ring", 4, 1, 256);
+    o.misDistanceSamples = args.getInt("mis-distance", 16, 0, 1 << 16);
+    o.tsmRadius = args.getDouble("tsm-radius", 4.0, 1e-3, 1e3);
     o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     return o;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "atlas/atlas.h"
 #include "cli/args.h"
 #include "render/render_options.h"
 #include "render/scene.h"
@@ -23,6 +24,10 @@ Light parseLight(const std::string& spec);
 // light that makes thin parts glow and a weaker front fill.
 std::vector<Light> defaultLights(double sizeMm);
 Camera defaultCamera(double sizeMm, float fovYDegrees);
+
+// --atlas (auto|file|build) and the atlas options matching --atlas-res.
+std::string atlasMode(const Args& args);
+AtlasOptions atlasOptionsFromArgs(const Args& args);
 
 // Loads, normalises and prepares (normals, UVs) the mesh; builds the scene.
 Scene sceneFromArgs(const Args& args);

@@ -1,0 +1,69 @@
+#include "cli/compare_command.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include "cli/args.h"
+#include "compare/heatmap.h"
+#include "compare/image_compare.h"
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+constexpr const char* kAbout = R"(
+Compares image A with the reference B (EXR, or anything OpenImageIO reads) over
+the pixels of --mask (> 0.5; all pixels without it), every channel:
+  rmse          root mean square of A − B
+  rel_rmse      rmse / mean of B (B is the reference)
+  mean_rel_err  mean of |A − B| / max(|B|, 0.001 · mean |B|)
+  max_abs       largest |A − B|
+  psnr          20 log10(max of B / rmse), dB
+  pixels        pixels compared
+)";
+
+ImageF readInput(const std::string& path, const char* what) {
+    if (!std::filesystem::exists(path)) fail(what, " '", path, "' does not exist");
+    return readImageF(path);
+}
+
+}  // namespace
+
+int runCompare(const std::vector<std::string>& argv) {
+    const std::vector<OptionSpec> specs = {
+        {"mask", true, false, "FILE  compare only pixels where FILE's first channel > 0.5 (e.g. coverage.exr)"},
+        {"heatmap", true, false, "FILE.png  false-colour relative error with a legend"},
+        {"heat-max", true, false, "X  relative error at the top of the heat map's scale (default: a round value ≥ the 99th percentile)"},
+        {"json", false, false, "print the metrics as JSON"},
+    };
+    bool help = false;
+    for (const std::string& a : argv) help = help || a == "--help" || a == "-h";
+    if (help) {
+        std::cout << usageText("tsis compare A.exr B.exr [options]", specs) << kAbout;
+        return 0;
+    }
+    Args args("compare", specs, argv);
+    if (args.positional().size() != 2)
+        fail("compare takes two images, A and the reference B (got ", args.positional().size(), ")");
+    const std::string pathA = args.positional()[0], pathB = args.positional()[1];
+    const ImageF a = readInput(pathA, "image"), b = readInput(pathB, "reference image");
+    ImageF mask;
+    const auto maskPath = args.value("mask");
+    if (maskPath) mask = readInput(*maskPath, "mask");
+    const Comparison cmp = compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB,
+                                         maskPath.value_or(""));
+    std::cout << (args.flag("json") ? compareJson(cmp.metrics).dump() + "\n" : compareTable(cmp.metrics));
+    if (auto heatPath = args.value("heatmap")) {
+        const double scale = args.has("heat-max") ? args.getDouble("heat-max", 0, 1e-9, 1e9)
+                                                  : heatmapScale(cmp.relError);
+        const Heatmap hm = renderHeatmap(cmp.relError, scale);
+        writeImage8(*heatPath, hm.width, hm.height, 3, hm.rgb);
+        if (!args.flag("json"))
+            std::cout << "heat map      " << *heatPath << " (scale 0 to " << 100 * scale
+                      << "% relative error)\n";
+    }
+    return 0;
+}
+
+}  // namespace tsis
