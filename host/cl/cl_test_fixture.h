@@ -1,0 +1,71 @@
+// Shared setup for the OpenCL kernel tests (as Boost.Compute's
+// test/context_setup.hpp): one ClRuntime per test program, created on first
+// use, plus buffer helpers.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cl/cl_runtime.h"
+
+namespace tsis::test {
+
+inline ClRuntime& sharedRuntime() {
+    static ClRuntime runtime;
+    return runtime;
+}
+
+class ClTest : public ::testing::Test {
+  protected:
+    ClRuntime& rt = sharedRuntime();
+
+    template <typename T>
+    cl::Buffer upload(const std::vector<T>& v) {
+        // Never a zero-size buffer (invalid in OpenCL); callers pass the count.
+        std::vector<T> copy = v;
+        if (copy.empty()) copy.resize(1);
+        return cl::Buffer(rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
+                          copy.size() * sizeof(T), copy.data());
+    }
+
+    cl::Buffer buffer(size_t bytes) {
+        return cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes > 0 ? bytes : 1);
+    }
+
+    template <typename T>
+    std::vector<T> download(const cl::Buffer& b, size_t count) {
+        std::vector<T> v(count);
+        if (count > 0) rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, count * sizeof(T), v.data());
+        return v;
+    }
+};
+
+// Sets an environment variable for one scope and restores it afterwards.
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        if (value)
+            ::setenv(name, value, 1);
+        else
+            ::unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (old_)
+            ::setenv(name_.c_str(), old_->c_str(), 1);
+        else
+            ::unsetenv(name_.c_str());
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+  private:
+    std::string name_;
+    std::optional<std::string> old_;
+};
+
+}  // namespace tsis::test
