@@ -140,7 +140,7 @@ ClRuntime::ProgramStats ClRuntime::programStats() const {
 }
 
 cl::Program ClRuntime::build(const std::string& file, const std::string& options) {
-    const std::string_view source = embeddedText(embeddedKernels(), file);
+    const std::string source = embeddedSource(embeddedKernels(), file);
     const cl::Platform platform(device_.getInfo<CL_DEVICE_PLATFORM>());
     const std::string platformId =
         platform.getInfo<CL_PLATFORM_NAME>() + "|" + platform.getInfo<CL_PLATFORM_VERSION>();
