@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <cstdlib>
 #include <deque>
+#include <thread>
 
 #include "atlas/cache.h"
 #include "atlas/chart.h"
@@ -73,19 +75,31 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
 
     const int proxies =
         std::max(opt.minProxies, int(usable / size_t(std::max(1, opt.trianglesPerProxy))));
+    // TSIS_ATLAS_DEBUG=1: wall and process CPU seconds after each stage on stderr.
+    const bool debug = std::getenv("TSIS_ATLAS_DEBUG") != nullptr;
+    auto stage = [&](const char* name) {
+        if (!debug) return;
+        timespec ts;
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+        std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000, ts.tv_sec + 1e-9 * ts.tv_nsec);
+    };
     std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
+    stage("segmented");
     if (labels.empty()) labels = patchLabels(adj, std::max(1, opt.trianglesPerProxy));
-    smoothLabels(adj, labels);
+    smoothLabels(mesh, adj, labels, std::max(1, opt.trianglesPerProxy / 10));
 
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;
     copt.threads = opt.threads;
     const std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
+    stage("charts parameterised");
 
     std::vector<PackChart> packIn;
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
-    const PackResult packed = packCharts(packIn, opt.resolution, opt.gutterTexels);
-    if (std::getenv("TSIS_ATLAS_DEBUG")) std::fprintf(stderr, "pack footprint %.3f\n", packed.footprint);
+    const PackResult packed = packCharts(
+        packIn, opt.resolution, opt.gutterTexels,
+        opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
+    stage("packed");
 
     // Output vertices: one per (chart, chart vertex), numbered in the order the
     // triangles first use them; degenerate triangles get their own vertices

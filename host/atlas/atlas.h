@@ -2,17 +2,21 @@
 // integral over the surface becomes an integral over texture space (DESIGN §1).
 //
 // Pipeline of buildAtlas (host/atlas/atlas.cpp):
-//   segment   Variational Shape Approximation (CGAL), proxies ≈ faces/200 (≥ 50),
-//             labels smoothed, every label split into connected pieces;
-//   charts    each piece made a topological disk (connected, Euler characteristic 1,
-//             one boundary loop), else split in two (recursively);
-//   param     ARAP (CGAL ARAP_parameterizer_3, λ = 1000) per chart, in parallel;
-//             validated here: no flipped triangle, simple border, RMS of
-//             log(A3D/AUV) ≤ maxChartDistortion — a chart that fails is split;
-//   pack      charts scaled to one texel density, rotated to their smallest
-//             bounding rectangle, packed by a skyline packer on their dilated
-//             raster outlines at `resolution`, the density chosen by bisection
-//             to fill the square.
+//   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200);
+//             labels smoothed (edge and vertex-ring majority filters), pieces
+//             under 20 faces merged into a neighbour (charts.cpp);
+//   charts    each connected piece made a topological disk (Euler characteristic
+//             1, one border loop, no pinched vertex), else split in two at the
+//             geodesic Voronoi boundary of two far faces (recursively);
+//   param     ARAP (CGAL ARAP_parameterizer_3, λ = 1000) per chart, charts in
+//             parallel; validated here: no flipped triangle, a border that does
+//             not cross itself, area-weighted RMS of log(A3D/AUV) ≤
+//             maxChartDistortion — a chart that fails is split in two;
+//   pack      charts scaled to one texel density and packed as dilated
+//             conservative rasters at `resolution` (atlas/pack.h).
+// Degenerate triangles (repeated index or no area) get their own vertices,
+// parked on one UV point of a neighbouring chart (zero UV area).
+// TSIS_ATLAS_DEBUG=1 prints the time after each stage on stderr.
 // No CGAL type leaks out of this header.
 #pragma once
 
@@ -72,6 +76,10 @@ AtlasStats measureAtlas(const Mesh& meshWithUVs, int resolution);
 // Keys: charts, coverage, r_wstd, r_p01, r_p99, r_min, r_max, flipped, overlaps,
 // seconds, from_cache.
 Json atlasStatsJson(const AtlasStats& stats);
+
+// The names the `tsis atlas` issue uses.
+using AtlasReport = AtlasStats;
+inline Json atlasReportJson(const AtlasReport& report) { return atlasStatsJson(report); }
 
 // A (2·res)×res PNG: charts in colour on the left, a heat map of log2 r on the
 // right (blue r < 1, white r = 1, red r > 1; saturated at r = 2^∓½ ≈ 0.71 and 1.41).

@@ -57,8 +57,11 @@ struct ChartOptions {
 std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
                               const ChartOptions& opt);
 
-// Label post-processing: majority smoothing over edge neighbours.
-void smoothLabels(const Adjacency& adj, std::vector<int>& labels, int passes = 8);
+// Label post-processing: majority filters over edge neighbours and over the
+// faces around a face's vertices (which removes the one- and two-triangle-wide
+// spikes VSA leaves on fine meshes), then connected pieces smaller than
+// minFaces merged into the neighbour they share most edges with.
+void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces);
 
 // Area-weighted RMS of log(r) of a parameterised chart (after scaling UVs to
 // the chart's 3D area); +inf when a triangle is flipped or degenerate in UV.

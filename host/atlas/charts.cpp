@@ -11,9 +11,6 @@
 // geodesic Voronoi boundary of two far-apart faces; a single triangle is laid
 // out isometrically, so splitting ends.
 #include <algorithm>
-#include <atomic>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <condition_variable>
 #include <deque>
@@ -183,11 +180,13 @@ Adjacency buildAdjacency(const Mesh& mesh) {
     return adj;
 }
 
-void smoothLabels(const Adjacency& adj, std::vector<int>& labels, int passes) {
+void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces) {
+    const size_t n = labels.size();
+    // Edge rule: two or three neighbours agreeing on another label win.
     std::vector<int> next = labels;
-    for (int pass = 0; pass < passes; ++pass) {
+    for (int pass = 0; pass < 8; ++pass) {
         size_t changed = 0;
-        for (size_t f = 0; f < labels.size(); ++f) {
+        for (size_t f = 0; f < n; ++f) {
             if (labels[f] < 0) continue;
             int nl[3], k = 0, same = 0;
             for (int e = 0; e < 3; ++e) {
@@ -206,6 +205,93 @@ void smoothLabels(const Adjacency& adj, std::vector<int>& labels, int passes) {
         labels.swap(next);
         next = labels;
         if (changed == 0) break;
+    }
+
+    // Vertex-ring rule: a label that holds 60% of the faces around a face's
+    // three vertices (and more than the face's own) takes it (in place, in
+    // face order).
+    std::vector<uint32_t> start(mesh.positions.size() + 1, 0), ring;
+    for (size_t f = 0; f < n; ++f)
+        if (labels[f] >= 0)
+            for (int k = 0; k < 3; ++k) ++start[mesh.triangles[f][k] + 1];
+    for (size_t v = 0; v < mesh.positions.size(); ++v) start[v + 1] += start[v];
+    ring.resize(start.back());
+    {
+        std::vector<uint32_t> fillAt(start.begin(), start.end() - 1);
+        for (size_t f = 0; f < n; ++f)
+            if (labels[f] >= 0)
+                for (int k = 0; k < 3; ++k) ring[fillAt[mesh.triangles[f][k]]++] = uint32_t(f);
+    }
+    std::vector<std::pair<int, int>> votes;  // label, count
+    for (int pass = 0; pass < 6; ++pass) {
+        size_t changed = 0;
+        for (size_t f = 0; f < n; ++f) {
+            if (labels[f] < 0) continue;
+            votes.clear();
+            int own = 0, total = 0;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[f][k];
+                for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                    const int l = labels[ring[i]];
+                    if (ring[i] == f || l < 0) continue;
+                    ++total;
+                    if (l == labels[f]) {
+                        ++own;
+                        continue;
+                    }
+                    auto it = std::find_if(votes.begin(), votes.end(), [&](auto& p) { return p.first == l; });
+                    if (it == votes.end()) votes.emplace_back(l, 1);
+                    else ++it->second;
+                }
+            }
+            for (auto [l, c] : votes)
+                if (c > own && 10 * c >= 6 * total) {
+                    labels[f] = l;
+                    ++changed;
+                    break;
+                }
+        }
+        if (changed == 0) break;
+    }
+
+    // Small connected pieces join the neighbouring label they share most edges with.
+    for (int round = 0; round < 3; ++round) {
+        UnionFind comps{n};
+        for (size_t f = 0; f < n; ++f)
+            for (int e = 0; e < 3; ++e) {
+                const int g = adj.across[f][e];
+                if (g >= 0 && labels[f] >= 0 && labels[g] == labels[f]) comps.unite(int(f), g);
+            }
+        std::vector<int> size(n, 0);
+        for (size_t f = 0; f < n; ++f)
+            if (labels[f] >= 0) ++size[comps.find(int(f))];
+        std::unordered_map<int, std::vector<std::pair<int, int>>> border;  // root -> (label, edges)
+        for (size_t f = 0; f < n; ++f) {
+            if (labels[f] < 0) continue;
+            const int r = comps.find(int(f));
+            if (size[r] >= minFaces) continue;
+            for (int e = 0; e < 3; ++e) {
+                const int g = adj.across[f][e];
+                if (g < 0 || labels[g] < 0 || labels[g] == labels[f]) continue;
+                auto& list = border[r];
+                auto it = std::find_if(list.begin(), list.end(), [&](auto& p) { return p.first == labels[g]; });
+                if (it == list.end()) list.emplace_back(labels[g], 1);
+                else ++it->second;
+            }
+        }
+        if (border.empty()) break;
+        std::unordered_map<int, int> target;
+        for (auto& [r, list] : border) {
+            auto best = list.front();
+            for (auto p : list)
+                if (p.second > best.second || (p.second == best.second && p.first < best.first)) best = p;
+            target[r] = best.first;
+        }
+        for (size_t f = 0; f < n; ++f) {
+            if (labels[f] < 0) continue;
+            auto it = target.find(comps.find(int(f)));
+            if (it != target.end()) labels[f] = it->second;
+        }
     }
 }
 
@@ -493,13 +579,7 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std:
             std::string why;
             ok = parameterizeARAP(chart.mesh, chart.uv, &why) &&
                  acceptable(chart.mesh, topo, chart.uv, opt.maxDistortion);
-            if (std::getenv("TSIS_ATLAS_DEBUG"))
-                std::fprintf(stderr, "disk %zu faces: %s distortion %.4f\n", faces.size(), why.c_str(),
-                             chart.uv.empty() ? -1.0 : chartDistortion(chart.mesh, chart.uv));
         }
-        if (std::getenv("TSIS_ATLAS_DEBUG"))
-            std::fprintf(stderr, "piece %zu faces: disk %d (chi %d loops %d pinched %d) ok %d\n", faces.size(), disk,
-                         topo.euler, topo.loops, topo.pinched, ok);
         if (!ok) {
             TSIS_CHECK_GT(faces.size(), size_t(1));  // a single usable triangle always works
             auto [a, b] = splitInTwo(mesh, faces, topo);

@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <numeric>
+#include <thread>
 
 #include "util/error.h"
 
@@ -208,6 +209,14 @@ class Occupancy {
 // most at yLimit; false when none.
 bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int& by) {
     const int W = occ.width();
+    int hot = ol.testOrder.front();  // the row that collided last is tried first
+    auto collide = [&](int r, int x, int y) {
+        for (auto [a, b] : ol.runs[r]) {
+            const int p = occ.lastOccupied(y + r, x + a, x + b);
+            if (p >= 0) return p - a + 1;
+        }
+        return -1;
+    };
     for (int y = 0; y <= yLimit; ++y) {
         bool rowsFree = true;
         for (int r : ol.testOrder) {
@@ -219,17 +228,16 @@ bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int&
         }
         if (!rowsFree) continue;
         for (int x = 0; x + ol.w <= W;) {
-            int jump = -1;
-            for (int r : ol.testOrder) {
-                for (auto [a, b] : ol.runs[r]) {
-                    const int p = occ.lastOccupied(y + r, x + a, x + b);
-                    if (p >= 0) {
-                        jump = std::max(jump, p - a + 1);
+            int jump = collide(hot, x, y);
+            if (jump < 0)
+                for (int r : ol.testOrder) {
+                    if (r == hot) continue;
+                    jump = collide(r, x, y);
+                    if (jump >= 0) {
+                        hot = r;
                         break;
                     }
                 }
-                if (jump >= 0) break;
-            }
             if (jump < 0) {
                 bx = x;
                 by = y;
@@ -254,22 +262,23 @@ bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<P
     placed.assign(charts.size(), Placed());
     long long used = 0;
     for (size_t c : order) {
-        int bestTop = INT_MAX;
+        int bestMid = INT_MAX;
         Placed best;
         for (int o = 0; o < 4; ++o) {
             Outline ol = makeOutline(pts[c], *charts[c].triangles, scale, o, dilate);
             if (ol.w > W || ol.h > H) continue;
-            // Lowest top wins; a position can only win with y < bestTop - h.
-            const int yLimit = std::min(H - ol.h, bestTop == INT_MAX ? H : bestTop - ol.h - 1);
+            // The lowest middle row wins (measured a little better than the
+            // lowest top or the lowest bottom); only y < bestMid - h/2 can.
+            const int yLimit = std::min(H - ol.h, bestMid == INT_MAX ? H : bestMid - ol.h / 2 - 1);
             int x, y;
             if (yLimit >= 0 && firstFit(occ, ol, yLimit, x, y)) {
-                bestTop = y + ol.h;
+                bestMid = y + ol.h / 2;
                 best.x = x;
                 best.y = y;
                 best.outline = std::move(ol);
             }
         }
-        if (bestTop == INT_MAX) return false;
+        if (bestMid == INT_MAX) return false;
         const Outline& ol = best.outline;
         for (int r = 0; r < ol.h; ++r) {
             for (auto [a, b] : ol.runs[r]) occ.fill(best.y + r, best.x + a, best.x + b);
@@ -284,7 +293,7 @@ bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<P
 
 }  // namespace
 
-PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels) {
+PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels, int threads) {
     TSIS_CHECK_GT(resolution, 8);
     TSIS_CHECK_GE(gutterTexels, 0);
     PackResult result;
@@ -296,43 +305,73 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
 
     // Each chart rotated to its smallest bounding rectangle.
     std::vector<std::vector<glm::dvec2>> pts(charts.size());
-    std::vector<double> rectArea(charts.size());
     double totalArea = 0;
     for (size_t c = 0; c < charts.size(); ++c) {
         const glm::dvec2 r = bestRotation(*charts[c].uv);
-        glm::dvec2 lo(INFINITY), hi(-INFINITY);
-        for (glm::dvec2 p : *charts[c].uv) {
-            pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
-            lo = glm::min(lo, pts[c].back());
-            hi = glm::max(hi, pts[c].back());
-        }
-        rectArea[c] = (hi.x - lo.x) * (hi.y - lo.y);
+        for (glm::dvec2 p : *charts[c].uv) pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
         for (const Tri& t : *charts[c].triangles) {
             const glm::dvec2 a = pts[c][t[0]], b = pts[c][t[1]], d = pts[c][t[2]];
             totalArea += 0.5 * std::abs(cross(a, b, d));
         }
     }
+    // Largest first, by the short side of the bounding rectangle (measured
+    // better than by rectangle or chart area).
+    std::vector<double> shortSide(charts.size());
+    for (size_t c = 0; c < charts.size(); ++c) {
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        for (glm::dvec2 p : pts[c]) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        shortSide[c] = std::min(hi.x - lo.x, hi.y - lo.y);
+    }
     std::vector<size_t> order(charts.size());
     std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rectArea[a] > rectArea[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return shortSide[a] > shortSide[b]; });
 
-    // Bisection on the density: lo fits, hi does not.
-    std::vector<Placed> placed, bestPlaced;
-    double lo = 0, hi = 0, bestFoot = 0;
-    double s = std::sqrt(0.8 * double(W) * H / std::max(totalArea, 1e-300));
-    for (int it = 0; it < 40; ++it) {
-        double foot = 0;
-        if (packAt(pts, charts, order, s, W, H, dilate, placed, &foot)) {
-            lo = s;
-            bestPlaced = placed;
-            bestFoot = foot;
+    // Search on the density: lo fits, hi does not; two probes per round, run
+    // side by side when there are two threads.
+    struct Probe {
+        double scale = 0;
+        bool fits = false;
+        double footprint = 0;
+        std::vector<Placed> placed;
+    };
+    const bool parallel = threads > 1;
+    double lo = 0, hi = INFINITY;
+    Probe best;
+    const double s0 = std::sqrt(0.7 * double(W) * H / std::max(totalArea, 1e-300));
+    auto run = [&](Probe& p) { p.fits = packAt(pts, charts, order, p.scale, W, H, dilate, p.placed, &p.footprint); };
+    auto runBoth = [&](Probe (&probe)[2]) {
+        if (parallel) {
+            std::thread other(run, std::ref(probe[1]));
+            run(probe[0]);
+            other.join();
         } else {
-            hi = s;
+            run(probe[0]);
+            run(probe[1]);
         }
-        if (hi > 0 && lo > 0 && hi / lo < 1.003) break;
-        s = hi == 0 ? s * 1.15 : (lo == 0 ? s * 0.85 : 0.5 * (lo + hi));
+    };
+    for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.01); ++round) {
+        Probe probe[2];
+        if (lo == 0 && hi == INFINITY) probe[0].scale = s0, probe[1].scale = 0.88 * s0;
+        else if (lo == 0) probe[0].scale = 0.88 * hi, probe[1].scale = 0.77 * hi;
+        else if (hi == INFINITY) probe[0].scale = 1.12 * lo, probe[1].scale = 1.25 * lo;
+        else probe[0].scale = lo + (hi - lo) / 3, probe[1].scale = lo + 2 * (hi - lo) / 3;
+        runBoth(probe);
+        for (Probe& p : probe)
+            if (p.fits && p.scale > lo) {
+                lo = p.scale;
+                best = std::move(p);
+            }
+        for (Probe& p : probe)
+            if (!p.fits && p.scale > lo) hi = std::min(hi, p.scale);
+        if (hi <= lo) hi = lo * 1.01;  // a fit above a failure: packing is not monotone
+        if (lo == 0 && hi < 1e-12 * s0) break;
     }
     if (lo == 0) fail("atlas: cannot pack ", charts.size(), " charts into ", resolution, "² texels");
+    const std::vector<Placed>& bestPlaced = best.placed;
+    const double bestFoot = best.footprint;
 
     result.texelsPerUnit = lo;
     result.footprint = bestFoot;

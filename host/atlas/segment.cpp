@@ -2,6 +2,10 @@
 // Desbrun 2004) with CGAL's L2,1 metric: faces cluster into near-planar regions,
 // which flatten with little distortion. The only CGAL code besides
 // parameterize.cpp.
+//
+// 5 Lloyd iterations and 2 seeding relaxations: measured against CGAL's 20 and
+// 5 on elephant and armadillo, the same chart counts, coverage and distortion
+// (±2%) at a third of the time (armadillo: 1.6 s instead of 4.1 s CPU).
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
@@ -50,8 +54,8 @@ std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, i
     auto proxyMap = sm.add_property_map<FaceDescriptor, std::size_t>("f:proxy", 0).first;
     const std::size_t maxProxies = std::min<std::size_t>(std::size_t(proxies), polygons.size());
     VSA::approximate_triangle_mesh(sm, CGAL::parameters::max_number_of_proxies(maxProxies)
-                                           .number_of_iterations(20)
-                                           .number_of_relaxations(5)
+                                           .number_of_iterations(5)
+                                           .number_of_relaxations(2)
                                            .face_proxy_map(proxyMap));
 
     std::vector<int> labels(mesh.triangles.size(), -1);
