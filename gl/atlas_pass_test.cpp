@@ -74,8 +74,10 @@ class AtlasPassTest : public ::testing::Test {
         views.push_back(makeLightView(light, 5.0f, 1024));
         LightViewPass lightPass;
         lightPass.run(gpu, views, 1.3f);
-        AtlasPass atlas;
-        atlas.run(gpu, views, lightPass.shadows(), 1.3f, res);
+        GeometryAtlasPass geometry;
+        geometry.run(gpu, res);
+        FluxAtlasPass atlas;
+        atlas.run(geometry.target(), views, lightPass.shadows(), 1.3f);
         double expected = hostFlux(mesh, light, 1.3, 1);
         double got = atlasFlux(atlas.target(), 1);
         return std::abs(got - expected) / expected;

@@ -47,19 +47,35 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, flo
     checkGl("LightViewPass");
 }
 
-AtlasPass::AtlasPass() : program_("atlas.vert", "atlas.frag") {}
+GeometryAtlasPass::GeometryAtlasPass() : program_("atlas.vert", "atlas.frag") {}
 
-void AtlasPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
-                    const ShadowMapArray& shadows, float eta, int resolution) {
-    ensureTarget(target_, resolution, resolution, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, false);
+void GeometryAtlasPass::run(const GpuMesh& mesh, int resolution) {
+    ensureTarget(target_, resolution, resolution, {GL_RGBA32F, GL_RGBA32F}, false);
     target_->bindAndClear();
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit, shadows);
     program_.set("u_texelArea", 1.0f / (static_cast<float>(resolution) * resolution));
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     mesh.draw();
-    checkGl("AtlasPass");
+    checkGl("GeometryAtlasPass");
+}
+
+FluxAtlasPass::FluxAtlasPass() : program_("fullscreen.vert", "flux_atlas.frag") {
+    glGenVertexArrays(1, &emptyVao_);
+}
+
+void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightView>& lights,
+                        const ShadowMapArray& shadows, float eta) {
+    ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
+    target_->bindAndClear();
+    program_.use();
+    bindLights(program_, lights, eta, kShadowUnit, shadows);
+    bindTexture(program_, "u_position", 0, geometry.color(0));
+    bindTexture(program_, "u_normal", 1, geometry.color(1));
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    checkGl("FluxAtlasPass");
 }
 
 GBufferPass::GBufferPass() : program_("mesh.vert", "gbuffer.frag") {}

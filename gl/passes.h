@@ -29,17 +29,32 @@ class LightViewPass {
     ShadowMapArray shadows_;
 };
 
-// Pass A: flux, position and normal atlases (attachments 0, 1, 2).
-class AtlasPass {
+// Pass A, part 1 (once per mesh and resolution): the geometry atlas —
+// position (w = coverage) and normal (w = the texel's surface area, mm²).
+class GeometryAtlasPass {
   public:
-    AtlasPass();
-    void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, float eta, int resolution);
+    GeometryAtlasPass();
+    void run(const GpuMesh& mesh, int resolution);
     const RenderTarget& target() const { return *target_; }
 
   private:
     ShaderProgram program_;
     std::unique_ptr<RenderTarget> target_;
+};
+
+// Pass A, part 2 (every frame): the flux atlas, flux per texel (attachment 0),
+// shaded over the geometry atlas.
+class FluxAtlasPass {
+  public:
+    FluxAtlasPass();
+    void run(const RenderTarget& geometry, const std::vector<LightView>& lights,
+             const ShadowMapArray& shadows, float eta);
+    const RenderTarget& target() const { return *target_; }
+
+  private:
+    ShaderProgram program_;
+    std::unique_ptr<RenderTarget> target_;
+    GLuint emptyVao_ = 0;
 };
 
 // Pass C: camera G-buffer: position (w = coverage), normal, irradiance

@@ -40,7 +40,8 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 }
 
 // Shadow-map visibility with a normal offset that grows at grazing angles (no
-// acne on curved translucent surfaces) and 3×3 bilinear PCF.
+// acne on curved translucent surfaces) and PCF: four bilinear-compared taps at
+// ±½ texel, a 3×3-texel tent for the price of four lookups.
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     float cosT = clamp(dot(n, l), 0.0, 1.0);
     float sinT = sqrt(1.0 - cosT * cosT);
@@ -50,10 +51,11 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
     vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
     float sum = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            sum += texture(u_shadowMaps, vec4(s.xy + vec2(dx, dy) * texel, float(i), s.z - 2e-5));
-    return sum / 9.0;
+    for (int k = 0; k < 4; ++k) {
+        vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
+        sum += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
+    }
+    return 0.25 * sum;
 }
 
 // E(x) of DESIGN §2, summed over the lights.

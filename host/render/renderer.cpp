@@ -130,31 +130,48 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        lightPass_.run(*gpuMesh_, lights_, eta);
                        glFinish();
                    }});
-    graph.addPass({"gl_atlas", {"mesh", "light_maps"}, {"atlas"}, [&] {
-                       atlasPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, res);
+    // The geometry atlas depends on the mesh and resolution only: made once.
+    graph.addPass({"gl_geometry_atlas", {"mesh"}, {"geometry_atlas"}, [&] {
+                       if (geometryKey_ == std::make_pair(meshHash_, res)) return;
+                       geometryAtlasPass_.run(*gpuMesh_, res);
+                       glFinish();
+                       geometryKey_ = {meshHash_, res};
+                       geometryVersion_++;
+                   }});
+    graph.addPass({"gl_flux_atlas", {"geometry_atlas", "light_maps"}, {"atlas"}, [&] {
+                       fluxAtlasPass_.run(geometryAtlasPass_.target(), lights_,
+                                          lightPass_.shadows(), eta);
                        glFinish();
                    }});
     graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
-                       gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj, w, h);
+                       gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj,
+                                        w, h);
                        glFinish();
                    }});
     // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on
-    // OSMesa + PoCL). Flux and position atlases cross at full float precision.
+    // OSMesa + PoCL). The flux atlas crosses every frame at full float
+    // precision; the position atlas only when the mesh or resolution changed.
     graph.addPass({"gl_to_cl_atlas", {"atlas"}, {"flux_atlas_cl", "position_atlas_cl"},
                    [&] {
                        Timer t;
                        size_t bytes = static_cast<size_t>(res) * res * 16;
+                       long long moved = static_cast<long long>(bytes);
                        fluxAtlas_.reserve(cl_.context(), bytes);
-                       positionAtlas_.reserve(cl_.context(), bytes);
-                       std::vector<float> flux = atlasPass_.target().readRGBA(0);
-                       std::vector<float> pos = atlasPass_.target().readRGBA(1);
-                       cl_.queue().enqueueWriteBuffer(fluxAtlas_.buffer, CL_FALSE, 0, bytes, flux.data());
-                       cl_.queue().enqueueWriteBuffer(positionAtlas_.buffer, CL_FALSE, 0, bytes,
-                                                      pos.data());
+                       std::vector<float> flux = fluxAtlasPass_.target().readRGBA(0);
+                       cl_.queue().enqueueWriteBuffer(fluxAtlas_.buffer, CL_FALSE, 0, bytes,
+                                                      flux.data());
+                       if (positionVersion_ != geometryVersion_) {
+                           positionAtlas_.reserve(cl_.context(), bytes);
+                           std::vector<float> pos = geometryAtlasPass_.target().readRGBA(0);
+                           cl_.queue().enqueueWriteBuffer(positionAtlas_.buffer, CL_TRUE, 0,
+                                                          bytes, pos.data());
+                           positionVersion_ = geometryVersion_;
+                           moved += static_cast<long long>(bytes);
+                       }
                        cl_.queue().finish();
                        ctx.fluxAtlas = fluxAtlas_.buffer;
                        ctx.positionAtlas = positionAtlas_.buffer;
-                       stats.addStage("gl_to_cl_atlas", t.ms(), static_cast<long long>(2 * bytes));
+                       stats.addStage("gl_to_cl_atlas", t.ms(), moved);
                        if (opt.keepAovs) result.fluxAtlas = toImage(flux, res, res, 3);
                    },
                    true});

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cl/cl_runtime.h"
@@ -49,7 +50,10 @@ class Renderer {
     GlContext gl_;
     ClRuntime cl_;
     LightViewPass lightPass_;
-    AtlasPass atlasPass_;
+    GeometryAtlasPass geometryAtlasPass_;
+    FluxAtlasPass fluxAtlasPass_;
+    std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution) of the geometry atlas
+    int geometryVersion_ = 0, positionVersion_ = -1;  // position atlas on the CL side is current when equal
     GBufferPass gbufferPass_;
     CompositePass compositePass_;
     std::unique_ptr<GpuMesh> gpuMesh_;

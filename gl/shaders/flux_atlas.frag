@@ -1,0 +1,17 @@
+// Flux per atlas texel = E(x) · texel surface area (DESIGN §2), so the atlas
+// sums to the total flux the object receives. Runs over the geometry atlas,
+// so a moving light re-shades texels without re-rasterising the mesh.
+uniform sampler2D u_position;
+uniform sampler2D u_normal;
+layout(location = 0) out vec4 o_flux;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 p = texelFetch(u_position, px, 0);
+    if (p.w == 0.0) {
+        o_flux = vec4(0.0);
+        return;
+    }
+    vec4 n = texelFetch(u_normal, px, 0);
+    o_flux = vec4(irradiance(p.xyz, n.xyz) * n.w, 1.0);
+}
