@@ -102,6 +102,7 @@ void bindLights(const ShaderProgram& program, const std::vector<LightView>& ligh
         program.set(at("u_lightRgb").c_str(), lv.light.rgb);
         program.set(at("u_lightViewProj").c_str(), lv.viewProj);
         program.set(at("u_shadowTexelMm").c_str(), lv.texelMm);
+        program.set(at("u_lightShadows").c_str(), lv.light.shadows ? 1 : 0);
     }
 }
 

@@ -22,6 +22,7 @@ uniform vec3 u_lightVec[MAX_LIGHTS];
 uniform vec3 u_lightRgb[MAX_LIGHTS];
 uniform mat4 u_lightViewProj[MAX_LIGHTS];
 uniform float u_shadowTexelMm[MAX_LIGHTS];  // a shadow-map texel's size at the object
+uniform int u_lightShadows[MAX_LIGHTS];      // 0: the light casts no shadows (V = 1)
 // One layer per light: a single sampler, since dynamically indexed sampler
 // arrays cost one lookup per array element on llvmpipe.
 uniform sampler2DArrayShadow u_shadowMaps;
@@ -43,6 +44,7 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 // acne on curved translucent surfaces) and PCF: four bilinear-compared taps at
 // ±½ texel, a 3×3-texel tent for the price of four lookups.
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
+    if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
     float sinT = sqrt(1.0 - cosT * cosT);
     vec3 q = p + n * u_shadowTexelMm[i] * (1.0 + 2.0 * sinT);
