@@ -5,6 +5,7 @@
 #   ./setup.sh            install + build
 #   ./setup.sh render     install + build + render the default scene to tsis.png
 #   ./setup.sh test       install + build + run the test suite (CTest)
+#   ./setup.sh fuzz [S]   install clang + build and run the mesh-loader fuzzer for S seconds (default 60)
 #
 # Idempotent; run as root on a fresh machine (or with the packages present).
 set -euo pipefail
@@ -69,9 +70,12 @@ build() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 
+if [ "${1:-}" = fuzz ]; then
+  PACKAGES+=(clang libclang-rt-14-dev)
+fi
 install_packages
 unpack_meshes
-build
+[ "${1:-}" = fuzz ] || build
 case "${1:-}" in
   render)
     "$BUILD_DIR/tsis" render -o tsis.png
@@ -81,6 +85,9 @@ case "${1:-}" in
     cd "$BUILD_DIR"
     ctest --output-on-failure -j "$JOBS" --timeout 1200
     ;;
+  fuzz)
+    tests/fuzz/run.sh "${2:-60}"
+    ;;
   "") ;;
-  *) log "unknown step '$1' (render or test)"; exit 2 ;;
+  *) log "unknown step '$1' (render, test or fuzz)"; exit 2 ;;
 esac
