@@ -16,7 +16,8 @@ class GlContext {
     GlContext& operator=(const GlContext&) = delete;
 
     void makeCurrent();
-    std::string renderer() const;  // "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa ..."
+    std::string renderer()
+        const;  // "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa ..."
 
   private:
     void* ctx_ = nullptr;  // OSMesaContext

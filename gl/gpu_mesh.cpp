@@ -30,8 +30,8 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBindVertexArray(vao_);
     glGenBuffers(1, &vbo_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)),
-                 data.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+                 GL_STATIC_DRAW);
     const GLsizei stride = kStride * sizeof(float);
     auto attrib = [&](GLuint index, GLint size, size_t offset) {
         glEnableVertexAttribArray(index);

@@ -47,8 +47,8 @@ LightView makeLightView(const Light& light, float radius, int resolution) {
         lv.texelMm = 2.0f * r / static_cast<float>(resolution);
         lv.texelAreaMm = lv.texelMm * lv.texelMm;
     }
-    lv.target = std::make_unique<RenderTarget>(
-        resolution, resolution, std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F}, true);
+    lv.target = std::make_unique<RenderTarget>(resolution, resolution,
+                                               std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F}, true);
     return lv;
 }
 

@@ -15,9 +15,9 @@ namespace tsis {
 struct LightView {
     Light light;
     glm::mat4 viewProj{1.0f};
-    float tanHalf = 0;       // point lights: tan of half the field of view
-    float texelAreaMm = 0;   // directional: area of one texel (mm²)
-    float texelMm = 0;       // a texel's size at the object centre (shadow offsets)
+    float tanHalf = 0;                     // point lights: tan of half the field of view
+    float texelAreaMm = 0;                 // directional: area of one texel (mm²)
+    float texelMm = 0;                     // a texel's size at the object centre (shadow offsets)
     std::unique_ptr<RenderTarget> target;  // flux, position; depth = shadow map
 };
 

@@ -122,8 +122,8 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbu
 }
 
 void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                            const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key, float lavg,
-                            float specular, float shininess) {
+                            const ShadowMapArray& shadows, const glm::vec3& eye, float eta,
+                            float key, float lavg, float specular, float shininess) {
     int w = gbuffer.width(), h = gbuffer.height();
     ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
     colorTarget_->bindAndClear();

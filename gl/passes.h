@@ -81,8 +81,8 @@ class CompositePass {
     void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
                   float eta);
     void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                 const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key, float lavg, float specular,
-                 float shininess);
+                 const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key,
+                 float lavg, float specular, float shininess);
     const RenderTarget& radianceTarget() const { return *radianceTarget_; }
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 

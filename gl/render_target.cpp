@@ -93,10 +93,14 @@ std::vector<unsigned char> RenderTarget::readRGBA8(int i) const {
 
 size_t RenderTarget::bytesPerTexel(int i) const {
     switch (formats_[static_cast<size_t>(i)]) {
-        case GL_RGBA32F: return 16;
-        case GL_RGBA16F: return 8;
-        case GL_R32F: return 4;
-        default: return 4;
+        case GL_RGBA32F:
+            return 16;
+        case GL_RGBA16F:
+            return 8;
+        case GL_R32F:
+            return 4;
+        default:
+            return 4;
     }
 }
 

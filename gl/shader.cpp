@@ -58,8 +58,12 @@ ShaderProgram::~ShaderProgram() {
     if (id_) glDeleteProgram(id_);
 }
 
-GLint ShaderProgram::location(const char* name) const { return glGetUniformLocation(id_, name); }
-void ShaderProgram::set(const char* name, int v) const { glProgramUniform1i(id_, location(name), v); }
+GLint ShaderProgram::location(const char* name) const {
+    return glGetUniformLocation(id_, name);
+}
+void ShaderProgram::set(const char* name, int v) const {
+    glProgramUniform1i(id_, location(name), v);
+}
 void ShaderProgram::set(const char* name, float v) const {
     glProgramUniform1f(id_, location(name), v);
 }

@@ -43,7 +43,8 @@ inline double hostFlux(const Mesh& mesh, const Light& light, double eta, int cha
                         l = -glm::normalize(glm::dvec3(light.vec));
                     }
                     double c = glm::dot(nn, l);
-                    if (c > 0) sum += light.rgb[channel] * fresnelTransmittance(eta, c) * c * falloff;
+                    if (c > 0)
+                        sum += light.rgb[channel] * fresnelTransmittance(eta, c) * c * falloff;
                     ++count;
                 }
         total += area * sum / count;

@@ -39,7 +39,8 @@ void checkPlane(const char* materialName, double tolerance) {
     Scene scene;
     scene.material = presetMaterial(materialName);
     Dipole dipole(scene.material);
-    double sigmaTrMin = std::min({dipole.ch[0].sigmaTr, dipole.ch[1].sigmaTr, dipole.ch[2].sigmaTr});
+    double sigmaTrMin =
+        std::min({dipole.ch[0].sigmaTr, dipole.ch[1].sigmaTr, dipole.ch[2].sigmaTr});
     double halfSide = 7.4 / sigmaTrMin;
     scene.mesh = builtinPlane();
     normalizeMesh(scene.mesh, 2.0 * halfSide * std::sqrt(2.0));
@@ -65,8 +66,12 @@ void checkPlane(const char* materialName, double tolerance) {
     }
 }
 
-TEST(RenderPhysics, PlaneMarbleMatchesClosedForm) { checkPlane("marble", 0.02); }
-TEST(RenderPhysics, PlaneSkin1MatchesClosedForm) { checkPlane("skin1", 0.02); }
+TEST(RenderPhysics, PlaneMarbleMatchesClosedForm) {
+    checkPlane("marble", 0.02);
+}
+TEST(RenderPhysics, PlaneSkin1MatchesClosedForm) {
+    checkPlane("skin1", 0.02);
+}
 
 // RMSE against a high-N render falls as N^-1/2 (or faster: the low-discrepancy
 // u stratifies the samples). Fit of log RMSE on log N over 64 … 4096.

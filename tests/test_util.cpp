@@ -13,8 +13,8 @@ RunResult runTsis(const std::string& args, const std::string& env) {
     std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
     std::string outPath = (dir / ("tsis-out-" + tag)).string();
     std::string errPath = (dir / ("tsis-err-" + tag)).string();
-    std::string cmd = env + " " + TSIS_BINARY + " " + args + " </dev/null >" + outPath + " 2>" +
-                      errPath;
+    std::string cmd =
+        env + " " + TSIS_BINARY + " " + args + " </dev/null >" + outPath + " 2>" + errPath;
     int status = std::system(cmd.c_str());
     RunResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -46,7 +46,9 @@ std::string readFile(const std::string& path) {
 
 size_t fileCount(const std::filesystem::path& dir) {
     size_t n = 0;
-    for (auto it = std::filesystem::directory_iterator(dir); it != std::filesystem::directory_iterator(); ++it) ++n;
+    for (auto it = std::filesystem::directory_iterator(dir);
+         it != std::filesystem::directory_iterator(); ++it)
+        ++n;
     return n;
 }
 

@@ -47,7 +47,9 @@ Args::Args(const std::string& command, const std::vector<OptionSpec>& specs,
         }
         std::string name;
         const OptionSpec* spec = findSpec(specs, body, name);
-        if (!spec) fail("unknown option '", a, "' for 'tsis ", command, "' (see tsis ", command, " --help)");
+        if (!spec)
+            fail("unknown option '", a, "' for 'tsis ", command, "' (see tsis ", command,
+                 " --help)");
         std::string v;
         if (spec->takesValue) {
             if (hasInline) {
@@ -65,7 +67,9 @@ Args::Args(const std::string& command, const std::vector<OptionSpec>& specs,
     }
 }
 
-bool Args::has(const std::string& name) const { return values_.count(name) > 0; }
+bool Args::has(const std::string& name) const {
+    return values_.count(name) > 0;
+}
 
 std::optional<std::string> Args::value(const std::string& name) const {
     auto it = values_.find(name);

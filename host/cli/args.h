@@ -48,7 +48,7 @@ std::string usageText(const std::string& synopsis, const std::vector<OptionSpec>
 // Parsers for option values; `what` names the option in messages.
 double parseNumber(const std::string& what, const std::string& text);
 long long parseInteger(const std::string& what, const std::string& text);
-glm::dvec3 parseVec3(const std::string& what, const std::string& text);  // "X,Y,Z"
+glm::dvec3 parseVec3(const std::string& what, const std::string& text);           // "X,Y,Z"
 std::vector<double> parseList(const std::string& what, const std::string& text);  // "a,b,c"
 
 }  // namespace tsis

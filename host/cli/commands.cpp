@@ -21,7 +21,8 @@ namespace tsis {
 
 namespace {
 
-constexpr const char* kTopUsage = R"(tsis — real-time translucent rendering by texture-space importance sampling
+constexpr const char* kTopUsage =
+    R"(tsis — real-time translucent rendering by texture-space importance sampling
 
 usage: tsis <command> [options]      (no command: render the default scene)
 
@@ -48,9 +49,12 @@ bool wantsHelp(const std::vector<std::string>& argv) {
 std::vector<OptionSpec> renderSpecs() {
     std::vector<OptionSpec> specs = sceneOptionSpecs();
     specs.push_back({"output|o", true, false, "FILE  output PNG (default tsis.png)"});
-    specs.push_back({"aov", true, false, "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, flux_atlas"});
+    specs.push_back(
+        {"aov", true, false,
+         "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, flux_atlas"});
     specs.push_back({"stats", true, false, "FILE.json  per-stage timings, bytes, counts"});
-    specs.push_back({"frames", true, false, "N  render the frame N times, report the last (warm timings; default 1)"});
+    specs.push_back({"frames", true, false,
+                     "N  render the frame N times, report the last (warm timings; default 1)"});
     return specs;
 }
 
@@ -85,13 +89,17 @@ int runRender(const std::vector<std::string>& argv) {
     writeImage8(output, frame.width, frame.height, 3, frame.rgb8);
     if (aovDir) {
         std::filesystem::create_directories(*aovDir);
-        auto path = [&](const char* name) { return (std::filesystem::path(*aovDir) / name).string(); };
+        auto path = [&](const char* name) {
+            return (std::filesystem::path(*aovDir) / name).string();
+        };
         writeImageF(path("radiosity.exr"), frame.radiosity, {"R", "G", "B"});
         writeImageF(path("radiance.exr"), frame.radiance, {"R", "G", "B"});
         writeImageF(path("position.exr"), frame.position, {"X", "Y", "Z"});
         writeImageF(path("normal.exr"), frame.normal, {"X", "Y", "Z"});
         writeImageF(path("coverage.exr"), frame.coverage, {"Y"});
-        writeImageF(path("flux_atlas.exr"), frame.fluxAtlas, {"R", "G", "B"});
+        // Methods that never read the atlas (ltsm, lss, …) leave it unmade.
+        if (frame.fluxAtlas.channels > 0)
+            writeImageF(path("flux_atlas.exr"), frame.fluxAtlas, {"R", "G", "B"});
     }
     if (auto statsPath = args.value("stats")) {
         Json j = frame.stats.toJson();
@@ -182,11 +190,8 @@ int runAtlas(const std::vector<std::string>& argv) {
 }
 
 const Command kCommands[] = {
-    {"atlas", runAtlas},
-    {"render", runRender},
-    {"materials", runMaterials},
-    {"dipole", runDipole},
-    {"compare", runCompare},
+    {"atlas", runAtlas},   {"render", runRender},   {"materials", runMaterials},
+    {"dipole", runDipole}, {"compare", runCompare},
 };
 
 }  // namespace
@@ -209,7 +214,8 @@ int runCli(int argc, char** argv) {
         std::fprintf(stderr, "tsis: error: %s\n", e.what());
         return 1;
     } catch (const cl::Error& e) {
-        std::fprintf(stderr, "tsis: error: OpenCL call %s failed with code %d\n", e.what(), e.err());
+        std::fprintf(stderr, "tsis: error: OpenCL call %s failed with code %d\n", e.what(),
+                     e.err());
         return 1;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "tsis: error: out of memory\n");

@@ -15,13 +15,17 @@ namespace tsis {
 
 const std::vector<OptionSpec>& sceneOptionSpecs() {
     static const std::vector<OptionSpec> specs = {
-        {"mesh", true, false, "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default builtin:default)"},
+        {"mesh", true, false,
+         "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default "
+         "builtin:default)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"material", true, false, "NAME  preset material (default skin1; see tsis materials)"},
         {"sigma-s", true, false, "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
         {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
         {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
-        {"light", true, true, "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, irradiance); repeatable"},
+        {"light", true, true,
+         "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, "
+         "irradiance); repeatable"},
         {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
         {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
         {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
@@ -31,17 +35,29 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"method", true, false, "NAME  tsis (default); see README for the others"},
         {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
         {"seed", true, false, "S  random seed (default 1)"},
-        {"spacing", true, false, "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = 1/max σt', the smallest mean free path"},
-        {"epsilon", true, false, "E  hierarchical: use an octree node whole when its area/distance^2 < E (default 0.05)"},
-        {"rp-bound", true, false, "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
-        {"rp-k", true, false, "K  hybrid: slope of the local/global weights around Rp, 1/mm (default 1.5)"},
-        {"rd-part", true, false, "P  tsis, ltsm: integrate Rd (full, default), Rd·Wl (local) or Rd·Wg (global)"},
+        {"spacing", true, false,
+         "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = 1/max "
+         "σt', the smallest mean free path"},
+        {"epsilon", true, false,
+         "E  hierarchical: use an octree node whole when its area/distance^2 < E (default 0.05)"},
+        {"rp-bound", true, false,
+         "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
+        {"rp-k", true, false,
+         "K  hybrid: slope of the local/global weights around Rp, 1/mm (default 1.5)"},
+        {"rd-part", true, false,
+         "P  tsis, ltsm: integrate Rd (full, default), Rd·Wl (local) or Rd·Wg (global)"},
         {"ltsm-rings", true, false, "L  ltsm, hybrid: rings of the light-view filter (default 4)"},
-        {"ltsm-per-ring", true, false, "C  ltsm, hybrid: samples per ring (default 4; L×C+1 in all)"},
-        {"mis-distance", true, false, "M  mis: distance-driven samples per pixel and light (default 16)"},
-        {"tsm-radius", true, false, "K  tsm: filter radius K/σtr of the widest channel, at most the object's diameter (default 4)"},
+        {"ltsm-per-ring", true, false,
+         "C  ltsm, hybrid: samples per ring (default 4; L×C+1 in all)"},
+        {"mis-distance", true, false,
+         "M  mis: distance-driven samples per pixel and light (default 16)"},
+        {"tsm-radius", true, false,
+         "K  tsm: filter radius K/σtr of the widest channel, at most the object's diameter "
+         "(default 4)"},
         {"atlas-res", true, false, "R  atlas resolution, a power of two (default 1024)"},
-        {"atlas", true, false, "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or build"},
+        {"atlas", true, false,
+         "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
+         "build"},
         {"light-res", true, false, "R  shadow/light-view map resolution (default 1024)"},
         {"key", true, false, "K  tone-mapping key (default 0.18)"},
         {"no-specular", false, false, "turn off the Phong highlight"},
@@ -85,8 +101,7 @@ Light parseLight(const std::string& spec) {
         fail("--light '", spec, "': unknown kind '", kind, "' (point or dir)");
     l.vec = glm::vec3(parseVec3("--light position/direction", spec.substr(c1 + 1, c2 - c1 - 1)));
     l.rgb = glm::vec3(parseVec3("--light colour", spec.substr(c2 + 1)));
-    if (l.rgb.x < 0 || l.rgb.y < 0 || l.rgb.z < 0)
-        fail("--light '", spec, "': negative intensity");
+    if (l.rgb.x < 0 || l.rgb.y < 0 || l.rgb.z < 0) fail("--light '", spec, "': negative intensity");
     if (l.type == Light::Type::Directional && glm::length(l.vec) == 0.0f)
         fail("--light '", spec, "': zero direction");
     return l;
@@ -165,7 +180,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
         return r;
     };
     o.atlasResolution = powerOfTwo("atlas-res", 1024);
-    if (o.atlasResolution > 4096) fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
+    if (o.atlasResolution > 4096)
+        fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
     o.lightResolution = args.getInt("light-res", 1024, 16, 8192);
     o.rpBound = args.getDouble("rp-bound", 0.1, 1e-9, 1e9);
     o.rpK = args.getDouble("rp-k", 1.5, 0.0, 1e6);

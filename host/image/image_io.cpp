@@ -16,8 +16,7 @@ void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void*
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
         auto out = OIIO::ImageOutput::create(tmp.string());
         if (!out) fail("cannot write '", path, "': ", OIIO::geterror());
-        if (!out->open(tmp.string(), spec))
-            fail("cannot write '", path, "': ", out->geterror());
+        if (!out->open(tmp.string(), spec)) fail("cannot write '", path, "': ", out->geterror());
         bool ok = out->write_image(spec.format, data);
         ok = out->close() && ok;
         if (!ok) fail("cannot write '", path, "': ", out->geterror());

@@ -8,7 +8,9 @@
 
 namespace tsis {
 
-void FrameGraph::addPass(Pass pass) { passes_.push_back(std::move(pass)); }
+void FrameGraph::addPass(Pass pass) {
+    passes_.push_back(std::move(pass));
+}
 
 void FrameGraph::execute(const std::vector<std::string>& outputs, FrameStats& stats) {
     // Cull: walk backwards from the outputs, keeping passes that write a needed resource.

@@ -108,8 +108,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
 
     const Camera& cam = scene.camera;
     const float camDist = glm::length(cam.eye - cam.target);
-    const float nearP = std::max({glm::length(cam.eye) - ctx.boundingRadius * 1.5f,
-                                  camDist * 1e-3f, 1e-4f});
+    const float nearP =
+        std::max({glm::length(cam.eye) - ctx.boundingRadius * 1.5f, camDist * 1e-3f, 1e-4f});
     const float farP = glm::length(cam.eye) + ctx.boundingRadius * 1.5f;
     const glm::mat4 viewProj =
         glm::perspective(glm::radians(cam.fovYDegrees), static_cast<float>(w) / h, nearP, farP) *
@@ -144,14 +144,16 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        glFinish();
                    }});
     graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
-                       gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj,
-                                        w, h);
+                       gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj, w,
+                                        h);
                        glFinish();
                    }});
     // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on
     // OSMesa + PoCL). The flux atlas crosses every frame at full float
     // precision; the position atlas only when the mesh or resolution changed.
-    graph.addPass({"gl_to_cl_atlas", {"atlas"}, {"flux_atlas_cl", "position_atlas_cl"},
+    graph.addPass({"gl_to_cl_atlas",
+                   {"atlas"},
+                   {"flux_atlas_cl", "position_atlas_cl"},
                    [&] {
                        Timer t;
                        size_t bytes = static_cast<size_t>(res) * res * 16;
@@ -163,8 +165,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        if (positionVersion_ != geometryVersion_) {
                            positionAtlas_.reserve(cl_.context(), bytes);
                            std::vector<float> pos = geometryAtlasPass_.target().readRGBA(0);
-                           cl_.queue().enqueueWriteBuffer(positionAtlas_.buffer, CL_TRUE, 0,
-                                                          bytes, pos.data());
+                           cl_.queue().enqueueWriteBuffer(positionAtlas_.buffer, CL_TRUE, 0, bytes,
+                                                          pos.data());
                            positionVersion_ = geometryVersion_;
                            moved += static_cast<long long>(bytes);
                        }
@@ -176,7 +178,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                    },
                    true});
     // Only covered pixels cross, packed (xyz per point).
-    graph.addPass({"gl_to_cl_points", {"gbuffer"}, {"points_cl"},
+    graph.addPass({"gl_to_cl_points",
+                   {"gbuffer"},
+                   {"points_cl"},
                    [&] {
                        Timer t;
                        gbufferPosition = gbufferPass_.target().readRGBA(0);
@@ -185,8 +189,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        for (int i = 0; i < w * h; ++i)
                            if (gbufferPosition[static_cast<size_t>(i) * 4 + 3] > 0) {
                                pointPixel.push_back(i);
-                               packed.insert(packed.end(),
-                                             gbufferPosition.begin() + i * 4,
+                               packed.insert(packed.end(), gbufferPosition.begin() + i * 4,
                                              gbufferPosition.begin() + i * 4 + 4);
                            }
                        ctx.pointCount = static_cast<int>(pointPixel.size());
@@ -205,7 +208,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                    true});
 
     // Full-resolution camera buffers, for methods that work in image space.
-    graph.addPass({"gl_to_cl_gbuffer", {"gbuffer"}, {"gbuffer_cl"},
+    graph.addPass({"gl_to_cl_gbuffer",
+                   {"gbuffer"},
+                   {"gbuffer_cl"},
                    [&] {
                        Timer t;
                        size_t bytes = static_cast<size_t>(w) * h * 16;
@@ -223,33 +228,36 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        stats.addStage("gl_to_cl_gbuffer", t.ms(), total);
                    },
                    true});
-    graph.addPass({"gl_to_cl_light_maps", {"light_maps"}, {"light_maps_cl"},
-                   [&] {
-                       Timer t;
-                       size_t bytes = static_cast<size_t>(opt.lightResolution) *
-                                      opt.lightResolution * 16;
-                       long long total = 0;
-                       lightCl_.resize(2 * lights_.size());
-                       ctx.lightFlux.clear();
-                       ctx.lightPosition.clear();
-                       for (size_t l = 0; l < lights_.size(); ++l)
-                           for (int i = 0; i < 2; ++i) {
-                               GrowingBuffer& b = lightCl_[2 * l + static_cast<size_t>(i)];
-                               b.reserve(cl_.context(), bytes);
-                               std::vector<float> data = lights_[l].target->readRGBA(i);
-                               cl_.queue().enqueueWriteBuffer(b.buffer, CL_TRUE, 0, bytes,
-                                                              data.data());
-                               (i == 0 ? ctx.lightFlux : ctx.lightPosition).push_back(b.buffer);
-                               total += static_cast<long long>(bytes);
-                           }
-                       stats.addStage("gl_to_cl_light_maps", t.ms(), total);
-                   },
-                   true});
+    graph.addPass(
+        {"gl_to_cl_light_maps",
+         {"light_maps"},
+         {"light_maps_cl"},
+         [&] {
+             Timer t;
+             size_t bytes = static_cast<size_t>(opt.lightResolution) * opt.lightResolution * 16;
+             long long total = 0;
+             lightCl_.resize(2 * lights_.size());
+             ctx.lightFlux.clear();
+             ctx.lightPosition.clear();
+             for (size_t l = 0; l < lights_.size(); ++l)
+                 for (int i = 0; i < 2; ++i) {
+                     GrowingBuffer& b = lightCl_[2 * l + static_cast<size_t>(i)];
+                     b.reserve(cl_.context(), bytes);
+                     std::vector<float> data = lights_[l].target->readRGBA(i);
+                     cl_.queue().enqueueWriteBuffer(b.buffer, CL_TRUE, 0, bytes, data.data());
+                     (i == 0 ? ctx.lightFlux : ctx.lightPosition).push_back(b.buffer);
+                     total += static_cast<long long>(bytes);
+                 }
+             stats.addStage("gl_to_cl_light_maps", t.ms(), total);
+         },
+         true});
 
     m.addPasses(graph, ctx);
 
     std::vector<float> radiosityRGBA(static_cast<size_t>(w) * h * 4, 0.0f);
-    graph.addPass({"cl_to_gl", {"radiosity_cl"}, {"radiosity"},
+    graph.addPass({"cl_to_gl",
+                   {"radiosity_cl"},
+                   {"radiosity"},
                    [&] {
                        Timer t;
                        std::vector<float> packed(static_cast<size_t>(ctx.pointCount) * 4);
@@ -267,15 +275,13 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                    },
                    true});
     graph.addPass({"composite", {"radiosity", "gbuffer", "light_maps"}, {"image"}, [&] {
-                       compositePass_.radiance(radiosityRGBA.data(), gbufferPass_.target(),
-                                               cam.eye, eta);
+                       compositePass_.radiance(radiosityRGBA.data(), gbufferPass_.target(), cam.eye,
+                                               eta);
                        radianceRGBA = compositePass_.radianceTarget().readRGBA(0);
                        result.lavg = logAverageLuminance(radianceRGBA);
                        compositePass_.toneMap(gbufferPass_.target(), lights_, lightPass_.shadows(),
-                                              cam.eye, eta,
-                                              opt.key, result.lavg,
-                                              opt.specular ? opt.specularKs : 0.0f,
-                                              opt.shininess);
+                                              cam.eye, eta, opt.key, result.lavg,
+                                              opt.specular ? opt.specularKs : 0.0f, opt.shininess);
                        std::vector<unsigned char> rgba = compositePass_.colorTarget().readRGBA8(0);
                        result.rgb8.resize(static_cast<size_t>(w) * h * 3);
                        for (int y = 0; y < h; ++y)

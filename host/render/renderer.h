@@ -53,7 +53,8 @@ class Renderer {
     GeometryAtlasPass geometryAtlasPass_;
     FluxAtlasPass fluxAtlasPass_;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution) of the geometry atlas
-    int geometryVersion_ = 0, positionVersion_ = -1;  // position atlas on the CL side is current when equal
+    int geometryVersion_ = 0,
+        positionVersion_ = -1;  // position atlas on the CL side is current when equal
     GBufferPass gbufferPass_;
     CompositePass compositePass_;
     std::unique_ptr<GpuMesh> gpuMesh_;

@@ -33,19 +33,19 @@ template <typename... Args>
 
 }  // namespace tsis
 
-#define TSIS_CHECK(cond)                                                  \
-    do {                                                                  \
+#define TSIS_CHECK(cond)                                                          \
+    do {                                                                          \
         if (!(cond)) ::tsis::checkFailed(__FILE__, __LINE__, "CHECK(" #cond ")"); \
     } while (0)
 
-#define TSIS_CHECK_OP(a, op, b)                                                          \
-    do {                                                                                 \
-        const auto& tsis_a_ = (a);                                                       \
-        const auto& tsis_b_ = (b);                                                       \
-        if (!(tsis_a_ op tsis_b_))                                                       \
-            ::tsis::checkFailed(__FILE__, __LINE__,                                      \
-                                ::tsis::concat("CHECK(" #a " " #op " " #b ") with ", #a, \
-                                               " = ", tsis_a_, ", ", #b, " = ", tsis_b_)); \
+#define TSIS_CHECK_OP(a, op, b)                                                                 \
+    do {                                                                                        \
+        const auto& tsis_a_ = (a);                                                              \
+        const auto& tsis_b_ = (b);                                                              \
+        if (!(tsis_a_ op tsis_b_))                                                              \
+            ::tsis::checkFailed(__FILE__, __LINE__,                                             \
+                                ::tsis::concat("CHECK(" #a " " #op " " #b ") with ", #a, " = ", \
+                                               tsis_a_, ", ", #b, " = ", tsis_b_));             \
     } while (0)
 
 #define TSIS_CHECK_EQ(a, b) TSIS_CHECK_OP(a, ==, b)

@@ -40,10 +40,18 @@ static void writeString(std::string& out, const std::string& s) {
     out += '"';
     for (char c : s) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
             default:
                 if (static_cast<unsigned char>(c) < 0x20) {
                     char buf[8];
@@ -64,8 +72,12 @@ void Json::write(std::string& out, int indent, int depth) const {
         out.append(static_cast<size_t>(indent * d), ' ');
     };
     switch (kind_) {
-        case Kind::Null: out += "null"; break;
-        case Kind::Bool: out += bool_ ? "true" : "false"; break;
+        case Kind::Null:
+            out += "null";
+            break;
+        case Kind::Bool:
+            out += bool_ ? "true" : "false";
+            break;
         case Kind::Number: {
             if (!std::isfinite(number_)) {
                 out += "null";  // JSON has no inf/nan
@@ -77,7 +89,9 @@ void Json::write(std::string& out, int indent, int depth) const {
             out.append(buf, res.ptr);
             break;
         }
-        case Kind::String: writeString(out, string_); break;
+        case Kind::String:
+            writeString(out, string_);
+            break;
         case Kind::Array: {
             // Short arrays of scalars stay on one line: [r, g, b].
             bool flat = items_.size() <= 4;

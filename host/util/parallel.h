@@ -10,7 +10,9 @@
 namespace tsis {
 
 // Threads for host loops: the hardware's, at least one.
-inline unsigned hostThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
+inline unsigned hostThreads() {
+    return std::max(1u, std::thread::hardware_concurrency());
+}
 
 // Calls body(begin, end) over [0, count) in chunks of at most `chunk`, from
 // hostThreads() threads (the caller's among them). Chunks are handed out in

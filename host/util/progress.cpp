@@ -20,7 +20,9 @@ Progress::Progress(std::string label, long long total)
     if (active_) update(0);
 }
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+    finish();
+}
 
 void Progress::update(long long done) {
     if (!active_ || finished_) return;
