@@ -1,5 +1,7 @@
 // The methods `--method` can name (DESIGN §4). Add a method here.
 #include "render/method.h"
+#include "render/method_hierarchical.h"
+#include "render/method_reference.h"
 #include "render/method_tsis.h"
 #include "util/error.h"
 
@@ -14,6 +16,8 @@ struct Entry {
 
 const Entry kMethods[] = {
     {"tsis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
+    {"hierarchical", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HierarchicalMethod>(cl); }},
+    {"reference", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<ReferenceMethod>(cl); }},
 };
 
 }  // namespace

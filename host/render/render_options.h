@@ -17,6 +17,8 @@ struct RenderOptions {
     bool specular = true;
     float specularKs = 0.2f;
     float shininess = 40.0f;
+    double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule
+    float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
     bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
 };
 

@@ -1,0 +1,107 @@
+#include "compare/image_compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+std::string size(const ImageF& i) {
+    return concat(i.width, "×", i.height, " with ", i.channels,
+                  i.channels == 1 ? " channel" : " channels");
+}
+
+}  // namespace
+
+Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
+                         const std::string& nameA, const std::string& nameB,
+                         const std::string& nameMask) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels)
+        fail("cannot compare ", nameA, " (", size(a), ") with ", nameB, " (", size(b), ")");
+    if (mask && (mask->width != b.width || mask->height != b.height))
+        fail("mask ", nameMask, " is ", mask->width, "×", mask->height, " but ", nameB, " is ",
+             b.width, "×", b.height);
+    const size_t pixels = static_cast<size_t>(b.width) * b.height;
+    const int ch = b.channels;
+    auto selected = [&](size_t p) { return !mask || mask->pixels[p * mask->channels] > 0.5f; };
+
+    // First pass: the statistics of B the others need. Sums in double.
+    long long n = 0;
+    double sumB = 0, sumAbsB = 0, peak = -std::numeric_limits<double>::infinity();
+    for (size_t p = 0; p < pixels; ++p) {
+        if (!selected(p)) continue;
+        ++n;
+        for (int c = 0; c < ch; ++c) {
+            const double v = b.pixels[p * ch + c];
+            sumB += v;
+            sumAbsB += std::abs(v);
+            peak = std::max(peak, v);
+        }
+    }
+    if (n == 0) fail("mask ", nameMask, " selects no pixel (none > 0.5)");
+    const double values = static_cast<double>(n) * ch;
+    const double floor = kRelErrorFloor * sumAbsB / values;
+
+    Comparison out;
+    out.relError.width = b.width;
+    out.relError.height = b.height;
+    out.relError.channels = 1;
+    out.relError.pixels.assign(pixels, -1.0f);
+    double sq = 0, rel = 0, maxAbs = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        if (!selected(p)) continue;
+        double pixelRel = 0;
+        for (int c = 0; c < ch; ++c) {
+            const double va = a.pixels[p * ch + c], vb = b.pixels[p * ch + c];
+            const double d = std::abs(va - vb);
+            sq += d * d;
+            maxAbs = std::max(maxAbs, d);
+            // floor can be 0 (B all zero): then 0/0 counts as no error.
+            const double den = std::max(std::abs(vb), floor);
+            const double r = den > 0 ? d / den : (d > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+            rel += r;
+            pixelRel += r;
+        }
+        out.relError.pixels[p] = static_cast<float>(pixelRel / ch);
+    }
+    CompareMetrics& m = out.metrics;
+    m.pixels = n;
+    m.rmse = std::sqrt(sq / values);
+    const double meanB = sumB / values;
+    m.relRmse = meanB != 0 ? m.rmse / meanB : std::numeric_limits<double>::quiet_NaN();
+    m.meanRelErr = rel / values;
+    m.maxAbs = maxAbs;
+    m.psnr = m.rmse > 0 ? 20.0 * std::log10(peak / m.rmse) : std::numeric_limits<double>::infinity();
+    return out;
+}
+
+Json compareJson(const CompareMetrics& m) {
+    Json j = Json::object();
+    j.set("rmse", m.rmse);
+    j.set("rel_rmse", m.relRmse);
+    j.set("mean_rel_err", m.meanRelErr);
+    j.set("max_abs", m.maxAbs);
+    j.set("psnr", m.psnr);
+    j.set("pixels", m.pixels);
+    return j;
+}
+
+std::string compareTable(const CompareMetrics& m) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "pixels        %lld\n"
+                  "rmse          %.6g\n"
+                  "rel_rmse      %.4f%%  (rmse / mean of the reference B)\n"
+                  "mean_rel_err  %.4f%%\n"
+                  "max_abs       %.6g\n"
+                  "psnr          %.2f dB\n",
+                  m.pixels, m.rmse, 100.0 * m.relRmse, 100.0 * m.meanRelErr, m.maxAbs, m.psnr);
+    return buf;
+}
+
+}  // namespace tsis

@@ -1,0 +1,88 @@
+#include "render/method_reference.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "util/error.h"
+#include "util/progress.h"
+#include "util/timer.h"
+
+namespace tsis {
+
+namespace {
+
+// Rd evaluations per gather call: small enough for the progress line to move
+// (≈ 0.2 s each on a 2-core PoCL device), large enough to keep the device busy.
+constexpr double kEvaluationsPerChunk = 1 << 28;
+
+}  // namespace
+
+ReferenceMethod::ReferenceMethod(ClRuntime& cl) : cl_(cl), gatherer_(cl) {}
+
+double ReferenceMethod::defaultSpacing(const Material& m) { return 0.5 * smallestMeanFreePath(m); }
+
+void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+    const double spacing =
+        ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(ctx.scene->material);
+    graph.addPass({"reference_points", {}, {"reference_samples"}, [this, &ctx, spacing] {
+                       const bool built = points_.update(*ctx.scene, spacing, "reference");
+                       const std::vector<SurfacePoint>& pts = points_.points();
+                       if (built) {
+                           // At least one (zero) sample: a CL buffer cannot be empty.
+                           std::vector<TsisSample> s(std::max<size_t>(1, pts.size()), TsisSample{});
+                           for (size_t i = 0; i < pts.size(); ++i) {
+                               const glm::vec3 w = pts[i].irradiance * pts[i].area;
+                               s[i] = {pts[i].position.x, pts[i].position.y, pts[i].position.z,
+                                       -1.0f, w.x, w.y, w.z, 0.0f};
+                           }
+                           samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                                 s.size() * sizeof(TsisSample), s.data());
+                       }
+                       ctx.stats->set("reference_spacing_mm", spacing);
+                       ctx.stats->set("reference_point_count", static_cast<double>(pts.size()));
+                       ctx.stats->set("reference_points_cached", !built);
+                   }});
+    graph.addPass({"reference_gather", {"reference_samples", "points_cl"}, {"radiosity_cl"},
+                   [this, &ctx] { gather(ctx); }, true});
+}
+
+void ReferenceMethod::gather(FrameContext& ctx) {
+    // Any two surface points are at most the bounding sphere's diameter apart.
+    if (rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001))
+        table_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                            rd_.table().rgba.size() * sizeof(float),
+                            const_cast<float*>(rd_.table().rgba.data()));
+    const int n = static_cast<int>(points_.points().size());
+    const int count = ctx.pointCount;
+    ctx.stats->set("rd_evaluations", static_cast<double>(count) * n);
+    if (count == 0) {
+        ctx.stats->addStage("reference_gather", 0.0);
+        return;
+    }
+    // Output points in chunks (sub-buffers, so the origin must be aligned as the
+    // device asks) to show progress and keep each kernel run short.
+    const size_t alignPoints =
+        std::max<size_t>(1, cl_.device().getInfo<CL_DEVICE_MEM_BASE_ADDR_ALIGN>() / 8 / 16);
+    size_t chunk = static_cast<size_t>(kEvaluationsPerChunk / std::max(1, n));
+    const size_t unit = std::max<size_t>(alignPoints, 256);
+    chunk = std::max(unit, chunk / unit * unit);
+    Progress progress("reference: gather " + std::to_string(count) + " pixels × " +
+                          std::to_string(n) + " points",
+                      count);
+    double ms = 0;
+    for (size_t begin = 0; begin < static_cast<size_t>(count); begin += chunk) {
+        const size_t len = std::min(chunk, static_cast<size_t>(count) - begin);
+        const cl_buffer_region region{begin * 16, len * 16};
+        cl::Buffer in = ctx.points.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
+        cl::Buffer out =
+            ctx.radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
+        gatherer_.run(in, static_cast<int>(len), samples_, n, table_, rd_.table().info, out);
+        ms += gatherer_.lastMs();  // waits for the chunk
+        progress.update(static_cast<long long>(begin + len));
+    }
+    progress.finish();
+    ctx.stats->addStage("reference_gather", ms);
+}
+
+}  // namespace tsis
