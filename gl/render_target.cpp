@@ -71,23 +71,23 @@ void RenderTarget::bindAndClear() {
     }
 }
 
-std::vector<float> RenderTarget::readRGBA(int i) const {
-    std::vector<float> out(static_cast<size_t>(width_) * height_ * 4);
+void RenderTarget::read(int i, GLenum type, void* out) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, out.data());
-    checkGl("RenderTarget::readRGBA");
+    glReadPixels(0, 0, width_, height_, GL_RGBA, type, out);
+    checkGl("RenderTarget::read");
+}
+
+std::vector<float> RenderTarget::readRGBA(int i) const {
+    std::vector<float> out(static_cast<size_t>(width_) * height_ * 4);
+    read(i, GL_FLOAT, out.data());
     return out;
 }
 
 std::vector<unsigned char> RenderTarget::readRGBA8(int i) const {
     std::vector<unsigned char> out(static_cast<size_t>(width_) * height_ * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
-    checkGl("RenderTarget::readRGBA8");
+    read(i, GL_UNSIGNED_BYTE, out.data());
     return out;
 }
 

@@ -32,6 +32,8 @@ class RenderTarget {
     size_t bytesPerTexel(int i) const;
 
   private:
+    void read(int i, GLenum type, void* out) const;
+
     int width_, height_;
     std::vector<GLenum> formats_;
     std::vector<GLuint> colors_;

@@ -10,6 +10,16 @@ namespace tsis {
 
 namespace {
 
+// The info log of a shader or program object, after a failed compile or link.
+template <typename GetIv, typename GetLog>
+std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+    GLint len = 0;
+    getIv(object, GL_INFO_LOG_LENGTH, &len);
+    std::vector<char> log(static_cast<size_t>(len) + 1);
+    getLog(object, len, nullptr, log.data());
+    return log.data();
+}
+
 GLuint compile(GLenum stage, const std::string& file) {
     std::string src = "#version 450 core\n";
     src += embeddedText(embeddedShaders(), "common.glsl");
@@ -21,13 +31,10 @@ GLuint compile(GLenum stage, const std::string& file) {
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        GLint len = 0;
-        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
-        std::vector<char> log(static_cast<size_t>(len) + 1);
-        glGetShaderInfoLog(s, len, nullptr, log.data());
-        checkFailed(__FILE__, __LINE__, concat("GLSL compile of ", file, " failed:\n", log.data()));
-    }
+    if (!ok)
+        checkFailed(__FILE__, __LINE__,
+                    concat("GLSL compile of ", file, " failed:\n",
+                           infoLog(s, glGetShaderiv, glGetShaderInfoLog)));
     return s;
 }
 
@@ -45,13 +52,10 @@ ShaderProgram::ShaderProgram(const std::string& vertexFile, const std::string& f
     glDeleteShader(fs);
     GLint ok = 0;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint len = 0;
-        glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
-        std::vector<char> log(static_cast<size_t>(len) + 1);
-        glGetProgramInfoLog(id_, len, nullptr, log.data());
-        checkFailed(__FILE__, __LINE__, concat("GLSL link of ", name_, " failed:\n", log.data()));
-    }
+    if (!ok)
+        checkFailed(__FILE__, __LINE__,
+                    concat("GLSL link of ", name_, " failed:\n",
+                           infoLog(id_, glGetProgramiv, glGetProgramInfoLog)));
 }
 
 ShaderProgram::~ShaderProgram() {
