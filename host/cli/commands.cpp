@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/args.h"
+#include "cli/animate.h"
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
 #include "image/image_io.h"
@@ -31,6 +32,7 @@ commands:
   materials   list the preset materials with their coefficients
   dipole      evaluate the dipole profile Rd(r) of a material
   compare     error metrics (and a heat map) of an image against a reference
+  animate     a PNG sequence while the light orbits, the material or the size changes
   atlas       build (or check) a mesh's texture atlas and report its quality
   help        this text; `tsis <command> --help` for a command's options
 )";
@@ -192,6 +194,7 @@ int runAtlas(const std::vector<std::string>& argv) {
 const Command kCommands[] = {
     {"atlas", runAtlas},   {"render", runRender},   {"materials", runMaterials},
     {"dipole", runDipole}, {"compare", runCompare},
+    {"animate", runAnimate},
 };
 
 }  // namespace
