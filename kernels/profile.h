@@ -38,6 +38,20 @@ static inline void tsis_profile_split_entry(const __global float4* table, const 
     split[2 * n + k] = (float2)(a.z, d.z);
 }
 
+/* The same pairs interleaved: row k = (value, step) of r, g, b, then 0, 0
+ * (TSIS_GATHER_INTERLEAVED in gather.cl). */
+static inline void tsis_profile_interleave_entry(const __global float4* table,
+                                                 const TsisTableInfo info, const int k,
+                                                 __global float8* rows) {
+    float4 a = (float4)(0.0f);
+    float4 d = (float4)(0.0f);
+    if (k < (int)info.size - 1) {
+        a = table[k];
+        d = table[k + 1] - a;
+    }
+    rows[k] = (float8)(a.x, d.x, a.y, d.y, a.z, d.z, 0.0f, 0.0f);
+}
+
 /* Entry index and fraction for distances in vector lanes (the gather's layout
  * of several output points per work-item); out of range gives (size - 1, 0):
  * the zero entry. One function per width: the embedding (cmake/embed_script.cmake)

@@ -18,9 +18,11 @@ size_t roundUp(size_t n, size_t m) {
 
 }  // namespace
 
-Gatherer::Gatherer(ClRuntime& cl, int pointsPerItem) : cl_(cl), width_(pointsPerItem) {
+Gatherer::Gatherer(ClRuntime& cl, int pointsPerItem, bool interleaved)
+    : cl_(cl), width_(pointsPerItem), interleaved_(interleaved && pointsPerItem > 1) {
     TSIS_CHECK(width_ == 1 || width_ == 8 || width_ == 16);
-    const std::string options = "-DTSIS_GATHER_WIDTH=" + std::to_string(width_);
+    std::string options = "-DTSIS_GATHER_WIDTH=" + std::to_string(width_);
+    if (interleaved_) options += " -DTSIS_GATHER_INTERLEAVED=1";
     gather_ = cl.kernel("gather.cl", "tsis_gather", options);
     if (width_ > 1) split_ = cl.kernel("gather.cl", "tsis_profile_split", options);
 }
@@ -44,8 +46,10 @@ void Gatherer::run(const cl::Buffer& points, int count, const cl::Buffer& sample
         // Rebuilt every run (8192 entries, well under a millisecond): the
         // table's contents may change under the same buffer.
         if (splitEntries_ < info.size) {
+            // 3 float2 per entry, or one float8 row when interleaved.
             splitTable_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE,
-                                     3 * size_t(info.size) * sizeof(cl_float2));
+                                     size_t(info.size) * (interleaved_ ? sizeof(cl_float8)
+                                                                       : 3 * sizeof(cl_float2)));
             splitEntries_ = info.size;
         }
         split_.setArg(0, table);

@@ -16,7 +16,11 @@ class Gatherer {
     // or 8/16 (points in vector lanes; vectorises on CPU devices). The default
     // measured fastest on PoCL here (gather_bench_test.cpp): 8 ≈ 16 ≈ 1.8× of 1.
     static constexpr int kDefaultPointsPerItem = 8;
-    explicit Gatherer(ClRuntime& cl, int pointsPerItem = kDefaultPointsPerItem);
+    // Vector widths only: the (value, step) pairs of r, g, b in one 32-byte
+    // row per table entry instead of three tables (kernels/gather.cl).
+    static constexpr bool kDefaultInterleaved = false;
+    explicit Gatherer(ClRuntime& cl, int pointsPerItem = kDefaultPointsPerItem,
+                      bool interleaved = kDefaultInterleaved);
 
     // points: count float4 (xyz, w ignored); samples: n TsisSample; table:
     // info.size float4 entries (ProfileTable::rgba); out: count float4 (B rgb, 0).
@@ -26,10 +30,12 @@ class Gatherer {
     double lastMs() const;  // CL profiling of the last run (waits for it)
     long long lastEvaluations() const { return lastEvaluations_; }  // count * n
     int pointsPerItem() const { return width_; }
+    bool interleaved() const { return interleaved_; }
 
   private:
     ClRuntime& cl_;
     int width_;
+    bool interleaved_;
     cl::Kernel split_;  // per-channel (value, step) table, for width > 1
     cl::Kernel gather_;
     cl::Buffer splitTable_;

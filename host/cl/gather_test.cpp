@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "cl/cl_test_fixture.h"
@@ -59,7 +60,8 @@ std::vector<TsisSample> randomSamples(int n, uint32_t seed) {
 
 class GatherTest : public ClTest, public ::testing::WithParamInterface<int> {
   protected:
-    Gatherer gatherer{rt, GetParam()};
+    // A negative parameter: that width with the interleaved table rows.
+    Gatherer gatherer{rt, std::abs(GetParam()), GetParam() < 0};
 
     std::vector<cl_float4> gather(const std::vector<cl_float4>& points,
                                   const std::vector<TsisSample>& samples, const ProfileTable& t) {
@@ -153,10 +155,11 @@ TEST_P(GatherTest, NoPointsIsANoOp) {
     EXPECT_EQ(gatherer.lastMs(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Widths, GatherTest, ::testing::Values(1, 8, 16), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Widths, GatherTest, ::testing::Values(1, 8, 16, -8, -16), [](const auto& info) {
     // Appended, not "w" + …: GCC 12 warns falsely (-Wrestrict) on that.
     std::string name = "w";
-    name += std::to_string(info.param);
+    name += std::to_string(std::abs(info.param));
+    if (info.param < 0) name += "interleaved";
     return name;
 });
 
