@@ -39,4 +39,21 @@ typedef struct {
 #define TSIS_LUMA_G 0.7152f
 #define TSIS_LUMA_B 0.0722f
 
+/* One tap of tsm's fixed filter pattern, in units of the filter radius R:
+ * offset (x, y), the footprint it stands for (area / R^2) and its ring (the
+ * ring's table of Rd averaged over the footprint's annulus). */
+typedef struct {
+    float x, y;
+    float area;
+    float ring;
+} TsisTsmTap;
+
+/* The camera for image-space sampling (lss). */
+typedef struct {
+    float ex, ey, ez;  /* eye (mm) */
+    float pixel_angle; /* 2 tan(fovY / 2) / height: a pixel's size per mm of depth */
+    float fx, fy, fz;  /* unit view direction */
+    float min_cos;     /* clamp of |n . view| in a pixel's surface area */
+} TsisCamera;
+
 #endif /* TSIS_SHARED_H */

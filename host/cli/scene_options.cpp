@@ -52,8 +52,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"mis-distance", true, false,
          "M  mis: distance-driven samples per pixel and light (default 16)"},
         {"tsm-radius", true, false,
-         "K  tsm: filter radius K/σtr of the widest channel, at most the object's diameter "
-         "(default 4)"},
+         "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding radius "
+         "(default 2)"},
         {"atlas-res", true, false, "R  atlas resolution, a power of two (default 1024)"},
         {"atlas", true, false,
          "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
@@ -190,7 +190,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.ltsmRings = args.getInt("ltsm-rings", 4, 0, 64);
     o.ltsmPerRing = args.getInt("ltsm-per-ring", 4, 1, 256);
     o.misDistanceSamples = args.getInt("mis-distance", 16, 0, 1 << 16);
-    o.tsmRadius = args.getDouble("tsm-radius", 4.0, 1e-3, 1e3);
+    o.tsmRadius = args.getDouble("tsm-radius", 2.0, 1e-3, 1e3);
     o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     return o;

@@ -19,6 +19,7 @@ struct RenderOptions {
     float shininess = 40.0f;
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
+    double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
     bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
 };
 

@@ -1,0 +1,170 @@
+// lss, Mertens et al. 2003, as a baseline.
+//
+// Per covered pixel xo, --samples = M samples on the image plane:
+//   * radius r_k (mm) by importance of Rd on the plane: u_k = (k + ξ)/M through
+//     the inverse CDF of the equal mixture of the channels' Rd_c(r)·2πr
+//     (radiusTable, up to the object's diameter);
+//   * direction k of a golden-angle spiral, rotated by φ;
+//   * (ξ, φ) hashed from (pixel, --seed): deterministic for a seed, decorrelated
+//     between pixels;
+//   * r_k mm become r_k / s_o pixels, s_o = 2·d_o·tan(fov/2)/H the size of a
+//     pixel at xo's depth d_o; the sample takes the nearest pixel's position and
+//     E (samples off the image or off the object add nothing);
+//   * its weight is the surface area that pixel covers, (2·tan(fov/2)/H)²·d³/ρ
+//     / max(|n·ω|, kMinCos), over the area a sample stands for, p(r)·s_o².
+// Light that reaches the object where the camera does not see it is missed —
+// the known blind spot of the method, kept.
+#include "render/method_lss.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "physics/dipole.h"
+#include "util/error.h"
+#include "util/timer.h"
+
+namespace tsis {
+namespace {
+
+constexpr size_t kLocal = 64;  // fixed: each new local size compiles again under PoCL
+
+size_t roundUp(size_t n, size_t m) {
+    return (n + m - 1) / m * m;
+}
+
+}  // namespace
+
+LssMethod::LssMethod(ClRuntime& cl, int lanes)
+    : cl_(cl),
+      prepare_(cl.kernel("lss.cl", "tsis_lss_prepare")),
+      gather_(cl.kernel("lss.cl", "tsis_lss_gather", "-DTSIS_LSS_LANES=" + std::to_string(lanes))) {
+    TSIS_CHECK(lanes == 1 || lanes == 8);
+}
+
+TsisCamera LssMethod::camera(const Camera& c, int height) {
+    const glm::vec3 f = glm::normalize(c.target - c.eye);
+    TsisCamera cam{};
+    cam.ex = c.eye.x;
+    cam.ey = c.eye.y;
+    cam.ez = c.eye.z;
+    cam.pixel_angle =
+        2.0f * std::tan(0.5f * glm::radians(c.fovYDegrees)) / static_cast<float>(height);
+    cam.fx = f.x;
+    cam.fy = f.y;
+    cam.fz = f.z;
+    cam.min_cos = kMinCos;
+    return cam;
+}
+
+std::vector<float> LssMethod::radiusTable(const RadialImportance& rd, int entries) {
+    TSIS_CHECK_GE(entries, 1);
+    std::vector<float> radii(static_cast<size_t>(entries) + 1);
+    for (int k = 0; k <= entries; ++k)
+        radii[static_cast<size_t>(k)] =
+            static_cast<float>(rd.inverse(static_cast<double>(k) / entries));
+    return radii;
+}
+
+void LssMethod::updateTables(FrameContext& ctx) {
+    // Two surface points are at most the bounding sphere's diameter apart.
+    const double rMax = 2.0 * ctx.boundingRadius * 1.001;
+    Timer t;
+    if (table_.update(ctx.scene->material, rMax)) {
+        const ProfileTable& table = table_.table();
+        rd_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                         table.rgba.size() * sizeof(float), const_cast<float*>(table.rgba.data()));
+        const Dipole dipole(ctx.scene->material);
+        std::vector<float> radii = radiusTable(
+            RadialImportance([&dipole](double r) { return dipole.Rd(r); }, rMax), kRadiusEntries);
+        radii_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                            radii.size() * sizeof(float), radii.data());
+        ctx.stats->addStage("lss_tables", t.ms());
+    }
+    const int m = ctx.options->samples;
+    if (m != dirsCount_) {
+        // Golden-angle spiral: any prefix of it covers the circle evenly.
+        const double golden = M_PI * (3.0 - std::sqrt(5.0));
+        // Padded with zeros to whole vectors of 8 (the kernel reads 8 at a time).
+        std::vector<cl_float2> dirs(roundUp(static_cast<size_t>(m), 8), cl_float2{{0.0f, 0.0f}});
+        for (int k = 0; k < m; ++k)
+            dirs[static_cast<size_t>(k)] = {{static_cast<float>(std::cos(golden * k)),
+                                             static_cast<float>(std::sin(golden * k))}};
+        dirs_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                           dirs.size() * sizeof(cl_float2), dirs.data());
+        dirsCount_ = m;
+    }
+}
+
+void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+    graph.addPass({"lss_prepare",
+                   {"gbuffer_cl"},
+                   {"lss_surface"},
+                   [this, &ctx] {
+                       updateTables(ctx);
+                       const size_t pixels = static_cast<size_t>(ctx.width) * ctx.height;
+                       if (surfaceCapacity_ < pixels) {
+                           pos_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
+                           ea_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
+                           surfaceCapacity_ = pixels;
+                       }
+                       prepare_.setArg(0, ctx.gbufferPosition);
+                       prepare_.setArg(1, ctx.gbufferNormal);
+                       prepare_.setArg(2, ctx.gbufferIrradiance);
+                       prepare_.setArg(3, static_cast<cl_int>(pixels));
+                       prepare_.setArg(4, camera(ctx.scene->camera, ctx.height));
+                       prepare_.setArg(5, pos_);
+                       prepare_.setArg(6, ea_);
+                       cl::Event e;
+                       cl_.queue().enqueueNDRangeKernel(prepare_, cl::NullRange,
+                                                        cl::NDRange(roundUp(pixels, kLocal)),
+                                                        cl::NDRange(kLocal), nullptr, &e);
+                       ctx.stats->addStage("lss_prepare", eventMilliseconds(e));
+                   },
+                   true});
+    graph.addPass(
+        {"lss_gather",
+         {"lss_surface", "points_cl"},
+         {"radiosity_cl"},
+         [this, &ctx] {
+             const int count = ctx.pointCount;
+             const int m = ctx.options->samples;
+             ctx.stats->set("rd_evaluations", static_cast<double>(count) * m);
+             if (count == 0) {
+                 ctx.stats->addStage("lss_gather", 0.0);
+                 return;
+             }
+             Timer t;
+             const size_t bytes = static_cast<size_t>(count) * sizeof(cl_int);
+             if (pixelsCapacity_ < bytes) {
+                 pixels_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY, bytes);
+                 pixelsCapacity_ = bytes;
+             }
+             cl_.queue().enqueueWriteBuffer(pixels_, CL_TRUE, 0, bytes, ctx.pointPixel.data());
+             ctx.stats->addStage("lss_upload", t.ms(), static_cast<long long>(bytes));
+             int a = 0;
+             gather_.setArg(a++, pixels_);
+             gather_.setArg(a++, static_cast<cl_int>(count));
+             gather_.setArg(a++, pos_);
+             gather_.setArg(a++, ea_);
+             gather_.setArg(a++, static_cast<cl_int>(ctx.width));
+             gather_.setArg(a++, static_cast<cl_int>(ctx.height));
+             gather_.setArg(a++, dirs_);
+             gather_.setArg(a++, static_cast<cl_int>(m));
+             gather_.setArg(a++, radii_);
+             gather_.setArg(a++, static_cast<cl_int>(kRadiusEntries));
+             gather_.setArg(a++, rd_);
+             gather_.setArg(a++, table_.table().info);
+             gather_.setArg(a++, camera(ctx.scene->camera, ctx.height));
+             gather_.setArg(a++, static_cast<cl_uint>(ctx.options->seed));
+             gather_.setArg(a++, ctx.radiosity);
+             cl::Event e;
+             cl_.queue().enqueueNDRangeKernel(
+                 gather_, cl::NullRange, cl::NDRange(roundUp(static_cast<size_t>(count), kLocal)),
+                 cl::NDRange(kLocal), nullptr, &e);
+             ctx.stats->addStage("lss_gather", eventMilliseconds(e));
+         },
+         true});
+}
+
+}  // namespace tsis

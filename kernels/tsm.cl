@@ -1,0 +1,116 @@
+/* Translucent Shadow Maps (Dachsbacher & Stamminger 2003), --method tsm:
+ * B(xo) = sum over lights and taps k of Phi_k * Rd_ring(k)(dz_k), a fixed
+ * pattern of taps around xo's projection into each light's flux map. The
+ * pattern, and why the weights are ring tables, is documented with the host
+ * code (host/render/method_tsm.cpp).
+ *
+ * Pyramids (one per light, levels back to back, level l at cell levels[l].x,
+ * levels[l].y x levels[l].z cells):
+ *   F = flux summed over the cell's texels (rgb),
+ *   P = luminance-weighted positions summed over the cell (Y x, Y y, Y z, Y),
+ * so a bilinear mix of cells gives a footprint's flux and the centroid of the
+ * light it received. */
+#include "light_map.h"
+#include "profile.h"
+
+/* Level 0 from one light's maps; global size >= count. */
+kernel void tsis_tsm_level0(const __global float4* flux, const __global float4* position,
+                            const int count, __global float4* F, __global float4* P) {
+    const int i = get_global_id(0);
+    if (i >= count) return;
+    const float4 f = flux[i];
+    const float y = TSIS_LUMA_R * f.x + TSIS_LUMA_G * f.y + TSIS_LUMA_B * f.z;
+    F[i] = (float4)(f.xyz, 0.0f);
+    P[i] = (float4)(y * position[i].xyz, y);
+}
+
+/* Level l+1 (dst, dw x dh) from level l (src, sw x sh): 2x2 sums; odd edges
+ * sum what exists. Global size >= (dw, dh). */
+kernel void tsis_tsm_reduce(__global float4* F, __global float4* P, const int src, const int sw,
+                            const int sh, const int dst, const int dw, const int dh) {
+    const int x = get_global_id(0);
+    const int y = get_global_id(1);
+    if (x >= dw || y >= dh) return;
+    float4 f = (float4)(0.0f);
+    float4 p = (float4)(0.0f);
+    for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+            const int sx = 2 * x + dx;
+            const int sy = 2 * y + dy;
+            if (sx < sw && sy < sh) {
+                f += F[src + sy * sw + sx];
+                p += P[src + sy * sw + sx];
+            }
+        }
+    F[dst + y * dw + x] = f;
+    P[dst + y * dw + x] = p;
+}
+
+/* Bilinear mix of the four cells around c (in cells, cell j's centre at j),
+ * clamped at the map's edge (the maps' borders are empty). */
+static void tsm_bilinear(const __global float4* F, const __global float4* P, const int4 level,
+                         const float2 c, float4* f, float4* p) {
+    const float2 c0 = floor(c);
+    const float2 t = c - c0;
+    const int x0 = clamp((int)c0.x, 0, level.y - 1);
+    const int y0 = clamp((int)c0.y, 0, level.z - 1);
+    const int x1 = min(x0 + 1, level.y - 1);
+    const int y1 = min(y0 + 1, level.z - 1);
+    const int r0 = level.x + y0 * level.y;
+    const int r1 = level.x + y1 * level.y;
+    const float w00 = (1.0f - t.x) * (1.0f - t.y), w10 = t.x * (1.0f - t.y);
+    const float w01 = (1.0f - t.x) * t.y, w11 = t.x * t.y;
+    *f = w00 * F[r0 + x0] + w10 * F[r0 + x1] + w01 * F[r1 + x0] + w11 * F[r1 + x1];
+    *p = w00 * P[r0 + x0] + w10 * P[r0 + x1] + w01 * P[r1 + x0] + w11 * P[r1 + x1];
+}
+
+/* One light, one output point per work-item. Measured on PoCL (512x512
+ * default scene): the bilinear reads dominate (nearest-cell reads halve the
+ * pass), and choosing the mip level once per ring instead of per tap saved a
+ * third. source: the light's position (w = 1) or
+ * its direction of travel (w = 0). rings: one profile table per ring, back to
+ * back (info.size entries each), f_ring(dz) = Rd averaged over the ring's
+ * annulus of the plane at depth offset dz. accumulate: add to out (the lights
+ * after the first). */
+kernel void tsis_tsm_filter(const __global float4* points, const int count,
+                            const TsisLightMapInfo light, const float4 source,
+                            const __global float4* F, const __global float4* P,
+                            const __global int4* levels, const int level_count,
+                            const __global TsisTsmTap* taps, const int tap_count,
+                            const __global float4* rings, const TsisTableInfo info,
+                            const float radius_mm, const int accumulate, __global float4* out) {
+    const int j = get_global_id(0);
+    if (j >= count) return;
+    const float3 xo = points[j].xyz;
+    const float3 o = tsis_light_project(&light, xo);
+    /* Depth offsets are taken along the light's direction of travel at xo. */
+    const float3 travel = source.w > 0.0f ? normalize(xo - source.xyz) : source.xyz;
+    const float rt = radius_mm / (light.tau_per_w * o.z); /* R in level-0 texels */
+    float3 b = (float3)(0.0f);
+    /* Taps come ring by ring and share their ring's footprint, so the mip
+     * level is chosen once per ring. */
+    int ring = -1;
+    int4 level = (int4)(0);
+    float footprint = 0.0f, scale = 1.0f, weight = 0.0f;
+    for (int k = 0; k < tap_count; ++k) {
+        const TsisTsmTap tap = taps[k];
+        if ((int)tap.ring != ring) {
+            ring = (int)tap.ring;
+            footprint = tap.area * rt * rt; /* level-0 texels the tap stands for */
+            /* Cells half the footprint's side: the bilinear tent spans about the footprint. */
+            const int lod = clamp((int)rint(0.5f * log2(max(footprint, 1.0f))) - 1, 0, level_count - 1);
+            level = levels[lod];
+            scale = 1.0f / (float)(1 << lod);
+            /* Mean flux per level-0 texel (a level-l cell sums 4^l) times the footprint. */
+            weight = footprint * scale * scale;
+        }
+        float4 f, p;
+        tsm_bilinear(F, P, level, (o.xy + rt * (float2)(tap.x, tap.y)) * scale - 0.5f, &f, &p);
+        if (!(p.w > 0.0f)) continue; /* no light there */
+        const float dz = fabs(dot(p.xyz / p.w - xo, travel));
+        const float4 rd = tsis_profile(rings + ring * (int)info.size, info, dz);
+        b += f.xyz * weight * rd.xyz;
+    }
+    const float4 base = accumulate ? out[j] : (float4)(0.0f);
+    out[j] = base + (float4)(b, 0.0f);
+}
