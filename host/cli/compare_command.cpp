@@ -32,9 +32,12 @@ ImageF readInput(const std::string& path, const char* what) {
 
 int runCompare(const std::vector<std::string>& argv) {
     const std::vector<OptionSpec> specs = {
-        {"mask", true, false, "FILE  compare only pixels where FILE's first channel > 0.5 (e.g. coverage.exr)"},
+        {"mask", true, false,
+         "FILE  compare only pixels where FILE's first channel > 0.5 (e.g. coverage.exr)"},
         {"heatmap", true, false, "FILE.png  false-colour relative error with a legend"},
-        {"heat-max", true, false, "X  relative error at the top of the heat map's scale (default: a round value ≥ the 99th percentile)"},
+        {"heat-max", true, false,
+         "X  relative error at the top of the heat map's scale (default: a round value ≥ the 99th "
+         "percentile)"},
         {"json", false, false, "print the metrics as JSON"},
     };
     bool help = false;
@@ -45,15 +48,17 @@ int runCompare(const std::vector<std::string>& argv) {
     }
     Args args("compare", specs, argv);
     if (args.positional().size() != 2)
-        fail("compare takes two images, A and the reference B (got ", args.positional().size(), ")");
+        fail("compare takes two images, A and the reference B (got ", args.positional().size(),
+             ")");
     const std::string pathA = args.positional()[0], pathB = args.positional()[1];
     const ImageF a = readInput(pathA, "image"), b = readInput(pathB, "reference image");
     ImageF mask;
     const auto maskPath = args.value("mask");
     if (maskPath) mask = readInput(*maskPath, "mask");
-    const Comparison cmp = compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB,
-                                         maskPath.value_or(""));
-    std::cout << (args.flag("json") ? compareJson(cmp.metrics).dump() + "\n" : compareTable(cmp.metrics));
+    const Comparison cmp =
+        compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB, maskPath.value_or(""));
+    std::cout << (args.flag("json") ? compareJson(cmp.metrics).dump() + "\n"
+                                    : compareTable(cmp.metrics));
     if (auto heatPath = args.value("heatmap")) {
         const double scale = args.has("heat-max") ? args.getDouble("heat-max", 0, 1e-9, 1e9)
                                                   : heatmapScale(cmp.relError);

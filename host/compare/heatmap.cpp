@@ -26,16 +26,17 @@ std::string percent(double v) {
 }  // namespace
 
 std::array<uint8_t, 3> heatColour(double t) {
-    static const double kViridis[9][3] = {
-        {68, 1, 84},    {71, 45, 123},  {59, 82, 139},   {44, 114, 142}, {33, 145, 140},
-        {40, 174, 128}, {94, 201, 98},  {173, 220, 48},  {253, 231, 37}};
+    static const double kViridis[9][3] = {{68, 1, 84},    {71, 45, 123},  {59, 82, 139},
+                                          {44, 114, 142}, {33, 145, 140}, {40, 174, 128},
+                                          {94, 201, 98},  {173, 220, 48}, {253, 231, 37}};
     if (!(t > 0)) t = 0;  // also NaN
     t = std::min(t, 1.0) * 8.0;
     const int i = std::min(static_cast<int>(t), 7);
     const double f = t - i;
     std::array<uint8_t, 3> c{};
     for (int k = 0; k < 3; ++k)
-        c[k] = static_cast<uint8_t>(std::lround(kViridis[i][k] + f * (kViridis[i + 1][k] - kViridis[i][k])));
+        c[k] = static_cast<uint8_t>(
+            std::lround(kViridis[i][k] + f * (kViridis[i + 1][k] - kViridis[i][k])));
     return c;
 }
 
@@ -45,7 +46,8 @@ double heatmapScale(const ImageF& relError) {
         if (e >= 0) v.push_back(e);
     double p99 = 0;
     if (!v.empty()) {
-        const size_t k = std::min(v.size() - 1, static_cast<size_t>(0.99 * static_cast<double>(v.size())));
+        const size_t k =
+            std::min(v.size() - 1, static_cast<size_t>(0.99 * static_cast<double>(v.size())));
         std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
         p99 = v[k];
     }
@@ -66,7 +68,8 @@ Heatmap renderHeatmap(const ImageF& relError, double scaleMax) {
     const int s = w >= 300 ? 2 : 1;  // font and bar scale
     const std::string title = "rel. error |A-B|/|B|";
     const int margin = 8 * s;
-    const int barLeftRoom = textWidth("0%", s) / 2, barRightRoom = textWidth(percent(scaleMax) + "+", s) / 2;
+    const int barLeftRoom = textWidth("0%", s) / 2,
+              barRightRoom = textWidth(percent(scaleMax) + "+", s) / 2;
     Heatmap out;
     out.scaleMax = scaleMax;
     out.width = std::max({w, textWidth(title, s) + 2 * margin, 160 * s});
@@ -76,7 +79,8 @@ Heatmap renderHeatmap(const ImageF& relError, double scaleMax) {
     out.height = labelY + kGlyphHeight * s + margin / 2;
     out.rgb.resize(static_cast<size_t>(out.width) * out.height * 3);
     auto put = [&](int x, int y, std::array<uint8_t, 3> c) {
-        for (int k = 0; k < 3; ++k) out.rgb[(static_cast<size_t>(y) * out.width + x) * 3 + k] = c[k];
+        for (int k = 0; k < 3; ++k)
+            out.rgb[(static_cast<size_t>(y) * out.width + x) * 3 + k] = c[k];
     };
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) put(x, y, kBackground);

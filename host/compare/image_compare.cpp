@@ -63,7 +63,8 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
             maxAbs = std::max(maxAbs, d);
             // floor can be 0 (B all zero): then 0/0 counts as no error.
             const double den = std::max(std::abs(vb), floor);
-            const double r = den > 0 ? d / den : (d > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+            const double r =
+                den > 0 ? d / den : (d > 0 ? std::numeric_limits<double>::infinity() : 0.0);
             rel += r;
             pixelRel += r;
         }
@@ -76,7 +77,8 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
     m.relRmse = meanB != 0 ? m.rmse / meanB : std::numeric_limits<double>::quiet_NaN();
     m.meanRelErr = rel / values;
     m.maxAbs = maxAbs;
-    m.psnr = m.rmse > 0 ? 20.0 * std::log10(peak / m.rmse) : std::numeric_limits<double>::infinity();
+    m.psnr =
+        m.rmse > 0 ? 20.0 * std::log10(peak / m.rmse) : std::numeric_limits<double>::infinity();
     return out;
 }
 

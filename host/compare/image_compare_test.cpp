@@ -70,8 +70,8 @@ TEST(ImageCompare, JsonHasExactlyTheDocumentedKeys) {
     size_t keys = 0;
     for (size_t p = 0; (p = json.find("\":", p)) != std::string::npos; ++p) ++keys;
     EXPECT_EQ(keys, 6u) << json;
-    for (const char* k : {"\"rmse\"", "\"rel_rmse\"", "\"mean_rel_err\"", "\"max_abs\"", "\"psnr\"",
-                          "\"pixels\""})
+    for (const char* k :
+         {"\"rmse\"", "\"rel_rmse\"", "\"mean_rel_err\"", "\"max_abs\"", "\"psnr\"", "\"pixels\""})
         EXPECT_NE(json.find(k), std::string::npos) << k;
 }
 
@@ -85,7 +85,9 @@ TEST(ImageCompare, MismatchesAreOneLineErrorsNamingTheFiles) {
         }
         return std::string();
     };
-    std::string e = message([&] { compareImages(image(2, 1, 1, {1, 1}), b, nullptr, "a.exr", "b.exr"); });
+    std::string e = message([&] {
+        compareImages(image(2, 1, 1, {1, 1}), b, nullptr, "a.exr", "b.exr");
+    });
     EXPECT_NE(e.find("a.exr (2×1 with 1 channel)"), std::string::npos) << e;
     EXPECT_NE(e.find("b.exr (2×2"), std::string::npos) << e;
     e = message([&] { compareImages(image(1, 1, 3, {1, 1, 1}), image(1, 1, 1, {1}), nullptr); });

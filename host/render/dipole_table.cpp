@@ -9,8 +9,8 @@ namespace tsis {
 bool DipoleTable::update(const Material& m, double rMax) {
     std::ostringstream key;
     key.precision(17);
-    key << m.sigmaSPrime.x << ' ' << m.sigmaSPrime.y << ' ' << m.sigmaSPrime.z << ' '
-        << m.sigmaA.x << ' ' << m.sigmaA.y << ' ' << m.sigmaA.z << ' ' << m.eta << ' ' << rMax;
+    key << m.sigmaSPrime.x << ' ' << m.sigmaSPrime.y << ' ' << m.sigmaSPrime.z << ' ' << m.sigmaA.x
+        << ' ' << m.sigmaA.y << ' ' << m.sigmaA.z << ' ' << m.eta << ' ' << rMax;
     if (key.str() == key_) return false;
     const Dipole dipole(m);
     table_ = ProfileTable::build([&](double r) { return dipole.Rd(r); }, rMax);

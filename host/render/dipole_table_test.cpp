@@ -25,8 +25,7 @@ double worstRelativeError(const Material& m, double rMax) {
         const double r = 0.5 * rMax * i / 200000.0;
         const glm::dvec3 exact = d.Rd(r);
         const glm::vec3 got = t.table().lookup(static_cast<float>(r));
-        for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(got[c] / exact[c] - 1.0));
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] / exact[c] - 1.0));
     }
     return worst;
 }

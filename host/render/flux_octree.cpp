@@ -65,8 +65,8 @@ void FluxOctree::build(uint32_t node, std::vector<uint32_t>& order, uint32_t beg
         n.flux = glm::vec3(flux);
         n.area = static_cast<float>(area);
         n.position = glm::vec3(weight > 0 ? weighted / weight
-                                          : area > 0 ? areaWeighted / area
-                                                     : glm::dvec3(samples[order[begin]].position));
+                               : area > 0 ? areaWeighted / area
+                                          : glm::dvec3(samples[order[begin]].position));
         n.first = begin;
         n.count = end - begin;
         n.leaf = true;
@@ -118,8 +118,8 @@ glm::vec3 FluxOctree::radiosity(const glm::vec3& x, float epsilon, const Profile
     auto visit = [&](uint32_t k) {
         const Node& n = nodes_[k];
         if (n.flux.x <= 0.0f && n.flux.y <= 0.0f && n.flux.z <= 0.0f) return;  // dark
-        const bool inside = glm::all(glm::greaterThanEqual(x, n.lo)) &&
-                            glm::all(glm::lessThanEqual(x, n.hi));
+        const bool inside =
+            glm::all(glm::greaterThanEqual(x, n.lo)) && glm::all(glm::lessThanEqual(x, n.hi));
         const glm::vec3 d = x - n.position;
         const float d2 = glm::dot(d, d);
         if (!inside && n.area < epsilon * d2) {
@@ -144,8 +144,12 @@ glm::vec3 FluxOctree::radiosity(const glm::vec3& x, float epsilon, const Profile
     return b;
 }
 
-glm::vec3 FluxOctree::totalFlux() const { return nodes_.empty() ? glm::vec3(0.0f) : nodes_[0].flux; }
+glm::vec3 FluxOctree::totalFlux() const {
+    return nodes_.empty() ? glm::vec3(0.0f) : nodes_[0].flux;
+}
 
-float FluxOctree::totalArea() const { return nodes_.empty() ? 0.0f : nodes_[0].area; }
+float FluxOctree::totalArea() const {
+    return nodes_.empty() ? 0.0f : nodes_[0].area;
+}
 
 }  // namespace tsis

@@ -18,7 +18,8 @@ std::vector<SurfacePoint> litSphere(double spacing) {
     ensureNormals(m);
     std::vector<SurfacePoint> pts = poissonThin(placeSurfacePoints(m, 0.5 * spacing), spacing);
     const glm::vec3 l = glm::normalize(glm::vec3(1, 2, 0.5f));
-    for (SurfacePoint& p : pts) p.irradiance = glm::vec3(1.0f, 0.6f, 0.3f) * std::max(0.0f, glm::dot(p.normal, l));
+    for (SurfacePoint& p : pts)
+        p.irradiance = glm::vec3(1.0f, 0.6f, 0.3f) * std::max(0.0f, glm::dot(p.normal, l));
     return pts;
 }
 
@@ -27,7 +28,8 @@ ProfileTable rdTable(const char* material) {
     return ProfileTable::build([&](double r) { return d.Rd(r); }, 10.0);
 }
 
-glm::dvec3 exactSum(const std::vector<SurfacePoint>& pts, const glm::vec3& x, const ProfileTable& rd) {
+glm::dvec3 exactSum(const std::vector<SurfacePoint>& pts, const glm::vec3& x,
+                    const ProfileTable& rd) {
     glm::dvec3 b(0.0);
     for (const SurfacePoint& p : pts)
         b += glm::dvec3(p.irradiance * p.area) * glm::dvec3(rd.lookup(glm::length(x - p.position)));

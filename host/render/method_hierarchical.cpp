@@ -12,10 +12,13 @@ HierarchicalMethod::HierarchicalMethod(ClRuntime& cl) : cl_(cl) {}
 void HierarchicalMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const double spacing = ctx.options->spacingMm > 0 ? ctx.options->spacingMm
                                                       : smallestMeanFreePath(ctx.scene->material);
-    graph.addPass({"hierarchical_build", {}, {"hierarchical_tree"},
-                   [this, &ctx, spacing] { build(ctx, spacing); }});
-    graph.addPass({"hierarchical_eval", {"hierarchical_tree", "points_cl"}, {"radiosity_cl"},
-                   [this, &ctx] { evaluate(ctx); }});
+    graph.addPass({"hierarchical_build", {}, {"hierarchical_tree"}, [this, &ctx, spacing] {
+                       build(ctx, spacing);
+                   }});
+    graph.addPass(
+        {"hierarchical_eval", {"hierarchical_tree", "points_cl"}, {"radiosity_cl"}, [this, &ctx] {
+             evaluate(ctx);
+         }});
 }
 
 void HierarchicalMethod::build(FrameContext& ctx, double spacing) {

@@ -11,7 +11,6 @@
 // Samples and tree are rebuilt only when the mesh, lights, η or s change.
 #pragma once
 
-
 #include "render/dipole_table.h"
 #include "render/flux_octree.h"
 #include "render/method.h"

@@ -20,7 +20,9 @@ constexpr double kEvaluationsPerChunk = 1 << 28;
 
 ReferenceMethod::ReferenceMethod(ClRuntime& cl) : cl_(cl), gatherer_(cl) {}
 
-double ReferenceMethod::defaultSpacing(const Material& m) { return 0.5 * smallestMeanFreePath(m); }
+double ReferenceMethod::defaultSpacing(const Material& m) {
+    return 0.5 * smallestMeanFreePath(m);
+}
 
 void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const double spacing =
@@ -33,18 +35,28 @@ void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                            std::vector<TsisSample> s(std::max<size_t>(1, pts.size()), TsisSample{});
                            for (size_t i = 0; i < pts.size(); ++i) {
                                const glm::vec3 w = pts[i].irradiance * pts[i].area;
-                               s[i] = {pts[i].position.x, pts[i].position.y, pts[i].position.z,
-                                       -1.0f, w.x, w.y, w.z, 0.0f};
+                               s[i] = {pts[i].position.x,
+                                       pts[i].position.y,
+                                       pts[i].position.z,
+                                       -1.0f,
+                                       w.x,
+                                       w.y,
+                                       w.z,
+                                       0.0f};
                            }
-                           samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                                 s.size() * sizeof(TsisSample), s.data());
+                           samples_ =
+                               cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                          s.size() * sizeof(TsisSample), s.data());
                        }
                        ctx.stats->set("reference_spacing_mm", spacing);
                        ctx.stats->set("reference_point_count", static_cast<double>(pts.size()));
                        ctx.stats->set("reference_points_cached", !built);
                    }});
-    graph.addPass({"reference_gather", {"reference_samples", "points_cl"}, {"radiosity_cl"},
-                   [this, &ctx] { gather(ctx); }, true});
+    graph.addPass({"reference_gather",
+                   {"reference_samples", "points_cl"},
+                   {"radiosity_cl"},
+                   [this, &ctx] { gather(ctx); },
+                   true});
 }
 
 void ReferenceMethod::gather(FrameContext& ctx) {
@@ -67,14 +79,15 @@ void ReferenceMethod::gather(FrameContext& ctx) {
     size_t chunk = static_cast<size_t>(kEvaluationsPerChunk / std::max(1, n));
     const size_t unit = std::max<size_t>(alignPoints, 256);
     chunk = std::max(unit, chunk / unit * unit);
-    Progress progress("reference: gather " + std::to_string(count) + " pixels × " +
-                          std::to_string(n) + " points",
-                      count);
+    Progress progress(
+        "reference: gather " + std::to_string(count) + " pixels × " + std::to_string(n) + " points",
+        count);
     double ms = 0;
     for (size_t begin = 0; begin < static_cast<size_t>(count); begin += chunk) {
         const size_t len = std::min(chunk, static_cast<size_t>(count) - begin);
         const cl_buffer_region region{begin * 16, len * 16};
-        cl::Buffer in = ctx.points.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
+        cl::Buffer in =
+            ctx.points.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         cl::Buffer out =
             ctx.radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         gatherer_.run(in, static_cast<int>(len), samples_, n, table_, rd_.table().info, out);

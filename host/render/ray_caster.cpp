@@ -16,7 +16,9 @@ using Triangles = std::vector<K::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-K::Point_3 point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
+K::Point_3 point(const glm::dvec3& p) {
+    return {p.x, p.y, p.z};
+}
 
 }  // namespace
 
@@ -48,6 +50,8 @@ bool RayCaster::segmentClear(const glm::dvec3& a, const glm::dvec3& b) const {
     return !tree_->tree.do_intersect(K::Segment_3(point(a), point(b)));
 }
 
-size_t RayCaster::triangleCount() const { return tree_->triangles.size(); }
+size_t RayCaster::triangleCount() const {
+    return tree_->triangles.size();
+}
 
 }  // namespace tsis

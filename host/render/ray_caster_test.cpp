@@ -17,11 +17,11 @@ TEST(RayCaster, SegmentsThroughTheSquareAreBlockedOthersClear) {
     const RayCaster rays(square());
     EXPECT_EQ(rays.triangleCount(), 2u) << "the degenerate triangle is skipped";
     EXPECT_FALSE(rays.segmentClear({0.3, 1, 0.6}, {0.3, -1, 0.6}));
-    EXPECT_FALSE(rays.segmentClear({0.9, 1, 0.9}, {0.1, -1, 0.2}));    // slanted
-    EXPECT_TRUE(rays.segmentClear({1.5, 1, 0.5}, {1.5, -1, 0.5}));     // beside it
-    EXPECT_TRUE(rays.segmentClear({0.5, 1, 0.5}, {0.5, 1e-3, 0.5}));   // stops short
-    EXPECT_TRUE(rays.segmentClear({0.5, 1e-4, 0.5}, {0.5, 5, 0.5}));   // leaves upwards
-    EXPECT_TRUE(rays.segmentClear({0.5, 1, 0.5}, {0.5, 1, 0.5}));      // a point
+    EXPECT_FALSE(rays.segmentClear({0.9, 1, 0.9}, {0.1, -1, 0.2}));   // slanted
+    EXPECT_TRUE(rays.segmentClear({1.5, 1, 0.5}, {1.5, -1, 0.5}));    // beside it
+    EXPECT_TRUE(rays.segmentClear({0.5, 1, 0.5}, {0.5, 1e-3, 0.5}));  // stops short
+    EXPECT_TRUE(rays.segmentClear({0.5, 1e-4, 0.5}, {0.5, 5, 0.5}));  // leaves upwards
+    EXPECT_TRUE(rays.segmentClear({0.5, 1, 0.5}, {0.5, 1, 0.5}));     // a point
 }
 
 TEST(RayCaster, EmptyMeshBlocksNothing) {

@@ -41,16 +41,26 @@ std::vector<SurfacePoint> placeSurfacePoints(const Mesh& mesh, double spacing);
 glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vector<Light>& lights,
                         double eta, const RayCaster& rays, double offset, double reach);
 
-// irradianceAt for every point, on every core.
-void computeIrradiance(std::vector<SurfacePoint>& points, const std::vector<Light>& lights,
-                       double eta, const RayCaster& rays, double offset, double reach,
-                       Progress* progress = nullptr);
+// The points of placeSurfacePoints with exact E, on every core. A sub-triangle
+// that a shadow edge crosses (its corners and centroid are not hidden from the
+// same lights), and every sub-triangle touching it, integrates E adaptively
+// (cut 4×4 where the edge runs, two levels deep: edges resolved to
+// spacing/16) and its point moves to the centroid of luminous flux, on the same
+// triangle: the first moment of the flux is kept, so the sum stays second
+// order across shadow edges. Rays: one per light and lattice vertex or
+// centroid, a few dozen more per sub-triangle on a shadow edge.
+std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
+                                        const std::vector<Light>& lights, double eta,
+                                        const RayCaster& rays, double offset, double reach,
+                                        Progress* progress = nullptr);
 
-// A Poisson-disk subset (a point is kept when no earlier kept point with a
-// normal less than 90° away lies closer than `radius`), each dropped point's
-// area and flux E·A merged into the nearest such kept point: total area and
-// flux are conserved, E of a kept point becomes the area average of its cell.
-// Opposite sides of a thin part (normals > 90° apart) never merge.
+// Poisson-disk thinning: greedily in order, a point becomes a seed when no
+// earlier seed with a normal less than 90° away lies closer than `radius`;
+// every point then joins the nearest such seed's cell. One point per cell, at
+// the cell's centroid weighted by the luminance of the flux E·A (by area where
+// dark), with the cell's area, the area-average E and the mean normal: total
+// area, flux and the first moment of luminous flux are conserved. Opposite
+// sides of a thin part (normals > 90° apart) never share a cell.
 std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, double radius);
 
 // Points with exact E for a scene, kept while the mesh, the lights, η and the

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -25,8 +26,9 @@ Mesh oneTriangle() {
 void addSquare(Mesh& m, float y, float s, float cx = 0, float cz = 0) {
     const uint32_t b = static_cast<uint32_t>(m.positions.size());
     const float h = s / 2;
-    m.positions.insert(m.positions.end(), {{cx - h, y, cz - h}, {cx + h, y, cz - h},
-                                           {cx + h, y, cz + h}, {cx - h, y, cz + h}});
+    m.positions.insert(
+        m.positions.end(),
+        {{cx - h, y, cz - h}, {cx + h, y, cz - h}, {cx + h, y, cz + h}, {cx - h, y, cz + h}});
     m.normals.insert(m.normals.end(), 4, glm::vec3(0, 1, 0));
     m.triangles.insert(m.triangles.end(), {{b, b + 2, b + 1}, {b, b + 3, b + 2}});
 }
@@ -78,7 +80,8 @@ TEST(SurfacePoints, IrradianceOfPointAndDirectionalLightsWithShadow) {
     const glm::dvec3 n(0, 1, 0);
     // Directional light at 60° from the normal, travelling down towards -x.
     const glm::dvec3 dir = glm::normalize(glm::dvec3(-std::sqrt(3.0), -1.0, 0.0));
-    const std::vector<Light> sun = {{Light::Type::Directional, glm::vec3(dir), glm::vec3(2, 1, 0.5f)}};
+    const std::vector<Light> sun = {
+        {Light::Type::Directional, glm::vec3(dir), glm::vec3(2, 1, 0.5f)}};
     const double cos60 = 0.5, ft = fresnelTransmittance(eta, cos60);
     const glm::dvec3 lit = irradianceAt({-1.5, 0, -1.5}, n, sun, eta, rays, 1e-4, 100.0);
     EXPECT_NEAR(lit.x, 2 * ft * cos60, 1e-6);  // the light's direction is float
@@ -102,11 +105,48 @@ TEST(SurfacePoints, IrradianceOfPointAndDirectionalLightsWithShadow) {
     EXPECT_GT(irradianceAt({0.1, 0, 0.1}, n, unshadowed, eta, rays, 1e-4, 100.0).x, 0.0);
 }
 
+// A square occluder over a ground square under a vertical directional light:
+// the ground's flux and its first moment are those of the exactly known lit
+// region, though the shadow's edges run between the sample points.
+TEST(SurfacePoints, ShadowEdgesAreIntegratedAdaptively) {
+    Mesh m;
+    addSquare(m, 0.0f, 4.0f);
+    addSquare(m, 1.0f, 2.0f, 0.37f, 0.13f);
+    const RayCaster rays(m);
+    const std::vector<Light> sun = {{Light::Type::Directional, glm::vec3(0, -1, 0), glm::vec3(1)}};
+    const double e0 = fresnelTransmittance(1.3, 1.0);
+    auto groundFlux = [&](const std::vector<SurfacePoint>& pts, bool exactE) {
+        glm::dvec3 sum(0.0);  // flux, then the moment in x and z
+        for (const SurfacePoint& p : pts) {
+            if (p.position.y > 0.5f) continue;
+            const double e = exactE ? irradianceAt(glm::dvec3(p.position), glm::dvec3(p.normal),
+                                                   sun, 1.3, rays, 1e-4, 100.0)
+                                          .x
+                                    : p.irradiance.x;
+            sum += e * p.area * glm::dvec3(1.0, p.position.x, p.position.z);
+        }
+        return sum;
+    };
+    // Lit: the ground minus the occluder's 2×2 footprint centred at (0.37, 0.13).
+    const glm::dvec3 exact = e0 * glm::dvec3(12.0, -4.0 * 0.37, -4.0 * 0.13);
+    const double spacing = 0.3;
+    const glm::dvec3 adaptive =
+        groundFlux(sampleSurface(m, spacing, sun, 1.3, rays, 1e-4, 100.0), false);
+    const glm::dvec3 centroids = groundFlux(placeSurfacePoints(m, spacing), true);
+    std::printf("lit flux: exact %.5f, adaptive %.5f, centroid rule %.5f\n", exact.x, adaptive.x,
+                centroids.x);
+    EXPECT_NEAR(adaptive.x / exact.x, 1.0, 1e-3);
+    for (int c = 1; c < 3; ++c) EXPECT_NEAR(adaptive[c], exact[c], 2e-3 * exact.x) << c;
+    // What the refinement buys: the plain centroid rule is several times further off.
+    EXPECT_GT(std::abs(centroids.x - exact.x), 3 * std::abs(adaptive.x - exact.x));
+}
+
 TEST(SurfacePoints, PoissonThinningKeepsDistanceAndConservesAreaAndFlux) {
     Mesh m;
     addSquare(m, 0.0f, 6.0f);
     std::vector<SurfacePoint> pts = placeSurfacePoints(m, 0.1);
-    for (SurfacePoint& p : pts) p.irradiance = glm::vec3(1.0f + p.position.x, 2.0f, p.position.z * p.position.z);
+    for (SurfacePoint& p : pts)
+        p.irradiance = glm::vec3(1.0f + p.position.x, 2.0f, p.position.z * p.position.z);
     const double radius = 0.5;
     const std::vector<SurfacePoint> thin = poissonThin(pts, radius);
     auto totals = [](const std::vector<SurfacePoint>& s) {
@@ -117,9 +157,21 @@ TEST(SurfacePoints, PoissonThinningKeepsDistanceAndConservesAreaAndFlux) {
     };
     const glm::dvec4 before = totals(pts), after = totals(thin);
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(after[c] / before[c], 1.0, 1e-5) << c;
+    // The first moment of luminous flux is kept (the points sit at the cells' centroids).
+    auto moment = [](const std::vector<SurfacePoint>& s) {
+        glm::dvec3 m(0.0);
+        for (const SurfacePoint& p : s) {
+            const glm::dvec3 f = glm::dvec3(p.irradiance) * static_cast<double>(p.area);
+            m += (0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z) * glm::dvec3(p.position);
+        }
+        return m;
+    };
+    const glm::dvec3 m0 = moment(pts), m1 = moment(thin);
+    for (int c = 0; c < 3; c += 2) EXPECT_NEAR(m1[c], m0[c], 1e-4 * std::abs(m0[c]) + 1e-3) << c;
+    // Cells are about `radius` across: no two points nearly coincide.
     for (size_t i = 0; i < thin.size(); ++i)
         for (size_t j = i + 1; j < thin.size(); ++j)
-            ASSERT_GE(glm::length(thin[i].position - thin[j].position), radius * (1 - 1e-6));
+            ASSERT_GE(glm::length(thin[i].position - thin[j].position), 0.25 * radius);
     // A maximal disk packing of radius r has between 1/(π r²)·… and 2/(√3 r²) points per area.
     const double density = thin.size() / 36.0;
     EXPECT_GT(density, 1.0 / (M_PI * radius * radius));

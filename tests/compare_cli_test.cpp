@@ -1,0 +1,73 @@
+// `tsis compare` through the binary: JSON and table output, the heat map, and
+// bad inputs as one-line errors.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "image/image_io.h"
+#include "test_util.h"
+
+namespace tsis::test {
+namespace {
+
+void writeGrey(const std::string& path, int w, int h, std::vector<float> v) {
+    ImageF i;
+    i.width = w;
+    i.height = h;
+    i.channels = 1;
+    i.pixels = std::move(v);
+    writeImageF(path, i, {"Y"});
+}
+
+class CompareCli : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        writeGrey(dir.file("a.exr"), 2, 2, {2, 3, 3, 4});
+        writeGrey(dir.file("b.exr"), 2, 2, {2, 2, 4, 4});
+        writeGrey(dir.file("mask.exr"), 2, 2, {1, 1, 0, 1});
+        writeGrey(dir.file("small.exr"), 1, 2, {1, 1});
+    }
+    ScratchDir dir;
+};
+
+TEST_F(CompareCli, JsonTableAndHeatmap) {
+    RunResult r = runTsis("compare " + dir.file("a.exr") + " " + dir.file("b.exr") + " --json");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"rmse\": 0.7071067"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"mean_rel_err\": 0.1875"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"pixels\": 4"), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), ':'), 6) << r.out;
+    r = runTsis("compare " + dir.file("a.exr") + " " + dir.file("b.exr") + " --mask " +
+                dir.file("mask.exr") + " --heatmap " + dir.file("heat.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("pixels        3"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rel_rmse"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("heat.png")));
+    r = runTsis("compare --help");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("mean of B (B is the reference)"), std::string::npos) << r.out;
+}
+
+TEST_F(CompareCli, BadInputsAreOneLineErrors) {
+    struct Case {
+        std::string args, expect;
+    };
+    const Case cases[] = {
+        {dir.file("a.exr") + " " + dir.file("nope.exr"), "nope.exr' does not exist"},
+        {dir.file("a.exr") + " " + dir.file("small.exr"), "cannot compare"},
+        {dir.file("a.exr") + " " + dir.file("b.exr") + " --mask " + dir.file("small.exr"), "1×2"},
+        {dir.file("a.exr"), "two images"},
+        {dir.file("a.exr") + " " + dir.file("b.exr") + " --bogus", "bogus"},
+    };
+    for (const Case& c : cases) {
+        const RunResult r = runTsis("compare " + c.args);
+        EXPECT_EQ(r.exitCode, 1) << c.args;
+        EXPECT_EQ(r.err.rfind("tsis: error: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace tsis::test
