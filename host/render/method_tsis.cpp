@@ -10,15 +10,10 @@ namespace tsis {
 TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
 void TsisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    const Dipole dipole(ctx.scene->material);
-    std::ostringstream key;
-    key.precision(17);
-    key << "rd " << ctx.scene->material.sigmaSPrime.x << ' ' << ctx.scene->material.sigmaSPrime.y
-        << ' ' << ctx.scene->material.sigmaSPrime.z << ' ' << ctx.scene->material.sigmaA.x << ' '
-        << ctx.scene->material.sigmaA.y << ' ' << ctx.scene->material.sigmaA.z << ' '
-        << ctx.scene->material.eta;
-    addGlobalPasses(graph, ctx, [dipole](double r) { return dipole.Rd(r); }, key.str(),
-                    ctx.radiosity, "radiosity_cl", "");
+    const RenderOptions& o = *ctx.options;
+    const KeyedProfile profile =
+        dipoleProfile(ctx.scene->material, parseRdPart(o.rdPart), o.rpBound, o.rpK);
+    addGlobalPasses(graph, ctx, profile.f, profile.key, ctx.radiosity, "radiosity_cl", "");
 }
 
 void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const RadialProfile& profile,

@@ -9,12 +9,9 @@
 #include "cl/importance_sampler.h"
 #include "physics/profile_table.h"
 #include "render/method.h"
+#include "render/profiles.h"
 
 namespace tsis {
-
-// The profile a texture-space gather integrates; the full Rd for tsis, Rd·Wg
-// for the hybrid's global part.
-using RadialProfile = std::function<glm::dvec3(double r)>;
 
 class TsisMethod : public Method {
   public:
@@ -23,7 +20,8 @@ class TsisMethod : public Method {
     void addPasses(FrameGraph& graph, FrameContext& ctx) override;
 
     // Adds cdf, sample and gather passes that write `output` with `profile`
-    // (tabulated up to the object's diameter). Shared with the hybrid.
+    // (tabulated up to the object's diameter): the full Rd (or --rd-part) for
+    // tsis, Rd·Wg for the hybrid's global part.
     void addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const RadialProfile& profile,
                          const std::string& profileKey, cl::Buffer& out,
                          const std::string& output, const std::string& statPrefix);

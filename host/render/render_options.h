@@ -17,6 +17,13 @@ struct RenderOptions {
     bool specular = true;
     float specularKs = 0.2f;
     float shininess = 40.0f;
+    // Hybrid split (DESIGN §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
+    double rpBound = 0.1;
+    double rpK = 1.5;
+    std::string rdPart = "full";  // tsis/ltsm integrate Rd, Rd·Wl ("local") or Rd·Wg ("global")
+    int ltsmRings = 4;            // ltsm / hybrid local part: L rings of C samples + the centre
+    int ltsmPerRing = 4;
+    int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
     double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel

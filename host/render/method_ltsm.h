@@ -1,0 +1,50 @@
+// --method ltsm: the thesis' local method (3.3.2), "local translucent shadow
+// map". Each light's flux map (flux per texel, DESIGN §2) is filtered around
+// xo's projection with L rings of C samples + the centre (--ltsm-rings,
+// --ltsm-per-ring; default 4×4+1) placed by the importance of the profile on
+// the plane; samples are weighted by the profile at the true 3D distance to the
+// surface point in the light's position map. Alone it integrates the full Rd
+// (or --rd-part); the hybrid uses it for Rd·Wl. Kernel: kernels/ltsm.cl.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "physics/profile_table.h"
+#include "render/method.h"
+#include "render/profiles.h"
+#include "render/ring_pattern.h"
+
+namespace tsis {
+
+class LtsmMethod : public Method {
+  public:
+    explicit LtsmMethod(ClRuntime& cl);
+    const char* name() const override { return "ltsm"; }
+    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+
+    // Adds the filter pass for `profile`: writes `output` into `out`, or adds
+    // to what `out` holds when `accumulate` (after the passes that write
+    // `reads`). Stats: <prefix>ltsm (ms), <prefix>rd_evaluations.
+    void addLocalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
+                        cl::Buffer& out, const std::vector<std::string>& reads,
+                        const std::string& output, const std::string& statPrefix,
+                        bool accumulate);
+
+    const RingPattern& pattern() const { return pattern_; }
+
+  private:
+    void prepare(FrameContext& ctx, const KeyedProfile& profile, const std::string& statPrefix);
+
+    ClRuntime& cl_;
+    cl::Kernel kernel_;
+    std::vector<cl::Event> events_;
+    ProfileTable tableHost_;
+    cl::Buffer table_;
+    RingPattern pattern_;
+    cl::Buffer patternBuffer_;
+    std::string key_;
+};
+
+}  // namespace tsis
