@@ -59,11 +59,11 @@ plots() {
         for c in $(tail -n +2 "$results/error.csv" | cut -d, -f1 | sort -u); do
             plot=""
             for m in $(tail -n +2 "$results/error.csv" | awk -F, -v c="$c" '$1 == c {print $2}' | awk '!s[$0]++'); do
-                awk -F, -v c="$c" -v m="$m" '$1 == c && $2 == m {print $5, $8}' "$results/error.csv" | sort -n >"$tmp/$c-$m"
+                awk -F, -v c="$c" -v m="$m" '$1 == c && $2 == m {print $5, $8}' "$results/error.csv" >"$tmp/$c-$m"
                 plot="$plot${plot:+, }'$tmp/$c-$m' using 1:(100*\$2) with linespoints lw 2 title '$m'"
             done
             gnuplot <<GP
-set terminal pngcairo size 800,560 font ",11"
+set terminal pngcairo size 800,560 font ",11" noenhanced
 set output '$results/error_$c.png'
 set logscale xy
 set grid
@@ -85,7 +85,7 @@ GP
             done
         done
         gnuplot <<GP
-set terminal pngcairo size 900,600 font ",11"
+set terminal pngcairo size 900,600 font ",11" noenhanced
 set output '$results/tables_integration.png'
 set logscale xy
 set grid
@@ -101,7 +101,7 @@ GP
         awk -F, '$1 == "pixels" {print $6, $7}' "$results/scaling.csv" | sort -n >"$tmp/pix"
         awk -F, '$1 == "atlas" {print $5, 100*$13, $10}' "$results/scaling.csv" | sort -n >"$tmp/atl"
         gnuplot <<GP
-set terminal pngcairo size 1500,450 font ",11"
+set terminal pngcairo size 1500,450 font ",11" noenhanced
 set output '$results/scaling.png'
 set multiplot layout 1,3
 set grid
