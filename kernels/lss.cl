@@ -7,6 +7,7 @@
  * sampled radius and s_o the size of a pixel at xo's depth (mm), so a sample
  * r_k mm out lands r_k / s_o pixels away. Light the camera does not see is
  * missed: that is the method. */
+#include "hash.h"
 #include "profile.h"
 
 /* Per pixel of the G-buffer: where it is (xyz, 1 where covered) and its
@@ -32,16 +33,6 @@ kernel void tsis_lss_prepare(const __global float4* gpos, const __global float4*
     const float c = max(fabs(dot(normalize(gnormal[i].xyz), v / rho)), cam.min_cos);
     pos[i] = (float4)(p.xyz, 1.0f);
     ea[i] = (float4)(girr[i].xyz * (d * d * d / (rho * c)), 0.0f);
-}
-
-/* Wellons' lowbias32: decorrelates neighbouring pixels' rotations. */
-static inline uint lss_hash(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
 }
 
 /* Per-lane loads for TSIS_LSS_LANES 8: vectors are built from named values,
@@ -88,8 +79,8 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count,
     const float3 xo = pos[pix].xyz;
     const float depth = dot(xo - (float3)(cam.ex, cam.ey, cam.ez), (float3)(cam.fx, cam.fy, cam.fz));
     const float per_mm = 1.0f / (depth * cam.pixel_angle); /* pixels per mm at xo */
-    const uint h1 = lss_hash((uint)pix ^ lss_hash(seed));
-    const uint h2 = lss_hash(h1 + 0x9e3779b9U);
+    const uint h1 = tsis_hash((uint)pix ^ tsis_hash(seed));
+    const uint h2 = tsis_hash(h1 + 0x9e3779b9U);
     const float xi = (float)(h1 >> 8) * 0x1p-24f;
     float cs;
     const float sn = sincos((float)(h2 >> 8) * 0x1p-24f * 6.2831853f, &cs);

@@ -13,10 +13,10 @@ void HybridMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const Material& m = ctx.scene->material;
     const KeyedProfile global = dipoleProfile(m, RdPart::Global, o.rpBound, o.rpK);
     const KeyedProfile local = dipoleProfile(m, RdPart::Local, o.rpBound, o.rpK);
-    global_.addGlobalPasses(graph, ctx, global.f, global.key, ctx.radiosity,
-                            "global_radiosity_cl", "global_");
-    local_.addLocalPasses(graph, ctx, local, ctx.radiosity, {"global_radiosity_cl"},
-                          "radiosity_cl", "local_", true);
+    global_.addGlobalPasses(graph, ctx, global.f, global.key, ctx.radiosity, "global_radiosity_cl",
+                            "global_");
+    local_.addLocalPasses(graph, ctx, local, ctx.radiosity, {"global_radiosity_cl"}, "radiosity_cl",
+                          "local_", true);
     Json rp = Json::array();
     for (int c = 0; c < 3; ++c) rp.push(local.Rp[c]);
     ctx.stats->set("rp", rp);

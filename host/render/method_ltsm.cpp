@@ -12,7 +12,9 @@ namespace {
 
 constexpr size_t kLocal = 64;
 
-size_t roundUp(size_t n, size_t m) { return (n + m - 1) / m * m; }
+size_t roundUp(size_t n, size_t m) {
+    return (n + m - 1) / m * m;
+}
 
 }  // namespace
 
@@ -58,7 +60,9 @@ void LtsmMethod::addLocalPasses(FrameGraph& graph, FrameContext& ctx, const Keye
     std::vector<std::string> in = {"points_cl", "light_maps_cl"};
     in.insert(in.end(), reads.begin(), reads.end());
     graph.addPass(
-        {statPrefix + "ltsm", in, {output},
+        {statPrefix + "ltsm",
+         in,
+         {output},
          [this, &ctx, &out, statPrefix, accumulate] {
              const int n = static_cast<int>(pattern_.samples.size());
              const size_t lights = ctx.lightFlux.size();

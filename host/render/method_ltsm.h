@@ -29,8 +29,7 @@ class LtsmMethod : public Method {
     // `reads`). Stats: <prefix>ltsm (ms), <prefix>rd_evaluations.
     void addLocalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
                         cl::Buffer& out, const std::vector<std::string>& reads,
-                        const std::string& output, const std::string& statPrefix,
-                        bool accumulate);
+                        const std::string& output, const std::string& statPrefix, bool accumulate);
 
     const RingPattern& pattern() const { return pattern_; }
 

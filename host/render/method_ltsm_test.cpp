@@ -29,9 +29,15 @@ void checkPlane(const char* material, int rings, int perRing, double tolerance) 
     }
 }
 
-TEST(Ltsm, PlaneMarbleMatchesClosedForm) { checkPlane("marble", 4, 4, 0.03); }
-TEST(Ltsm, PlaneSkin1MatchesClosedForm) { checkPlane("skin1", 4, 4, 0.03); }
-TEST(Ltsm, PlaneCreamMatchesClosedFormWithOneRing) { checkPlane("cream", 1, 3, 0.03); }
+TEST(Ltsm, PlaneMarbleMatchesClosedForm) {
+    checkPlane("marble", 4, 4, 0.03);
+}
+TEST(Ltsm, PlaneSkin1MatchesClosedForm) {
+    checkPlane("skin1", 4, 4, 0.03);
+}
+TEST(Ltsm, PlaneCreamMatchesClosedFormWithOneRing) {
+    checkPlane("cream", 1, 3, 0.03);
+}
 
 }  // namespace
 }  // namespace tsis

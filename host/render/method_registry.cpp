@@ -5,6 +5,7 @@
 #include "render/method_hybrid.h"
 #include "render/method_lss.h"
 #include "render/method_ltsm.h"
+#include "render/method_mis.h"
 #include "render/method_tsis.h"
 #include "render/method_tsm.h"
 #include "util/error.h"
@@ -22,6 +23,7 @@ const Entry kMethods[] = {
     {"tsis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
     {"hybrid", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HybridMethod>(cl); }},
     {"ltsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LtsmMethod>(cl); }},
+    {"mis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<MisMethod>(cl); }},
     {"hierarchical", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HierarchicalMethod>(cl); }},
     {"reference", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<ReferenceMethod>(cl); }},
     {"tsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsmMethod>(cl); }},

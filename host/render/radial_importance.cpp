@@ -61,7 +61,8 @@ double RadialImportance::inverse(double u) const {
     if (u <= 0.0) return 0.0;
     if (u >= 1.0) return rMax();
     // First edge whose cdf reaches u; the cell before it holds u.
-    const size_t k = static_cast<size_t>(std::lower_bound(mix_.begin(), mix_.end(), u) - mix_.begin());
+    const size_t k =
+        static_cast<size_t>(std::lower_bound(mix_.begin(), mix_.end(), u) - mix_.begin());
     if (k == 0) return 0.0;
     const double span = mix_[k] - mix_[k - 1];
     const double t = span > 0.0 ? (u - mix_[k - 1]) / span : 0.0;

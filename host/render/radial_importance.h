@@ -28,9 +28,9 @@ class RadialImportance {
     double inverse(double u) const;
 
   private:
-    std::vector<double> r_;           // cell edges
-    std::vector<glm::dvec3> cum_;     // mass over [0, r_k]
-    std::vector<double> mix_;         // mixture cdf at r_k
+    std::vector<double> r_;        // cell edges
+    std::vector<glm::dvec3> cum_;  // mass over [0, r_k]
+    std::vector<double> mix_;      // mixture cdf at r_k
 };
 
 }  // namespace tsis

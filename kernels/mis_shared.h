@@ -1,0 +1,25 @@
+/* --method mis: parameters shared by host and kernels (kernels/mis.cl). */
+#ifndef TSIS_MIS_SHARED_H
+#define TSIS_MIS_SHARED_H
+
+#ifndef __OPENCL_VERSION__
+#include <cstdint>
+#endif
+
+/* The gather keeps every light's projection of xo in private memory. */
+#define TSIS_MIS_MAX_LIGHTS 8
+
+typedef struct {
+    int lights;       /* light maps, back to back in the combined buffers */
+    int res;          /* each map is res x res */
+    int n_tex;        /* N, texture-space samples shared by all pixels */
+    int n_dist;       /* distance-driven samples per pixel and light */
+    int segments;     /* K: the radius sampler's equal-probability segments */
+    int q_size;       /* bins of the radial density table used in the weights */
+    float q_inv_step; /* q_size / r_max */
+    float tex_scale;  /* N / (sum of Y over the flux atlas): N p_tex(x) = tex_scale Y(E(x)) */
+    unsigned int seed;
+    float pad0, pad1, pad2;
+} TsisMisInfo;
+
+#endif /* TSIS_MIS_SHARED_H */

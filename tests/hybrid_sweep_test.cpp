@@ -1,0 +1,46 @@
+// The small version of bench/hybrid_sweep.sh: skin1 at 10 and 70 mm, N = 900,
+// 48² pixels, against the ground truth. tsis' error grows with the size (the
+// local peak gets fewer samples); the hybrid's and mis' stay far below it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "render/render_test_util.h"
+
+namespace tsis {
+namespace {
+
+struct Errors {
+    double tsis, hybrid, mis;
+};
+
+Errors sweepPoint(double sizeMm) {
+    const Scene scene = test::torusScene("skin1", sizeMm);
+    RenderOptions opt;
+    opt.width = opt.height = 48;
+    opt.atlasResolution = 512;
+    opt.lightResolution = 512;
+    const FrameResult ref = test::renderWith(scene, opt, "reference");
+    opt.samples = 900;
+    Errors e{};
+    e.tsis = test::relativeRmse(test::renderWith(scene, opt, "tsis"), ref);
+    e.hybrid = test::relativeRmse(test::renderWith(scene, opt, "hybrid"), ref);
+    e.mis = test::relativeRmse(test::renderWith(scene, opt, "mis"), ref);
+    std::printf("skin1 %2.0f mm, N = 900: relative RMSE tsis %.4f, hybrid %.4f, mis %.4f\n", sizeMm,
+                e.tsis, e.hybrid, e.mis);
+    return e;
+}
+
+TEST(HybridSweep, HybridAndMisStayFlatWhereTsisGrows) {
+    const Errors small = sweepPoint(10.0);
+    const Errors large = sweepPoint(70.0);
+    EXPECT_GT(large.tsis, 5.0 * small.tsis);
+    EXPECT_LT(large.hybrid, 3.0 * small.hybrid);
+    EXPECT_LT(large.hybrid, 0.5 * large.tsis);
+    EXPECT_LT(large.mis, 0.5 * large.tsis);
+    // mis keeps tsis' quality where tsis is good: it only adds samples.
+    EXPECT_LT(small.mis, 1.5 * small.tsis);
+}
+
+}  // namespace
+}  // namespace tsis
