@@ -51,6 +51,11 @@ struct BadInput {
     const char* expect;  // a phrase the one-line message must contain
 };
 
+// Names the case in test listings (instead of GoogleTest's byte dump).
+void PrintTo(const BadInput& b, std::ostream* os) {
+    *os << b.name;
+}
+
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, OneLineErrorNonZeroExitNoOutput) {

@@ -16,7 +16,8 @@ TEST(HybridCli, MethodsWriteAovsAndTheirStages) {
         {"ltsm", {"\"ltsm\"", "\"ltsm_samples\": 17"}},
         {"hybrid",
          {"\"global_cdf\"", "\"global_sample\"", "\"global_gather\"", "\"local_ltsm\"",
-          "\"global_rd_evaluations\"", "\"local_rd_evaluations\"", "\"rp\"", "\"rp_k\": 3"}},
+          "\"global_rd_evaluations\"", "\"local_rd_evaluations\"", "\"rd_evaluations\"", "\"rp\"",
+          "\"rp_k\": 3"}},
         {"mis", {"\"mis_cdf\"", "\"mis_sample\"", "\"mis_light_maps\"", "\"mis_gather\""}},
     };
     for (const auto& [method, keys] : cases) {

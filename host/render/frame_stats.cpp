@@ -27,6 +27,20 @@ double FrameStats::stageMs(const std::string& name) const {
     return 0;
 }
 
+void FrameStats::totalRdEvaluations() {
+    const std::string key = "rd_evaluations";
+    double sum = 0;
+    bool parts = false;
+    for (const auto& [k, v] : values) {
+        if (k == key) return;
+        if (v.isNumber() && k.size() > key.size() && k.ends_with("_" + key)) {
+            sum += v.number();
+            parts = true;
+        }
+    }
+    if (parts) set(key, sum);
+}
+
 Json FrameStats::toJson() const {
     Json root = Json::object();
     for (const auto& [k, v] : values) root.set(k, v);

@@ -303,6 +303,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
         result.coverage = toImage(gbufferPosition, w, h, 1, 3);
     }
     stats.addStage("total", total.ms());
+    stats.totalRdEvaluations();
     stats.set("method", opt.method);
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());

@@ -31,6 +31,8 @@ class Json {
     Json& push(Json value);
 
     std::string dump(int indent = 2) const;
+    bool isNumber() const { return kind_ == Kind::Number; }
+    double number() const { return number_; }  // 0 unless isNumber()
 
   private:
     enum class Kind { Null, Number, Bool, String, Array, Object };
