@@ -16,16 +16,9 @@ struct Errors {
 
 Errors sweepPoint(double sizeMm) {
     const Scene scene = test::torusScene("skin1", sizeMm);
-    RenderOptions opt;
-    opt.width = opt.height = 48;
-    opt.atlasResolution = 512;
-    opt.lightResolution = 512;
-    const FrameResult ref = test::renderWith(scene, opt, "reference");
-    opt.samples = 900;
-    Errors e{};
-    e.tsis = test::relativeRmse(test::renderWith(scene, opt, "tsis"), ref);
-    e.hybrid = test::relativeRmse(test::renderWith(scene, opt, "hybrid"), ref);
-    e.mis = test::relativeRmse(test::renderWith(scene, opt, "mis"), ref);
+    const std::vector<double> err = test::errorsAgainstReference(
+        scene, test::smallOptions(48, 512, 900), {"tsis", "hybrid", "mis"});
+    const Errors e{err[0], err[1], err[2]};
     std::printf("skin1 %2.0f mm, N = 900: relative RMSE tsis %.4f, hybrid %.4f, mis %.4f\n", sizeMm,
                 e.tsis, e.hybrid, e.mis);
     return e;

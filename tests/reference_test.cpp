@@ -10,38 +10,12 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 
-#include "mesh/builtin.h"
-#include "physics/dipole.h"
-#include "physics/fresnel.h"
 #include "render/method_reference.h"
-#include "render/renderer.h"
+#include "render/render_test_util.h"
 #include "test_util.h"
 
 namespace tsis {
 namespace {
-
-Renderer& renderer() {
-    static Renderer r;
-    return r;
-}
-
-// Relative RMSE of a against b over pixels covered in b (all channels).
-double relativeRmse(const FrameResult& a, const FrameResult& b) {
-    double se = 0, sum = 0;
-    size_t n = 0;
-    for (int y = 0; y < b.height; ++y)
-        for (int x = 0; x < b.width; ++x) {
-            if (b.coverage.at(x, y, 0) <= 0) continue;
-            for (int c = 0; c < 3; ++c) {
-                const double d = a.radiosity.at(x, y, c) - b.radiosity.at(x, y, c);
-                se += d * d;
-                sum += b.radiosity.at(x, y, c);
-                ++n;
-            }
-        }
-    EXPECT_GT(n, 0u);
-    return n ? std::sqrt(se / n) / (sum / n) : 0.0;
-}
 
 // Flat vertex normals and planar UVs: the methods here read neither the atlas
 // nor the UVs, but the GL mesh upload wants them.
@@ -124,10 +98,8 @@ TEST(Reference, MatchesAnIndependentDoubleSum) {
     scene.camera.up = glm::vec3(0, 0, -1);
     scene.camera.fovYDegrees = 40;
     RenderOptions opt;
-    opt.method = "reference";
     opt.width = opt.height = 24;
-    opt.keepAovs = true;
-    const FrameResult f = renderer().render(scene, opt);
+    const FrameResult f = test::renderWith(scene, opt, "reference");
     const BruteForce brute(scene, ReferenceMethod::defaultSpacing(scene.material) / 4);
     double se = 0, sum = 0, worst = 0, shadowed = 0;
     size_t n = 0;
@@ -166,26 +138,11 @@ TEST(Reference, MatchesAnIndependentDoubleSum) {
 // closed form of DESIGN §2). Plane half-side 12/σtr: the missing tail is
 // ~e^-12; the camera looks at a 5 mm window at its centre.
 TEST(Reference, PlaneMatchesClosedFormWithinHalfAPercent) {
-    Scene scene;
-    scene.material = presetMaterial("skin1");
-    const Dipole dipole(scene.material);
-    const double sigmaTrMin =
-        std::min({dipole.ch[0].sigmaTr, dipole.ch[1].sigmaTr, dipole.ch[2].sigmaTr});
-    const double halfSide = 12.0 / sigmaTrMin;
-    scene.mesh = builtinPlane();
-    normalizeMesh(scene.mesh, 2.0 * halfSide * std::sqrt(2.0));
-    ensureNormals(scene.mesh);
-    scene.lights = {{Light::Type::Directional, glm::vec3(0, -1, 0), glm::vec3(1.0f)}};
-    scene.camera.eye = glm::vec3(0, 30, 0);
-    scene.camera.up = glm::vec3(0, 0, -1);
-    scene.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(2.5 / 30.0) * 180.0 / M_PI);
+    const Scene scene = test::planeScene("skin1", 12.0);
     RenderOptions opt;
-    opt.method = "reference";
     opt.width = opt.height = 32;
-    opt.keepAovs = true;
-    const FrameResult f = renderer().render(scene, opt);
-    const glm::dvec3 expected =
-        fresnelTransmittance(scene.material.eta, 1.0) * dipole.totalReflectance();
+    const FrameResult f = test::renderWith(scene, opt, "reference");
+    const glm::dvec3 expected = test::planeClosedForm(scene.material);
     double worst = 0;
     for (int y = 0; y < f.height; ++y)
         for (int x = 0; x < f.width; ++x)
@@ -227,15 +184,14 @@ TEST(Reference, HalvingTheSpacingChangesLessThanHalfAPercent) {
                     {Light::Type::Directional, glm::vec3(-0.3f, -0.2f, -1), glm::vec3(0.2f)}};
     scene.camera.eye = glm::vec3(0, 2, 12);
     RenderOptions opt;
-    opt.method = "reference";
     opt.width = opt.height = 48;
-    opt.keepAovs = true;
     const double h = ReferenceMethod::defaultSpacing(scene.material);
     opt.spacingMm = h;
-    const FrameResult coarse = renderer().render(scene, opt);
+    const FrameResult coarse = test::renderWith(scene, opt, "reference");
     opt.spacingMm = h / 2;
-    const FrameResult fine = renderer().render(scene, opt);
-    const double rel = relativeRmse(coarse, fine);
+    const FrameResult fine = test::renderWith(scene, opt, "reference");
+    EXPECT_GT(test::coveredPixels(fine), 0u);
+    const double rel = test::relativeRmse(coarse, fine);
     std::printf("spacing %.4f mm vs %.4f mm: relative RMSE %.4f%%\n", h, h / 2, 100 * rel);
     EXPECT_LT(rel, 0.005);
 }

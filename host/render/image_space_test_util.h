@@ -15,14 +15,7 @@ namespace tsis::test {
 // A 10 mm sphere lit by a point light from the camera's side (so lss, which
 // sees only what the camera sees, is judged where it can work).
 inline Scene litSphereScene(const char* material) {
-    Scene s;
-    s.material = presetMaterial(material);
-    s.mesh = builtinSphere();
-    normalizeMesh(s.mesh, 10.0);
-    ensureNormals(s.mesh);
-    s.lights = {{Light::Type::Point, glm::vec3(5, 10, 25), glm::vec3(700.0f)}};
-    s.camera.eye = glm::vec3(0, 3, 16);
-    return s;
+    return sphereScene(material, {Light::Type::Point, glm::vec3(5, 10, 25), glm::vec3(700.0f)});
 }
 
 // The reference method when it is registered, else tsis with N = 65536.
@@ -53,6 +46,17 @@ inline void expectSaneAgainstTruth(const FrameResult& f, const FrameResult& trut
     const double err = relativeRmse(f, truth);
     std::printf("%s: relative RMSE against the ground truth %.4f\n", what, err);
     EXPECT_LT(err, maxRelativeRmse) << what;
+}
+
+// `method` on the skin1 lit sphere (64², maps 512², N = samples) against the
+// ground truth.
+inline void expectSaneOnLitSphere(const std::string& method, double maxRelativeRmse,
+                                  const char* what, int samples = RenderOptions{}.samples) {
+    const Scene scene = litSphereScene("skin1");
+    RenderOptions opt = smallOptions(64, 512);
+    const FrameResult truth = groundTruth(scene, opt);
+    opt.samples = samples;
+    expectSaneAgainstTruth(renderWith(scene, opt, method), truth, maxRelativeRmse, what);
 }
 
 inline bool sameRadiosity(const FrameResult& a, const FrameResult& b) {

@@ -12,11 +12,7 @@ namespace {
 // samples: same N, seed and flux atlas) adds up to tsis with the full Rd.
 TEST(Hybrid, LocalPlusGlobalIsFull) {
     const Scene scene = test::torusScene("skimmilk", 20.0);
-    RenderOptions opt;
-    opt.width = opt.height = 40;
-    opt.atlasResolution = 256;
-    opt.lightResolution = 256;
-    opt.samples = 400;
+    RenderOptions opt = test::smallOptions(40, 256, 400);
     opt.rdPart = "full";
     const FrameResult full = test::renderWith(scene, opt, "tsis");
     opt.rdPart = "local";
@@ -46,15 +42,10 @@ TEST(Hybrid, LocalPlusGlobalIsFull) {
 // the same N.
 TEST(Hybrid, CloserToGroundTruthThanTsisAtSameN) {
     const Scene scene = test::torusScene("skin1", 40.0);
-    RenderOptions opt;
-    opt.width = opt.height = 48;
-    opt.atlasResolution = 512;
-    opt.lightResolution = 512;
-    const FrameResult ref = test::renderWith(scene, opt, "reference");
-    opt.samples = 900;
+    RenderOptions opt = test::smallOptions(48, 512, 900);
     opt.seed = 7;
-    const double hybrid = test::relativeRmse(test::renderWith(scene, opt, "hybrid"), ref);
-    const double tsis = test::relativeRmse(test::renderWith(scene, opt, "tsis"), ref);
+    const std::vector<double> e = test::errorsAgainstReference(scene, opt, {"hybrid", "tsis"});
+    const double hybrid = e[0], tsis = e[1];
     std::printf("40 mm skin1, N = 900: relative RMSE hybrid %.4f, tsis %.4f\n", hybrid, tsis);
     EXPECT_LT(hybrid, 0.12);
     EXPECT_LT(hybrid, 0.7 * tsis);
@@ -62,11 +53,7 @@ TEST(Hybrid, CloserToGroundTruthThanTsisAtSameN) {
 
 TEST(Hybrid, DeterministicAndReportsBothParts) {
     const Scene scene = test::torusScene("skin2", 10.0);
-    RenderOptions opt;
-    opt.width = opt.height = 32;
-    opt.atlasResolution = 128;
-    opt.lightResolution = 128;
-    opt.samples = 256;
+    const RenderOptions opt = test::smallOptions(32, 128, 256);
     const FrameResult a = test::renderWith(scene, opt, "hybrid");
     const FrameResult b = test::renderWith(scene, opt, "hybrid");
     EXPECT_EQ(a.radiosity.pixels, b.radiosity.pixels);

@@ -4,9 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <cstdio>
-
 #include "render/image_space_test_util.h"
 
 namespace tsis {
@@ -28,20 +25,9 @@ TEST(Lss, RadiusTableRisesFromZeroToRMax) {
 // the camera sees ±25 mm (Rd's tail beyond that is < 1% for skin1) and the
 // centre pixels must give B = E·Ft(1)·∫Rd dA.
 TEST(Lss, PlaneMatchesClosedForm) {
-    Scene scene;
-    scene.material = presetMaterial("skin1");
-    scene.mesh = builtinPlane();
-    normalizeMesh(scene.mesh, 2.0 * 40.0 * std::sqrt(2.0));
-    ensureNormals(scene.mesh);
-    scene.lights = {{Light::Type::Directional, glm::vec3(0, -1, 0), glm::vec3(1.0f)}};
-    scene.camera.eye = glm::vec3(0, 60, 0);
-    scene.camera.up = glm::vec3(0, 0, -1);
-    scene.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(25.0 / 60.0) * 180.0 / M_PI);
-    RenderOptions opt;
-    opt.width = opt.height = 96;
+    const Scene scene = test::squarePlaneScene("skin1", 40.0, 60.0, 25.0);
+    RenderOptions opt = test::smallOptions(96, 256, 2048);
     opt.atlasResolution = 64;  // unused by lss
-    opt.lightResolution = 256;
-    opt.samples = 2048;
     const FrameResult f = test::renderWith(scene, opt, "lss");
     glm::dvec3 got(0.0);
     int n = 0;
@@ -49,24 +35,11 @@ TEST(Lss, PlaneMatchesClosedForm) {
         for (int x = 44; x < 52; ++x, ++n)
             for (int c = 0; c < 3; ++c) got[c] += f.radiosity.at(x, y, c);
     got /= static_cast<double>(n);
-    const glm::dvec3 expected = test::planeClosedForm(scene.material);
-    for (int c = 0; c < 3; ++c) {
-        const double err = got[c] / expected[c] - 1.0;
-        std::printf("lss plane skin1 channel %d: B = %.5f, closed form %.5f, %+.3f%%\n", c, got[c],
-                    expected[c], 100 * err);
-        EXPECT_NEAR(err, 0.0, 0.03) << "channel " << c;
-    }
+    test::expectNearClosedForm(got, test::planeClosedForm(scene.material), 0.03, "lss plane skin1");
 }
 
 TEST(Lss, LitSphereIsSaneAgainstGroundTruth) {
-    const Scene scene = test::litSphereScene("skin1");
-    RenderOptions opt;
-    opt.width = opt.height = 64;
-    opt.atlasResolution = 512;
-    opt.lightResolution = 512;
-    const FrameResult truth = test::groundTruth(scene, opt);
-    opt.samples = 256;
-    test::expectSaneAgainstTruth(test::renderWith(scene, opt, "lss"), truth, 0.1, "lss sphere");
+    test::expectSaneOnLitSphere("lss", 0.1, "lss sphere", 256);
 }
 
 TEST(Lss, SameSeedSameRadiosity) {

@@ -3,7 +3,7 @@
 // everything it integrates.
 #include <gtest/gtest.h>
 
-#include <cstdio>
+#include <string>
 
 #include "render/render_test_util.h"
 
@@ -12,21 +12,14 @@ namespace {
 
 void checkPlane(const char* material, int rings, int perRing, double tolerance) {
     const Scene scene = test::planeScene(material);
-    RenderOptions opt;
-    opt.width = opt.height = 32;
+    RenderOptions opt = test::smallOptions(32, 1024);
     opt.atlasResolution = 64;  // unused by ltsm
-    opt.lightResolution = 1024;
     opt.ltsmRings = rings;
     opt.ltsmPerRing = perRing;
     const FrameResult f = test::renderWith(scene, opt, "ltsm");
-    const glm::dvec3 got = test::meanRadiosity(f);
-    const glm::dvec3 expected = test::planeClosedForm(scene.material);
-    for (int c = 0; c < 3; ++c) {
-        const double err = got[c] / expected[c] - 1.0;
-        std::printf("ltsm %d×%d+1 plane %s channel %d: B = %.5f, closed form %.5f, %+.3f%%\n",
-                    rings, perRing, material, c, got[c], expected[c], 100 * err);
-        EXPECT_NEAR(err, 0.0, tolerance) << material << " channel " << c;
-    }
+    test::expectNearClosedForm(
+        test::meanRadiosity(f), test::planeClosedForm(scene.material), tolerance,
+        "ltsm " + std::to_string(rings) + "×" + std::to_string(perRing) + "+1 plane " + material);
 }
 
 TEST(Ltsm, PlaneMarbleMatchesClosedForm) {

@@ -14,12 +14,7 @@ namespace {
 void checkPlane(const char* material, const std::vector<Light>& lights, double tolerance) {
     Scene scene = test::planeScene(material);
     scene.lights = lights;
-    RenderOptions opt;
-    opt.width = opt.height = 32;
-    opt.atlasResolution = 1024;
-    opt.lightResolution = 1024;
-    opt.samples = 4096;
-    const FrameResult f = test::renderWith(scene, opt, "mis");
+    const FrameResult f = test::renderWith(scene, test::smallOptions(32, 1024, 4096), "mis");
     const glm::dvec3 got = test::meanRadiosity(f);
     double e = 0;
     for (const Light& l : lights) {
@@ -27,12 +22,9 @@ void checkPlane(const char* material, const std::vector<Light>& lights, double t
         e += l.rgb.x * fresnelTransmittance(scene.material.eta, c) * c;
     }
     const glm::dvec3 expected = e * Dipole(scene.material).totalReflectance();
-    for (int c = 0; c < 3; ++c) {
-        const double err = got[c] / expected[c] - 1.0;
-        std::printf("mis plane %s, %zu light(s), channel %d: B = %.5f, closed form %.5f, %+.3f%%\n",
-                    material, lights.size(), c, got[c], expected[c], 100 * err);
-        EXPECT_NEAR(err, 0.0, tolerance) << material << " channel " << c;
-    }
+    test::expectNearClosedForm(
+        got, expected, tolerance,
+        "mis plane " + std::string(material) + ", " + std::to_string(lights.size()) + " light(s),");
 }
 
 const Light kNormal{Light::Type::Directional, glm::vec3(0, -1, 0), glm::vec3(1.0f)};
@@ -51,16 +43,11 @@ TEST(Mis, PlaneMarbleTwoLightsIsUnbiased) {
 // the whole sweep: mis is not best everywhere).
 TEST(Mis, CloserToGroundTruthThanTsisAndHybridOnCream) {
     const Scene scene = test::torusScene("cream", 10.0);
-    RenderOptions opt;
-    opt.width = opt.height = 96;
-    opt.atlasResolution = 512;
-    opt.lightResolution = 512;
-    const FrameResult ref = test::renderWith(scene, opt, "reference");
-    opt.samples = 900;
+    RenderOptions opt = test::smallOptions(96, 512, 900);
     opt.seed = 3;
-    const double mis = test::relativeRmse(test::renderWith(scene, opt, "mis"), ref);
-    const double hybrid = test::relativeRmse(test::renderWith(scene, opt, "hybrid"), ref);
-    const double tsis = test::relativeRmse(test::renderWith(scene, opt, "tsis"), ref);
+    const std::vector<double> e =
+        test::errorsAgainstReference(scene, opt, {"mis", "hybrid", "tsis"});
+    const double mis = e[0], hybrid = e[1], tsis = e[2];
     std::printf("10 mm cream, N = 900: relative RMSE mis %.4f, hybrid %.4f, tsis %.4f\n", mis,
                 hybrid, tsis);
     EXPECT_LT(mis, 0.75 * hybrid);
@@ -69,11 +56,7 @@ TEST(Mis, CloserToGroundTruthThanTsisAndHybridOnCream) {
 
 TEST(Mis, Deterministic) {
     const Scene scene = test::torusScene("skimmilk", 10.0);
-    RenderOptions opt;
-    opt.width = opt.height = 32;
-    opt.atlasResolution = 128;
-    opt.lightResolution = 128;
-    opt.samples = 256;
+    RenderOptions opt = test::smallOptions(32, 128, 256);
     const FrameResult a = test::renderWith(scene, opt, "mis");
     const FrameResult b = test::renderWith(scene, opt, "mis");
     EXPECT_EQ(a.radiosity.pixels, b.radiosity.pixels);

@@ -49,13 +49,7 @@ TEST(Tsm, AnnulusMeanMatchesQuadrature) {
 }
 
 TEST(Tsm, LitSphereIsSaneAgainstGroundTruth) {
-    const Scene scene = test::litSphereScene("skin1");
-    RenderOptions opt;
-    opt.width = opt.height = 64;
-    opt.atlasResolution = 512;
-    opt.lightResolution = 512;
-    const FrameResult truth = test::groundTruth(scene, opt);
-    test::expectSaneAgainstTruth(test::renderWith(scene, opt, "tsm"), truth, 0.2, "tsm sphere");
+    test::expectSaneOnLitSphere("tsm", 0.2, "tsm sphere");
 }
 
 // A slab of thickness t lit from behind: its front gets no irradiance, so all
@@ -86,10 +80,8 @@ TEST(Tsm, ThinSlabBackLitGlowsOnItsUnlitFront) {
     scene.lights = {{Light::Type::Directional, glm::vec3(0, 0, 1), glm::vec3(1.0f)}};
     scene.camera.eye = glm::vec3(0, 0, 30);
     scene.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(2.5 / 30.0) * 180.0 / M_PI);
-    RenderOptions opt;
-    opt.width = opt.height = 32;
+    RenderOptions opt = test::smallOptions(32, 256);
     opt.atlasResolution = 64;  // unused by tsm
-    opt.lightResolution = 256;
     const FrameResult f = test::renderWith(scene, opt, "tsm");
     const glm::dvec3 got = test::meanRadiosity(f);
 
