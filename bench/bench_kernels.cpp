@@ -78,8 +78,8 @@ int run(const BenchArgs& a) {
     readSum.setArg(1, bwOut);
     readSum.setArg(2, static_cast<int>(per));
 
-    // Gather inputs (as gather_bench_test.cpp): points over a hemisphere,
-    // samples over a sphere of 5 mm, a table covering the whole diameter.
+    // Gather inputs: points over a hemisphere, samples over a sphere of 5 mm,
+    // a table covering the whole diameter.
     std::vector<cl_float4> pts = hemispherePoints(kPoints);
     std::mt19937 rng(2);
     std::normal_distribution<float> g;

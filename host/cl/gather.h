@@ -14,7 +14,7 @@ class Gatherer {
   public:
     // Output points per work-item: 1 (one point per work-item, scalar on PoCL)
     // or 8/16 (points in vector lanes; vectorises on CPU devices). The default
-    // measured fastest on PoCL here (gather_bench_test.cpp): 8 ≈ 16 ≈ 1.8× of 1.
+    // measured fastest on PoCL here (bench/bench_kernels.cpp): 8 ≈ 16 ≈ 1.8× of 1.
     static constexpr int kDefaultPointsPerItem = 8;
     // Vector widths only: the (value, step) pairs of r, g, b in one 32-byte
     // row per table entry instead of three tables (kernels/gather.cl).
