@@ -16,11 +16,10 @@
 #            N = 65536 on the same scene: a stand-in, same shadow maps)
 # EXTRA      more `tsis render` options for every run
 # TSIS_BENCH_BUILD (default build-bench) and TSIS_BENCH_RESULTS override the
-# build folder and the results folder. Writes hybrid_sweep.md there.
+# build folder and the results folder; TSIS, a tsis binary already built, is
+# used instead of building one (bench/common.sh). Writes hybrid_sweep.md there.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${TSIS_BENCH_BUILD:-$root/build-bench}
-results=${TSIS_BENCH_RESULTS:-$root/bench/results}
 methods=${METHODS:-tsis hybrid mis}
 samples=${SAMPLES:-900 1600}
 scenes=${SCENES:-skin1:10 skin1:25 skin1:40 skin1:55 skin1:70 skin2:10 skin2:25 skin2:40 skin2:55 skin2:70 skimmilk:10 marble:10 cream:10}
@@ -28,15 +27,8 @@ size=${SIZE:-256}
 reference=${REFERENCE:-reference}
 extra=${EXTRA:-}
 
-cmake -S "$root" -B "$build" >/dev/null
-make -C "$build" -j2 tsis >/dev/null
-tsis="$build/tsis"
-mkdir -p "$results"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$root/bench/common.sh"
 
-# number KEY FILE: the first "KEY": number in a JSON file.
-number() { sed -n "s/.*\"$1\": *\([-0-9.eE+]*\).*/\1/p" "$2" | head -n 1; }
 # method_ms FILE: the method's own stages in a --stats file: every stage in
 # "ms" but the renderer's (upload, GL passes, hand-offs, composite) and "total".
 method_ms() {

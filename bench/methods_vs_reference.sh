@@ -12,25 +12,17 @@
 # SIZE      image width = height (default 512)
 # EXTRA     more `tsis render` options for every run
 # TSIS_BENCH_BUILD (default build-bench) and TSIS_BENCH_RESULTS override the
-# build folder and the results folder. Writes methods_vs_reference.md there.
+# build folder and the results folder; TSIS, a tsis binary already built, is
+# used instead of building one (bench/common.sh). Writes
+# methods_vs_reference.md there.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${TSIS_BENCH_BUILD:-$root/build-bench}
-results=${TSIS_BENCH_RESULTS:-$root/bench/results}
 methods=${METHODS:-tsis hierarchical}
 scenes=${SCENES:-builtin:sphere:marble:10 builtin:sphere:skin1:30 builtin:default:marble:10 builtin:default:skin1:30}
 size=${SIZE:-512}
 extra=${EXTRA:-}
 
-cmake -S "$root" -B "$build" >/dev/null
-make -C "$build" -j2 tsis >/dev/null
-tsis="$build/tsis"
-mkdir -p "$results"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-
-# number KEY FILE: the first "KEY": number in a JSON file.
-number() { sed -n "s/.*\"$1\": *\([-0-9.eE+]*\).*/\1/p" "$2" | head -n 1; }
+. "$root/bench/common.sh"
 
 out="$results/methods_vs_reference.md"
 {
