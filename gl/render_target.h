@@ -40,6 +40,10 @@ class RenderTarget {
     GLuint depth_ = 0, fbo_ = 0;
 };
 
+// Samples the bound depth texture at `target` as a shadow map: hardware depth
+// comparison (GL_LEQUAL) with bilinear filtering (PCF), clamped to the edge.
+void setShadowSampling(GLenum target);
+
 // A 2D float texture uploaded from host data (RGBA, row 0 = bottom).
 class FloatTexture {
   public:

@@ -10,14 +10,19 @@ namespace tsis {
 
 namespace {
 
-// The info log of a shader or program object, after a failed compile or link.
+// Fails with `what` and the object's info log unless its `status` (a compile
+// or link status) is true.
 template <typename GetIv, typename GetLog>
-std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+void requireStatus(GLuint object, GLenum status, GetIv getIv, GetLog getLog,
+                   const std::string& what) {
+    GLint ok = 0;
+    getIv(object, status, &ok);
+    if (ok) return;
     GLint len = 0;
     getIv(object, GL_INFO_LOG_LENGTH, &len);
     std::vector<char> log(static_cast<size_t>(len) + 1);
     getLog(object, len, nullptr, log.data());
-    return log.data();
+    checkFailed(__FILE__, __LINE__, concat(what, " failed:\n", log.data()));
 }
 
 GLuint compile(GLenum stage, const std::string& file) {
@@ -29,12 +34,8 @@ GLuint compile(GLenum stage, const std::string& file) {
     const char* text = src.c_str();
     glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok)
-        checkFailed(__FILE__, __LINE__,
-                    concat("GLSL compile of ", file, " failed:\n",
-                           infoLog(s, glGetShaderiv, glGetShaderInfoLog)));
+    requireStatus(s, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog,
+                  "GLSL compile of " + file);
     return s;
 }
 
@@ -50,12 +51,8 @@ ShaderProgram::ShaderProgram(const std::string& vertexFile, const std::string& f
     glLinkProgram(id_);
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-    if (!ok)
-        checkFailed(__FILE__, __LINE__,
-                    concat("GLSL link of ", name_, " failed:\n",
-                           infoLog(id_, glGetProgramiv, glGetProgramInfoLog)));
+    requireStatus(id_, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
+                  "GLSL link of " + name_);
 }
 
 ShaderProgram::~ShaderProgram() {
