@@ -149,12 +149,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty()) park = glm::dvec2(out.uvs[0]);
         for (int k = 0; k < 3; ++k) out.triangles[t][k] = addVertex(tri[k], park);
     }
-    out.positions.resize(source.size());
-    for (size_t v = 0; v < source.size(); ++v) out.positions[v] = mesh.positions[source[v]];
-    if (mesh.hasNormals()) {
-        out.normals.resize(source.size());
-        for (size_t v = 0; v < source.size(); ++v) out.normals[v] = mesh.normals[source[v]];
-    }
+    copySourceAttributes(mesh, source, out);
     if (stats) {
         *stats = measureAtlas(out, opt.resolution);
         stats->seconds = timer.ms() / 1000.0;

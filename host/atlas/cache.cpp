@@ -81,6 +81,17 @@ std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt) {
     return key;
 }
 
+void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceVertex, Mesh& atlas) {
+    atlas.positions.resize(sourceVertex.size());
+    for (size_t v = 0; v < sourceVertex.size(); ++v)
+        atlas.positions[v] = mesh.positions[sourceVertex[v]];
+    if (mesh.hasNormals()) {
+        atlas.normals.resize(sourceVertex.size());
+        for (size_t v = 0; v < sourceVertex.size(); ++v)
+            atlas.normals[v] = mesh.normals[sourceVertex[v]];
+    }
+}
+
 std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh, AtlasStats* stats) {
     std::ifstream in(file, std::ios::binary);
     if (!in) return std::nullopt;
@@ -122,12 +133,7 @@ std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mes
             const uint32_t v = out.triangles[t][k];
             if (v >= source.size() || source[v] != mesh.triangles[t][k]) return std::nullopt;
         }
-    out.positions.resize(source.size());
-    for (size_t v = 0; v < source.size(); ++v) out.positions[v] = mesh.positions[source[v]];
-    if (mesh.hasNormals()) {
-        out.normals.resize(source.size());
-        for (size_t v = 0; v < source.size(); ++v) out.normals[v] = mesh.normals[source[v]];
-    }
+    copySourceAttributes(mesh, source, out);
     if (stats) {
         stats->charts = h.charts;
         stats->coverage = h.coverage;

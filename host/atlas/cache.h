@@ -32,6 +32,10 @@ std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mes
 bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas,
                       const std::vector<uint32_t>& sourceVertex, size_t inputVertices, const AtlasStats& stats);
 
+// Fills the atlas' positions (and normals, when the mesh has them) from the
+// input vertex of each of its vertices.
+void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceVertex, Mesh& atlas);
+
 // buildAtlas that also returns the input vertex of every output vertex.
 Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats,
                            std::vector<uint32_t>* sourceVertex);
