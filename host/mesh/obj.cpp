@@ -124,9 +124,7 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
         // change the surface a renderer needs.
     }
     if (lineCount == 0) failIn(name, "empty file");
-    if (shortFaces)
-        note(name, concat("skipped ", shortFaces, " ", plural(shortFaces, "face", "faces"),
-                          " with fewer than 3 vertices"));
+    noteShortFaces(name, shortFaces);
     if (faceStart.empty()) failIn(name, "no faces (", pos.size(), " vertices and no triangles)");
 
     // Attributes only when every corner has one: a partly textured mesh has
@@ -149,10 +147,9 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
     std::unordered_map<Corner, uint32_t, CornerHash> index;
     index.reserve(pos.size());
     mesh.triangles.reserve(triangleCount);
-    std::vector<uint32_t> face;
     faceStart.push_back(corners.size());
     for (size_t f = 0; f + 1 < faceStart.size(); ++f) {
-        face.clear();
+        Fan fan(mesh.triangles);
         for (size_t k = faceStart[f]; k < faceStart[f + 1]; ++k) {
             Corner c = corners[k];
             if (!keepUV) c.vt = kNone;
@@ -164,10 +161,8 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
                 if (keepUV) mesh.uvs.push_back(tex[c.vt]);
                 if (keepN) mesh.normals.push_back(nrm[c.vn]);
             }
-            face.push_back(it->second);
+            fan.add(it->second);
         }
-        for (size_t k = 2; k < face.size(); ++k)  // fan
-            mesh.triangles.emplace_back(face[0], face[k - 1], face[k]);
     }
     // Vertices no face uses never became mesh vertices; say so like the
     // other formats do.

@@ -140,7 +140,7 @@ Mesh parseOFF(const std::string& text, const std::string& name) {
             ++skipped;
             continue;
         }
-        uint32_t first = 0, prev = 0;
+        Fan fan(mesh.triangles);
         for (long long c = 0; c < k; ++c) {
             long long idx = 0;
             if (!parseInt(tok[1 + c], idx))
@@ -148,15 +148,10 @@ Mesh parseOFF(const std::string& text, const std::string& name) {
             if (idx < 0 || idx >= nv)
                 failAt(name, line, "face ", f, ": vertex index ", idx, " out of range (", nv,
                        " vertices)");
-            const uint32_t v = static_cast<uint32_t>(idx);
-            if (c == 0) first = v;
-            if (c >= 2) mesh.triangles.emplace_back(first, prev, v);
-            prev = v;
+            fan.add(static_cast<uint32_t>(idx));
         }
     }
-    if (skipped)
-        note(name, concat("skipped ", skipped, " ", plural(skipped, "face", "faces"),
-                          " with fewer than 3 vertices"));
+    noteShortFaces(name, skipped);
     repairMesh(mesh);
     return mesh;
 }

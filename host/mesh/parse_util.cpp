@@ -123,6 +123,12 @@ void note(const std::string& name, const std::string& what) {
     std::fprintf(stderr, "tsis: note: mesh '%s': %s\n", name.c_str(), what.c_str());
 }
 
+void noteShortFaces(const std::string& name, size_t count) {
+    if (count)
+        note(name, concat("skipped ", count, " ", plural(count, "face", "faces"),
+                          " with fewer than 3 vertices"));
+}
+
 unsigned long long minBytes(unsigned long long count, unsigned long long bytesEach) {
     if (bytesEach != 0 && count > std::numeric_limits<unsigned long long>::max() / bytesEach)
         return std::numeric_limits<unsigned long long>::max();

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,6 +62,26 @@ unsigned long long minBytes(unsigned long long count, unsigned long long bytesEa
 
 // One repair note on stderr: "tsis: note: mesh 'NAME': WHAT".
 void note(const std::string& name, const std::string& what);
+// The note for `count` faces with fewer than 3 vertices (none when 0).
+void noteShortFaces(const std::string& name, size_t count);
+
+// A polygon as a fan of triangles (corner 0, k − 1, k), its corners added in
+// order; fewer than 3 corners add nothing.
+class Fan {
+  public:
+    explicit Fan(std::vector<glm::uvec3>& triangles) : triangles_(triangles) {}
+    void add(uint32_t v) {
+        if (corners_ == 0) first_ = v;
+        if (corners_ >= 2) triangles_.emplace_back(first_, prev_, v);
+        prev_ = v;
+        ++corners_;
+    }
+
+  private:
+    std::vector<glm::uvec3>& triangles_;
+    uint32_t first_ = 0, prev_ = 0;
+    size_t corners_ = 0;
+};
 inline const char* plural(size_t n, const char* one, const char* many) {
     return n == 1 ? one : many;
 }

@@ -362,15 +362,12 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
                         continue;
                     }
                     const unsigned long long n = data.listCount(e.props[k]);
-                    uint32_t first = 0, prev = 0;
+                    Fan fan(mesh.triangles);
                     for (unsigned long long c = 0; c < n; ++c) {
                         const double x = data.read(e.props[k].item);
                         if (!(x >= 0.0 && x < static_cast<double>(nv)) || std::floor(x) != x)
                             data.failHere("vertex index ", x, " out of range (", nv, " vertices)");
-                        const uint32_t idx = static_cast<uint32_t>(x);
-                        if (c == 0) first = idx;
-                        if (c >= 2) mesh.triangles.emplace_back(first, prev, idx);
-                        prev = idx;
+                        fan.add(static_cast<uint32_t>(x));
                     }
                     shortFaces += n < 3;
                 }
@@ -381,9 +378,7 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
         doneV = doneV || &e == vertex;
         doneF = doneF || &e == face;
     }
-    if (shortFaces)
-        note(name, concat("skipped ", shortFaces, " ", plural(shortFaces, "face", "faces"),
-                          " with fewer than 3 vertices"));
+    noteShortFaces(name, shortFaces);
     repairMesh(mesh);
     return mesh;
 }
