@@ -254,10 +254,10 @@ struct Placed {
     Outline outline;
 };
 
-// Packs all charts at `scale` into W×H; false when one does not fit.
-bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
-            const std::vector<size_t>& order, double scale, int W, int H, int dilate, std::vector<Placed>& placed,
-            double* footprint) {
+// Packs all charts at `scale` into W×H in one order; false when one does not fit.
+bool packInOrder(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
+                 const std::vector<size_t>& order, double scale, int W, int H, int dilate,
+                 std::vector<Placed>& placed, double* footprint) {
     Occupancy occ(W, H);
     placed.assign(charts.size(), Placed());
     long long used = 0;
@@ -291,6 +291,16 @@ bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<P
     return true;
 }
 
+// Packs all charts at `scale`, trying each order until one fits; false when
+// none does.
+bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
+            const std::vector<std::vector<size_t>>& orders, double scale, int W, int H, int dilate,
+            std::vector<Placed>& placed, double* footprint) {
+    for (const std::vector<size_t>& order : orders)
+        if (packInOrder(pts, charts, order, scale, W, H, dilate, placed, footprint)) return true;
+    return false;
+}
+
 }  // namespace
 
 PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels, int threads) {
@@ -314,20 +324,28 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
             totalArea += 0.5 * std::abs(cross(a, b, d));
         }
     }
-    // Largest first, by the short side of the bounding rectangle (measured
-    // better than by rectangle or chart area).
-    std::vector<double> shortSide(charts.size());
+    // Largest first, in two orders (a density fits when either packs): by
+    // long side × short side² of the bounding rectangle, then by its area.
+    // Measured better than by short side, long side or chart area alone, and
+    // than either order by itself.
+    std::vector<double> key1(charts.size()), key2(charts.size());
     for (size_t c = 0; c < charts.size(); ++c) {
         glm::dvec2 lo(INFINITY), hi(-INFINITY);
         for (glm::dvec2 p : pts[c]) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
         }
-        shortSide[c] = std::min(hi.x - lo.x, hi.y - lo.y);
+        const double w = hi.x - lo.x, h = hi.y - lo.y, shortSide = std::min(w, h);
+        key1[c] = std::max(w, h) * shortSide * shortSide;
+        key2[c] = w * h;
     }
-    std::vector<size_t> order(charts.size());
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return shortSide[a] > shortSide[b]; });
+    std::vector<std::vector<size_t>> orders;
+    for (const std::vector<double>* key : {&key1, &key2}) {
+        std::vector<size_t> order(charts.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return (*key)[a] > (*key)[b]; });
+        orders.push_back(std::move(order));
+    }
 
     // Search on the density: lo fits, hi does not; two probes per round, run
     // side by side when there are two threads.
@@ -341,7 +359,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     double lo = 0, hi = INFINITY;
     Probe best;
     const double s0 = std::sqrt(0.7 * double(W) * H / std::max(totalArea, 1e-300));
-    auto run = [&](Probe& p) { p.fits = packAt(pts, charts, order, p.scale, W, H, dilate, p.placed, &p.footprint); };
+    auto run = [&](Probe& p) { p.fits = packAt(pts, charts, orders, p.scale, W, H, dilate, p.placed, &p.footprint); };
     auto runBoth = [&](Probe (&probe)[2]) {
         if (parallel) {
             std::thread other(run, std::ref(probe[1]));
@@ -352,7 +370,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
             run(probe[1]);
         }
     };
-    for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.01); ++round) {
+    for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.003); ++round) {
         Probe probe[2];
         if (lo == 0 && hi == INFINITY) probe[0].scale = s0, probe[1].scale = 0.88 * s0;
         else if (lo == 0) probe[0].scale = 0.88 * hi, probe[1].scale = 0.77 * hi;
