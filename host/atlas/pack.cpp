@@ -251,21 +251,48 @@ bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int&
 
 struct Placed {
     int x = 0, y = 0;
-    Outline outline;
+    int orientation = 0;
+    glm::dvec2 shift;  // the outline's
 };
 
-// Packs all charts at `scale` into W×H in one order; false when one does not fit.
-bool packInOrder(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
-                 const std::vector<size_t>& order, double scale, int W, int H, int dilate,
-                 std::vector<Placed>& placed, double* footprint) {
+// The outlines of every chart in its four orientations at one density, made
+// when first asked for (shared by the orders tried at that density).
+class Outlines {
+  public:
+    Outlines(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts, double scale,
+             int dilate)
+        : pts_(pts), charts_(charts), scale_(scale), dilate_(dilate), made_(4 * charts.size(), 0),
+          outlines_(4 * charts.size()) {}
+    const Outline& get(size_t c, int o) {
+        const size_t i = 4 * c + size_t(o);
+        if (!made_[i]) {
+            outlines_[i] = makeOutline(pts_[c], *charts_[c].triangles, scale_, o, dilate_);
+            made_[i] = 1;
+        }
+        return outlines_[i];
+    }
+
+  private:
+    const std::vector<std::vector<glm::dvec2>>& pts_;
+    const std::vector<PackChart>& charts_;
+    double scale_;
+    int dilate_;
+    std::vector<char> made_;
+    std::vector<Outline> outlines_;
+};
+
+// Packs all charts into W×H in one order; false when one does not fit.
+bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, int H, std::vector<Placed>& placed,
+                 double* footprint) {
     Occupancy occ(W, H);
-    placed.assign(charts.size(), Placed());
+    placed.assign(order.size(), Placed());
     long long used = 0;
     for (size_t c : order) {
         int bestMid = INT_MAX;
-        Placed best;
+        const Outline* best = nullptr;
+        int bestX = 0, bestY = 0;
         for (int o = 0; o < 4; ++o) {
-            Outline ol = makeOutline(pts[c], *charts[c].triangles, scale, o, dilate);
+            const Outline& ol = outlines.get(c, o);
             if (ol.w > W || ol.h > H) continue;
             // The lowest middle row wins (measured a little better than the
             // lowest top or the lowest bottom); only y < bestMid - h/2 can.
@@ -273,19 +300,19 @@ bool packInOrder(const std::vector<std::vector<glm::dvec2>>& pts, const std::vec
             int x, y;
             if (yLimit >= 0 && firstFit(occ, ol, yLimit, x, y)) {
                 bestMid = y + ol.h / 2;
-                best.x = x;
-                best.y = y;
-                best.outline = std::move(ol);
+                bestX = x;
+                bestY = y;
+                best = &ol;
             }
         }
-        if (bestMid == INT_MAX) return false;
-        const Outline& ol = best.outline;
+        if (!best) return false;
+        const Outline& ol = *best;
         for (int r = 0; r < ol.h; ++r) {
-            for (auto [a, b] : ol.runs[r]) occ.fill(best.y + r, best.x + a, best.x + b);
-            if (!ol.runs[r].empty()) occ.updateFree(best.y + r);
+            for (auto [a, b] : ol.runs[r]) occ.fill(bestY + r, bestX + a, bestX + b);
+            if (!ol.runs[r].empty()) occ.updateFree(bestY + r);
         }
         used += ol.texels;
-        placed[c] = std::move(best);
+        placed[c] = {bestX, bestY, ol.orientation, ol.shift};
     }
     if (footprint) *footprint = double(used) / (double(W) * H);
     return true;
@@ -296,8 +323,9 @@ bool packInOrder(const std::vector<std::vector<glm::dvec2>>& pts, const std::vec
 bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
             const std::vector<std::vector<size_t>>& orders, double scale, int W, int H, int dilate,
             std::vector<Placed>& placed, double* footprint) {
+    Outlines outlines(pts, charts, scale, dilate);
     for (const std::vector<size_t>& order : orders)
-        if (packInOrder(pts, charts, order, scale, W, H, dilate, placed, footprint)) return true;
+        if (packInOrder(outlines, order, W, H, placed, footprint)) return true;
     return false;
 }
 
@@ -398,7 +426,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
         const Placed& p = bestPlaced[c];
         const glm::dvec2 origin(p.x + offset, p.y + offset);
         for (glm::dvec2 q : pts[c]) {
-            const glm::dvec2 frame = quarterTurns(q, p.outline.orientation) * lo + p.outline.shift;
+            const glm::dvec2 frame = quarterTurns(q, p.orientation) * lo + p.shift;
             result.uv[c].push_back((frame + origin) / double(resolution));
         }
     }
