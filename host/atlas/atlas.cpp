@@ -65,6 +65,10 @@ void validateInput(const Mesh& mesh, const AtlasOptions& opt) {
 
 namespace atlas {
 
+// Charts longer than this times their width are cut (see splitElongatedCharts):
+// at 3, coverage at 1024² rises from 0.61-0.72 to 0.66-0.76 on the data meshes.
+constexpr double kMaxChartAspect = 3;
+
 Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats,
                            std::vector<uint32_t>* sourceVertex) {
     const Timer timer;
@@ -91,8 +95,9 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;
     copt.threads = opt.threads;
-    const std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
+    std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
     stage("charts parameterised");
+    splitElongatedCharts(charts, kMaxChartAspect);
 
     std::vector<PackChart> packIn;
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});

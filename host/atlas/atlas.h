@@ -12,6 +12,8 @@
 //             parallel; validated here: no flipped triangle, a border that does
 //             not cross itself, area-weighted RMS of log(A3D/AUV) ≤
 //             maxChartDistortion — a chart that fails is split in two;
+//   elongate  a chart more than 3 times longer than wide (smallest bounding
+//             rectangle) cut across its middle into connected pieces, UVs kept;
 //   pack      charts scaled to one texel density and packed as dilated
 //             conservative rasters at `resolution` (atlas/pack.h).
 // Degenerate triangles (repeated index or no area) get their own vertices,

@@ -57,6 +57,12 @@ struct ChartOptions {
 std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
                               const ChartOptions& opt);
 
+// Charts whose smallest bounding rectangle is more than maxAspect times longer
+// than wide cut in two across the middle of its long side (triangles by
+// centroid), each half split into its vertex-connected pieces, recursively.
+// UVs are kept (so distortion is unchanged); long thin charts pack badly.
+void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect);
+
 // Label post-processing: majority filters over edge neighbours and over the
 // faces around a face's vertices (which removes the one- and two-triangle-wide
 // spikes VSA leaves on fine meshes), then connected pieces smaller than

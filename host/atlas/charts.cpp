@@ -27,6 +27,7 @@
 #include <glm/geometric.hpp>
 
 #include "atlas/chart.h"
+#include "atlas/pack.h"
 #include "util/error.h"
 #include "util/progress.h"
 
@@ -639,6 +640,87 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std:
     std::sort(charts.begin(), charts.end(),
               [](const Chart& a, const Chart& b) { return a.mesh.faces.front() < b.mesh.faces.front(); });
     return charts;
+}
+
+namespace {
+
+// The triangles `tris` of chart `c` as charts, one per piece connected through
+// shared vertices (same UVs, local vertices renumbered).
+void appendPieces(const Chart& c, const std::vector<uint32_t>& tris, std::vector<Chart>& out) {
+    std::vector<uint32_t> parent(c.uv.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (uint32_t t : tris) {
+        const Tri& tri = c.mesh.triangles[t];
+        for (int k = 1; k < 3; ++k) {
+            const uint32_t a = find(uint32_t(tri[0])), b = find(uint32_t(tri[k]));
+            parent[std::max(a, b)] = std::min(a, b);
+        }
+    }
+    std::unordered_map<uint32_t, size_t> pieceOf;  // root -> index in out
+    std::vector<int> local(c.uv.size(), -1);
+    for (uint32_t t : tris) {
+        const uint32_t root = find(uint32_t(c.mesh.triangles[t][0]));
+        auto [it, added] = pieceOf.emplace(root, out.size());
+        if (added) out.emplace_back();
+        Chart& p = out[it->second];
+        Tri tri = c.mesh.triangles[t];
+        for (int& v : tri) {
+            if (local[v] < 0) {
+                local[v] = int(p.uv.size());
+                p.uv.push_back(c.uv[v]);
+                p.mesh.positions.push_back(c.mesh.positions[v]);
+                p.mesh.sourceVertex.push_back(c.mesh.sourceVertex[v]);
+            }
+            v = local[v];
+        }
+        p.mesh.triangles.push_back(tri);
+        p.mesh.faces.push_back(c.mesh.faces[t]);
+    }
+}
+
+}  // namespace
+
+void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect) {
+    std::vector<Chart> done;
+    std::deque<Chart> todo(std::make_move_iterator(charts.begin()), std::make_move_iterator(charts.end()));
+    while (!todo.empty()) {
+        Chart c = std::move(todo.front());
+        todo.pop_front();
+        const glm::dvec2 r = minAreaRectRotation(c.uv);
+        std::vector<double> along(c.uv.size());
+        double lo = INFINITY, hi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+        for (size_t i = 0; i < c.uv.size(); ++i) {
+            const glm::dvec2 p = c.uv[i];
+            along[i] = r.x * p.x + r.y * p.y;
+            const double y = -r.y * p.x + r.x * p.y;
+            lo = std::min(lo, along[i]);
+            hi = std::max(hi, along[i]);
+            ylo = std::min(ylo, y);
+            yhi = std::max(yhi, y);
+        }
+        if (c.mesh.triangles.size() < 2 || !(hi - lo > maxAspect * (yhi - ylo))) {
+            done.push_back(std::move(c));
+            continue;
+        }
+        const double mid = 0.5 * (lo + hi);
+        std::vector<uint32_t> half[2];
+        for (size_t t = 0; t < c.mesh.triangles.size(); ++t) {
+            const Tri& tri = c.mesh.triangles[t];
+            half[(along[tri[0]] + along[tri[1]] + along[tri[2]]) / 3 < mid ? 0 : 1].push_back(uint32_t(t));
+        }
+        if (half[0].empty() || half[1].empty()) {
+            done.push_back(std::move(c));
+            continue;
+        }
+        std::vector<Chart> pieces;
+        for (const auto& h : half) appendPieces(c, h, pieces);
+        for (Chart& p : pieces) todo.push_back(std::move(p));
+    }
+    charts = std::move(done);
 }
 
 }  // namespace tsis::atlas

@@ -34,9 +34,9 @@ std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> p) {
     return h;
 }
 
-// Rotation (cos, sin) that turns the chart's smallest-area bounding rectangle
-// axis-aligned, wider than tall.
-glm::dvec2 bestRotation(const std::vector<glm::dvec2>& uv) {
+}  // namespace
+
+glm::dvec2 minAreaRectRotation(const std::vector<glm::dvec2>& uv) {
     const std::vector<glm::dvec2> hull = convexHull(uv);
     glm::dvec2 best(1, 0);
     double bestArea = INFINITY, bestW = 0, bestH = 0;
@@ -62,6 +62,8 @@ glm::dvec2 bestRotation(const std::vector<glm::dvec2>& uv) {
     if (bestH > bestW) best = glm::dvec2(-best.y, best.x);  // a quarter turn more
     return best;
 }
+
+namespace {
 
 // A chart at one density and orientation: its dilated conservative raster as
 // runs of texels per row.
@@ -345,7 +347,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     std::vector<std::vector<glm::dvec2>> pts(charts.size());
     double totalArea = 0;
     for (size_t c = 0; c < charts.size(); ++c) {
-        const glm::dvec2 r = bestRotation(*charts[c].uv);
+        const glm::dvec2 r = minAreaRectRotation(*charts[c].uv);
         for (glm::dvec2 p : *charts[c].uv) pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
         for (const Tri& t : *charts[c].triangles) {
             const glm::dvec2 a = pts[c][t[0]], b = pts[c][t[1]], d = pts[c][t[2]];

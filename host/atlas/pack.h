@@ -35,6 +35,10 @@ struct PackResult {
     double footprint = 0;                     // fraction of the square under dilated rasters
 };
 
+// Rotation (cos, sin) that turns the smallest-area bounding rectangle of the
+// points axis-aligned, wider than tall: p ↦ (c·x + s·y, −s·x + c·y).
+glm::dvec2 minAreaRectRotation(const std::vector<glm::dvec2>& uv);
+
 // threads: 2 or more runs two trial densities side by side.
 PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels, int threads = 1);
 
