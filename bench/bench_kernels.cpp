@@ -13,6 +13,7 @@
 #include "bench_common.h"
 #include "cl/gather.h"
 #include "cl/importance_sampler.h"
+#include "cl/launch.h"
 #include "util/progress.h"
 
 namespace tsis::bench {
@@ -57,12 +58,7 @@ int run(const BenchArgs& a) {
     cl::Buffer fmaOut(cl.context(), CL_MEM_WRITE_ONLY, fmaItems * sizeof(float));
     cl::Kernel fma16 = cl.kernel("bench_peak.cl", "bench_fma16");
     cl::Kernel fma8 = cl.kernel("bench_peak.cl", "bench_fma8");
-    for (cl::Kernel* k : {&fma16, &fma8}) {
-        k->setArg(0, fmaOut);
-        k->setArg(1, fmaIters);
-        k->setArg(2, 0.999f);
-        k->setArg(3, 1e-3f);
-    }
+    for (cl::Kernel* k : {&fma16, &fma8}) setKernelArgs(*k, fmaOut, fmaIters, 0.999f, 1e-3f);
     // Bandwidth: 128 MiB buffers.
     const size_t bwBytes = size_t(128) << 20, per = 256;
     const size_t bwItems = bwBytes / 64 / per;
@@ -70,13 +66,9 @@ int run(const BenchArgs& a) {
         bwOut(cl.context(), CL_MEM_READ_WRITE, bwBytes);
     q.enqueueFillBuffer(bwIn, 1.0f, 0, bwBytes);
     cl::Kernel copy = cl.kernel("bench_peak.cl", "bench_copy");
-    copy.setArg(0, bwIn);
-    copy.setArg(1, bwOut);
-    copy.setArg(2, static_cast<int>(per));
+    setKernelArgs(copy, bwIn, bwOut, static_cast<int>(per));
     cl::Kernel readSum = cl.kernel("bench_peak.cl", "bench_read_sum");
-    readSum.setArg(0, bwIn);
-    readSum.setArg(1, bwOut);
-    readSum.setArg(2, static_cast<int>(per));
+    setKernelArgs(readSum, bwIn, bwOut, static_cast<int>(per));
 
     // Gather inputs: points over a hemisphere, samples over a sphere of 5 mm,
     // a table covering the whole diameter.

@@ -192,4 +192,10 @@ double eventMilliseconds(const cl::Event& e) {
     return end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
 }
 
+double eventMilliseconds(const std::vector<cl::Event>& events) {
+    double ms = 0.0;
+    for (const cl::Event& e : events) ms += eventMilliseconds(e);
+    return ms;
+}
+
 }  // namespace tsis

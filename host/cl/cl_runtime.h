@@ -65,4 +65,7 @@ class ClRuntime {
 // end − start of a finished (or finishing: waits) command, from profiling info.
 double eventMilliseconds(const cl::Event& e);
 
+// The sum of eventMilliseconds over a pass' commands.
+double eventMilliseconds(const std::vector<cl::Event>& events);
+
 }  // namespace tsis

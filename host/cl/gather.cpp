@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cl/launch.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -11,10 +12,6 @@ namespace {
 // work-items. 4, 16, 64 and 256 measured the same within noise.
 constexpr size_t kLocalScalar = 64;
 constexpr size_t kLocalVector = 4;
-
-size_t roundUp(size_t n, size_t m) {
-    return (n + m - 1) / m * m;
-}
 
 }  // namespace
 
@@ -52,31 +49,19 @@ void Gatherer::run(const cl::Buffer& points, int count, const cl::Buffer& sample
                                                                        : 3 * sizeof(cl_float2)));
             splitEntries_ = info.size;
         }
-        split_.setArg(0, table);
-        split_.setArg(1, info);
-        split_.setArg(2, splitTable_);
+        setKernelArgs(split_, table, info, splitTable_);
         events_.emplace_back();
-        q.enqueueNDRangeKernel(split_, cl::NullRange, cl::NDRange(roundUp(info.size, 64)),
-                               cl::NDRange(64), nullptr, &events_.back());
+        enqueue1D(q, split_, info.size, 64, &events_.back());
         local = kLocalVector;
     }
-    gather_.setArg(0, points);
-    gather_.setArg(1, count);
-    gather_.setArg(2, samples);
-    gather_.setArg(3, n);
-    gather_.setArg(4, width_ > 1 ? splitTable_ : table);
-    gather_.setArg(5, info);
-    gather_.setArg(6, out);
+    setKernelArgs(gather_, points, count, samples, n, width_ > 1 ? splitTable_ : table, info, out);
     const size_t items = (size_t(count) + width_ - 1) / width_;
     events_.emplace_back();
-    q.enqueueNDRangeKernel(gather_, cl::NullRange, cl::NDRange(roundUp(items, local)),
-                           cl::NDRange(local), nullptr, &events_.back());
+    enqueue1D(q, gather_, items, local, &events_.back());
 }
 
 double Gatherer::lastMs() const {
-    double ms = 0.0;
-    for (const cl::Event& e : events_) ms += eventMilliseconds(e);
-    return ms;
+    return eventMilliseconds(events_);
 }
 
 }  // namespace tsis

@@ -2,6 +2,7 @@
 
 #include <bit>
 
+#include "cl/launch.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -10,10 +11,6 @@ namespace {
 // One fixed work-group size for every launch: PoCL compiles a kernel again for
 // each new local size, and the global sizes here vary with res and n.
 constexpr size_t kLocal = 64;
-
-cl::NDRange roundedUp(size_t n) {
-    return cl::NDRange((n + kLocal - 1) / kLocal * kLocal);
-}
 
 size_t bufferBytes(const cl::Buffer& b) {
     return b.getInfo<CL_MEM_SIZE>();
@@ -62,20 +59,14 @@ void ImportanceSampler::buildPyramid(const cl::Buffer& flux, int res) {
     pyramidEvents_.assign(levels + 1, cl::Event());
 
     const int count = res * res;
-    luminance_.setArg(0, flux);
-    luminance_.setArg(1, count);
-    luminance_.setArg(2, pyramid_);
-    q.enqueueNDRangeKernel(luminance_, cl::NullRange, roundedUp(count), cl::NDRange(kLocal),
-                           nullptr, &pyramidEvents_[0]);
+    setKernelArgs(luminance_, flux, count, pyramid_);
+    enqueue1D(q, luminance_, size_t(count), kLocal, &pyramidEvents_[0]);
     // In-order queue: each level sees the one below it finished.
     for (int k = 1; k <= levels; ++k) {
         const int dstRes = res >> k;
-        reduce_.setArg(0, pyramid_);
-        reduce_.setArg(1, static_cast<cl_int>(levelOffset(res, k - 1)));
-        reduce_.setArg(2, static_cast<cl_int>(levelOffset(res, k)));
-        reduce_.setArg(3, dstRes);
-        q.enqueueNDRangeKernel(reduce_, cl::NullRange, roundedUp(size_t(dstRes) * dstRes),
-                               cl::NDRange(kLocal), nullptr, &pyramidEvents_[k]);
+        setKernelArgs(reduce_, pyramid_, static_cast<cl_int>(levelOffset(res, k - 1)),
+                      static_cast<cl_int>(levelOffset(res, k)), dstRes);
+        enqueue1D(q, reduce_, size_t(dstRes) * dstRes, kLocal, &pyramidEvents_[k]);
     }
 }
 
@@ -103,21 +94,13 @@ void ImportanceSampler::drawWithOffset(const cl::Buffer& flux, const cl::Buffer&
     drawEvent_ = cl::Event();
     if (n == 0) return;
     TSIS_CHECK_GE(bufferBytes(samples), size_t(n) * sizeof(TsisSample));
-    draw_.setArg(0, pyramid_);
-    draw_.setArg(1, flux);
-    draw_.setArg(2, position);
-    draw_.setArg(3, static_cast<cl_int>(std::countr_zero(static_cast<unsigned>(res))));
-    draw_.setArg(4, n);
-    draw_.setArg(5, xi);
-    draw_.setArg(6, samples);
-    cl_.queue().enqueueNDRangeKernel(draw_, cl::NullRange, roundedUp(n), cl::NDRange(kLocal),
-                                     nullptr, &drawEvent_);
+    setKernelArgs(draw_, pyramid_, flux, position,
+                  static_cast<cl_int>(std::countr_zero(static_cast<unsigned>(res))), n, xi, samples);
+    enqueue1D(cl_.queue(), draw_, size_t(n), kLocal, &drawEvent_);
 }
 
 double ImportanceSampler::lastPyramidMs() const {
-    double ms = 0.0;
-    for (const cl::Event& e : pyramidEvents_) ms += eventMilliseconds(e);
-    return ms;
+    return eventMilliseconds(pyramidEvents_);
 }
 
 double ImportanceSampler::lastDrawMs() const {

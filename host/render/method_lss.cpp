@@ -20,6 +20,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "cl/launch.h"
 #include "physics/dipole.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -28,10 +29,6 @@ namespace tsis {
 namespace {
 
 constexpr size_t kLocal = 64;  // fixed: each new local size compiles again under PoCL
-
-size_t roundUp(size_t n, size_t m) {
-    return (n + m - 1) / m * m;
-}
 
 }  // namespace
 
@@ -108,17 +105,11 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                            ea_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
                            surfaceCapacity_ = pixels;
                        }
-                       prepare_.setArg(0, ctx.gbufferPosition);
-                       prepare_.setArg(1, ctx.gbufferNormal);
-                       prepare_.setArg(2, ctx.gbufferIrradiance);
-                       prepare_.setArg(3, static_cast<cl_int>(pixels));
-                       prepare_.setArg(4, camera(ctx.scene->camera, ctx.height));
-                       prepare_.setArg(5, pos_);
-                       prepare_.setArg(6, ea_);
+                       setKernelArgs(prepare_, ctx.gbufferPosition, ctx.gbufferNormal,
+                                     ctx.gbufferIrradiance, static_cast<cl_int>(pixels),
+                                     camera(ctx.scene->camera, ctx.height), pos_, ea_);
                        cl::Event e;
-                       cl_.queue().enqueueNDRangeKernel(prepare_, cl::NullRange,
-                                                        cl::NDRange(roundUp(pixels, kLocal)),
-                                                        cl::NDRange(kLocal), nullptr, &e);
+                       enqueue1D(cl_.queue(), prepare_, pixels, kLocal, &e);
                        ctx.stats->addStage("lss_prepare", eventMilliseconds(e));
                    },
                    true});
@@ -142,26 +133,13 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
              }
              cl_.queue().enqueueWriteBuffer(pixels_, CL_TRUE, 0, bytes, ctx.pointPixel.data());
              ctx.stats->addStage("lss_upload", t.ms(), static_cast<long long>(bytes));
-             int a = 0;
-             gather_.setArg(a++, pixels_);
-             gather_.setArg(a++, static_cast<cl_int>(count));
-             gather_.setArg(a++, pos_);
-             gather_.setArg(a++, ea_);
-             gather_.setArg(a++, static_cast<cl_int>(ctx.width));
-             gather_.setArg(a++, static_cast<cl_int>(ctx.height));
-             gather_.setArg(a++, dirs_);
-             gather_.setArg(a++, static_cast<cl_int>(m));
-             gather_.setArg(a++, radii_);
-             gather_.setArg(a++, static_cast<cl_int>(kRadiusEntries));
-             gather_.setArg(a++, rd_);
-             gather_.setArg(a++, table_.table().info);
-             gather_.setArg(a++, camera(ctx.scene->camera, ctx.height));
-             gather_.setArg(a++, static_cast<cl_uint>(ctx.options->seed));
-             gather_.setArg(a++, ctx.radiosity);
+             setKernelArgs(gather_, pixels_, static_cast<cl_int>(count), pos_, ea_,
+                           static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
+                           static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries), rd_,
+                           table_.table().info, camera(ctx.scene->camera, ctx.height),
+                           static_cast<cl_uint>(ctx.options->seed), ctx.radiosity);
              cl::Event e;
-             cl_.queue().enqueueNDRangeKernel(
-                 gather_, cl::NullRange, cl::NDRange(roundUp(static_cast<size_t>(count), kLocal)),
-                 cl::NDRange(kLocal), nullptr, &e);
+             enqueue1D(cl_.queue(), gather_, static_cast<size_t>(count), kLocal, &e);
              ctx.stats->addStage("lss_gather", eventMilliseconds(e));
          },
          true});

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "cl/launch.h"
 #include "render/light_map_info.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -11,10 +12,6 @@ namespace tsis {
 namespace {
 
 constexpr size_t kLocal = 64;
-
-size_t roundUp(size_t n, size_t m) {
-    return (n + m - 1) / m * m;
-}
 
 }  // namespace
 
@@ -70,28 +67,16 @@ void LtsmMethod::addLocalPasses(FrameGraph& graph, FrameContext& ctx, const Keye
              events_.clear();
              if (ctx.pointCount > 0) {
                  for (size_t l = 0; l < lights; ++l) {
-                     int a = 0;
-                     kernel_.setArg(a++, ctx.points);
-                     kernel_.setArg(a++, ctx.pointCount);
-                     kernel_.setArg(a++, lightMapInfo((*ctx.lights)[l], ctx.lightResolution));
-                     kernel_.setArg(a++, ctx.lightFlux[l]);
-                     kernel_.setArg(a++, ctx.lightPosition[l]);
-                     kernel_.setArg(a++, patternBuffer_);
-                     kernel_.setArg(a++, n);
-                     kernel_.setArg(a++, table_);
-                     kernel_.setArg(a++, tableHost_.info);
-                     kernel_.setArg(a++, (accumulate || l > 0) ? 1 : 0);
-                     kernel_.setArg(a++, out);
+                     setKernelArgs(kernel_, ctx.points, ctx.pointCount,
+                                   lightMapInfo((*ctx.lights)[l], ctx.lightResolution),
+                                   ctx.lightFlux[l], ctx.lightPosition[l], patternBuffer_, n, table_,
+                                   tableHost_.info, (accumulate || l > 0) ? 1 : 0, out);
                      events_.emplace_back();
-                     cl_.queue().enqueueNDRangeKernel(
-                         kernel_, cl::NullRange,
-                         cl::NDRange(roundUp(static_cast<size_t>(ctx.pointCount), kLocal)),
-                         cl::NDRange(kLocal), nullptr, &events_.back());
+                     enqueue1D(cl_.queue(), kernel_, static_cast<size_t>(ctx.pointCount), kLocal,
+                               &events_.back());
                  }
              }
-             double ms = 0.0;
-             for (const cl::Event& e : events_) ms += eventMilliseconds(e);
-             ctx.stats->addStage(statPrefix + "ltsm", ms);
+             ctx.stats->addStage(statPrefix + "ltsm", eventMilliseconds(events_));
              ctx.stats->set(statPrefix + "rd_evaluations",
                             static_cast<double>(ctx.pointCount) * n * static_cast<double>(lights));
              ctx.stats->set(statPrefix + "ltsm_samples", n);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cl/launch.h"
 #include "render/light_map_info.h"
 #include "render/profiles.h"
 #include "render/radial_importance.h"
@@ -15,16 +16,6 @@ namespace {
 
 constexpr size_t kLocal = 64;
 static_assert(kMaxLights <= TSIS_MIS_MAX_LIGHTS, "the gather keeps every light's projection");
-
-size_t roundUp(size_t n, size_t m) {
-    return (n + m - 1) / m * m;
-}
-
-double totalMs(const std::vector<cl::Event>& events) {
-    double ms = 0.0;
-    for (const cl::Event& e : events) ms += eventMilliseconds(e);
-    return ms;
-}
 
 }  // namespace
 
@@ -104,14 +95,9 @@ void MisMethod::prepareMaps(FrameContext& ctx) {
         q.enqueueCopyBuffer(ctx.lightPosition[l], position_, 0, l * per, per, nullptr,
                             &mapEvents_.back());
     }
-    texels_.setArg(0, flux_);
-    texels_.setArg(1, position_);
-    texels_.setArg(2, info_);
-    texels_.setArg(3, irradiance_);
+    setKernelArgs(texels_, flux_, position_, info_, irradiance_);
     mapEvents_.emplace_back();
-    q.enqueueNDRangeKernel(texels_, cl::NullRange,
-                           cl::NDRange(roundUp(lights * static_cast<size_t>(res) * res, kLocal)),
-                           cl::NDRange(kLocal), nullptr, &mapEvents_.back());
+    enqueue1D(q, texels_, lights * static_cast<size_t>(res) * res, kLocal, &mapEvents_.back());
 }
 
 void MisMethod::gather(FrameContext& ctx) {
@@ -124,39 +110,14 @@ void MisMethod::gather(FrameContext& ctx) {
     info_.n_dist = ctx.options->misDistanceSamples;
     info_.tex_scale = sumY > 0.0 ? static_cast<float>(n / sumY) : 0.0f;
     info_.seed = ctx.options->seed;
-    int a = 0;
-    prepare_.setArg(a++, samples_);
-    prepare_.setArg(a++, info_);
-    prepare_.setArg(a++, lightInfos_);
-    prepare_.setArg(a++, position_);
-    prepare_.setArg(a++, irradiance_);
-    prepare_.setArg(a++, seen_);
-    prepare_.setArg(a++, texDensity_);
+    setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_, texDensity_);
     gatherEvents_.emplace_back();
-    q.enqueueNDRangeKernel(prepare_, cl::NullRange,
-                           cl::NDRange(roundUp(static_cast<size_t>(n), kLocal)),
-                           cl::NDRange(kLocal), nullptr, &gatherEvents_.back());
+    enqueue1D(q, prepare_, static_cast<size_t>(n), kLocal, &gatherEvents_.back());
     if (ctx.pointCount == 0) return;
-    a = 0;
-    gather_.setArg(a++, ctx.points);
-    gather_.setArg(a++, ctx.pointCount);
-    gather_.setArg(a++, info_);
-    gather_.setArg(a++, samples_);
-    gather_.setArg(a++, seen_);
-    gather_.setArg(a++, texDensity_);
-    gather_.setArg(a++, lightInfos_);
-    gather_.setArg(a++, flux_);
-    gather_.setArg(a++, position_);
-    gather_.setArg(a++, irradiance_);
-    gather_.setArg(a++, radii_);
-    gather_.setArg(a++, q_);
-    gather_.setArg(a++, table_);
-    gather_.setArg(a++, tableHost_.info);
-    gather_.setArg(a++, ctx.radiosity);
+    setKernelArgs(gather_, ctx.points, ctx.pointCount, info_, samples_, seen_, texDensity_, lightInfos_,
+                  flux_, position_, irradiance_, radii_, q_, table_, tableHost_.info, ctx.radiosity);
     gatherEvents_.emplace_back();
-    q.enqueueNDRangeKernel(gather_, cl::NullRange,
-                           cl::NDRange(roundUp(static_cast<size_t>(ctx.pointCount), kLocal)),
-                           cl::NDRange(kLocal), nullptr, &gatherEvents_.back());
+    enqueue1D(q, gather_, static_cast<size_t>(ctx.pointCount), kLocal, &gatherEvents_.back());
 }
 
 void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
@@ -193,7 +154,7 @@ void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                    {"mis_maps"},
                    [this, &ctx] {
                        prepareMaps(ctx);
-                       ctx.stats->addStage("mis_light_maps", totalMs(mapEvents_));
+                       ctx.stats->addStage("mis_light_maps", eventMilliseconds(mapEvents_));
                    },
                    true});
     graph.addPass({"mis_gather",
@@ -201,7 +162,7 @@ void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                    {"radiosity_cl"},
                    [this, &ctx, n] {
                        gather(ctx);
-                       ctx.stats->addStage("mis_gather", totalMs(gatherEvents_));
+                       ctx.stats->addStage("mis_gather", eventMilliseconds(gatherEvents_));
                        const double perPoint =
                            n + static_cast<double>(ctx.options->misDistanceSamples) *
                                    static_cast<double>(ctx.lights->size());

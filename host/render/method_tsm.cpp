@@ -41,6 +41,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cl/launch.h"
 #include "physics/dipole.h"
 #include "physics/profile_table.h"
 #include "render/light_map_info.h"
@@ -55,10 +56,6 @@ constexpr size_t kLocal = 64;  // fixed: each new local size compiles again unde
 constexpr size_t kLocal2D = 8;
 constexpr int kTapsPerRing[TsmMethod::kRings] = {1, 4, 8, 8};
 constexpr double kRingTurn[TsmMethod::kRings] = {0.0, 0.5, 0.5, 0.0};  // in sectors
-
-size_t roundUp(size_t n, size_t m) {
-    return (n + m - 1) / m * m;
-}
 
 }  // namespace
 
@@ -154,28 +151,15 @@ void TsmMethod::buildPyramids(FrameContext& ctx) {
     cl::CommandQueue& q = cl_.queue();
     std::vector<cl::Event> events;
     for (size_t l = 0; l < lights; ++l) {
-        int a = 0;
-        level0_.setArg(a++, ctx.lightFlux[l]);
-        level0_.setArg(a++, ctx.lightPosition[l]);
-        level0_.setArg(a++, static_cast<cl_int>(res * res));
-        level0_.setArg(a++, F_[l]);
-        level0_.setArg(a++, P_[l]);
+        setKernelArgs(level0_, ctx.lightFlux[l], ctx.lightPosition[l], static_cast<cl_int>(res * res),
+                      F_[l], P_[l]);
         events.emplace_back();
-        q.enqueueNDRangeKernel(level0_, cl::NullRange,
-                               cl::NDRange(roundUp(static_cast<size_t>(res) * res, kLocal)),
-                               cl::NDRange(kLocal), nullptr, &events.back());
+        enqueue1D(q, level0_, static_cast<size_t>(res) * res, kLocal, &events.back());
         for (size_t k = 1; k < levelsHost_.size(); ++k) {
             const cl_int4& src = levelsHost_[k - 1];
             const cl_int4& dst = levelsHost_[k];
-            a = 0;
-            reduce_.setArg(a++, F_[l]);
-            reduce_.setArg(a++, P_[l]);
-            reduce_.setArg(a++, src.s[0]);
-            reduce_.setArg(a++, src.s[1]);
-            reduce_.setArg(a++, src.s[2]);
-            reduce_.setArg(a++, dst.s[0]);
-            reduce_.setArg(a++, dst.s[1]);
-            reduce_.setArg(a++, dst.s[2]);
+            setKernelArgs(reduce_, F_[l], P_[l], src.s[0], src.s[1], src.s[2], dst.s[0], dst.s[1],
+                          dst.s[2]);
             events.emplace_back();
             q.enqueueNDRangeKernel(reduce_, cl::NullRange,
                                    cl::NDRange(roundUp(static_cast<size_t>(dst.s[1]), kLocal2D),
@@ -183,9 +167,7 @@ void TsmMethod::buildPyramids(FrameContext& ctx) {
                                    cl::NDRange(kLocal2D, kLocal2D), nullptr, &events.back());
         }
     }
-    double ms = 0;
-    for (const cl::Event& e : events) ms += eventMilliseconds(e);
-    ctx.stats->addStage("tsm_pyramid", ms);
+    ctx.stats->addStage("tsm_pyramid", eventMilliseconds(events));
 }
 
 void TsmMethod::filter(FrameContext& ctx) {
@@ -199,30 +181,15 @@ void TsmMethod::filter(FrameContext& ctx) {
         const LightView& lv = (*ctx.lights)[l];
         const bool point = lv.light.type == Light::Type::Point;
         const glm::vec3 s = point ? lv.light.vec : glm::normalize(lv.light.vec);
-        int a = 0;
-        filter_.setArg(a++, ctx.points);
-        filter_.setArg(a++, static_cast<cl_int>(count));
-        filter_.setArg(a++, lightMapInfo(lv, ctx.lightResolution));
-        filter_.setArg(a++, cl_float4{{s.x, s.y, s.z, point ? 1.0f : 0.0f}});
-        filter_.setArg(a++, F_[l]);
-        filter_.setArg(a++, P_[l]);
-        filter_.setArg(a++, levels_);
-        filter_.setArg(a++, static_cast<cl_int>(levelsHost_.size()));
-        filter_.setArg(a++, taps_);
-        filter_.setArg(a++, static_cast<cl_int>(taps));
-        filter_.setArg(a++, rings_);
-        filter_.setArg(a++, ringInfo_);
-        filter_.setArg(a++, static_cast<cl_float>(radiusMm_));
-        filter_.setArg(a++, static_cast<cl_int>(l > 0));
-        filter_.setArg(a++, ctx.radiosity);
+        setKernelArgs(filter_, ctx.points, static_cast<cl_int>(count), lightMapInfo(lv, ctx.lightResolution),
+                      cl_float4{{s.x, s.y, s.z, point ? 1.0f : 0.0f}}, F_[l], P_[l], levels_,
+                      static_cast<cl_int>(levelsHost_.size()), taps_, static_cast<cl_int>(taps), rings_,
+                      ringInfo_, static_cast<cl_float>(radiusMm_), static_cast<cl_int>(l > 0),
+                      ctx.radiosity);
         events.emplace_back();
-        cl_.queue().enqueueNDRangeKernel(filter_, cl::NullRange,
-                                         cl::NDRange(roundUp(static_cast<size_t>(count), kLocal)),
-                                         cl::NDRange(kLocal), nullptr, &events.back());
+        enqueue1D(cl_.queue(), filter_, static_cast<size_t>(count), kLocal, &events.back());
     }
-    double ms = 0;
-    for (const cl::Event& e : events) ms += eventMilliseconds(e);
-    ctx.stats->addStage("tsm_filter", ms);
+    ctx.stats->addStage("tsm_filter", eventMilliseconds(events));
 }
 
 void TsmMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
