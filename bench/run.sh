@@ -15,7 +15,7 @@ export TSIS_BENCH_RESULTS="$results"
 what=""
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do what="$what $1"; shift; done
 [ $# -gt 0 ] && shift
-[ -z "$what" ] && what=all
+[ -z "$what" ] && what=" all"
 [ "$what" = " all" ] && what="tables error kernels handoff scaling animate plots"
 
 cmake -S "$root" -B "$build" >/dev/null
