@@ -44,6 +44,21 @@ TEST(Cli, SameSeedSameBytesOtherSeedOtherImage) {
     EXPECT_NE(a, c);
 }
 
+TEST(Cli, ProgressiveFramesAreAveragedAndDeterministic) {
+    ScratchDir dir;
+    for (const char* name : {"a", "b"})
+        ASSERT_EQ(runTsis("render " + kFast + "--frames 3 --progressive -o " +
+                          dir.file(std::string(name) + ".png") + " --stats " +
+                          dir.file(std::string(name) + ".json"))
+                      .exitCode,
+                  0);
+    EXPECT_NE(readFile(dir.file("a.json")).find("\"accumulated_frames\": 3"), std::string::npos)
+        << readFile(dir.file("a.json"));
+    EXPECT_EQ(readFile(dir.file("a.png")), readFile(dir.file("b.png")));
+    ASSERT_EQ(runTsis("render " + kFast + "--frames 3 -o " + dir.file("c.png")).exitCode, 0);
+    EXPECT_NE(readFile(dir.file("a.png")), readFile(dir.file("c.png")));
+}
+
 struct BadInput {
     const char* name;
     std::string args;

@@ -1,6 +1,7 @@
 #include "cl/importance_sampler.h"
 
 #include <bit>
+#include <cmath>
 
 #include "cl/launch.h"
 #include "util/error.h"
@@ -34,7 +35,7 @@ size_t ImportanceSampler::pyramidSize(int res) {
     return levelOffset(res, std::countr_zero(static_cast<unsigned>(res)) + 1);
 }
 
-float ImportanceSampler::seedOffset(uint32_t seed) {
+float ImportanceSampler::seedOffset(uint32_t seed, uint32_t sampleSet) {
     // lowbias32 (Chris Wellons' hash prospector): good avalanche, so nearby
     // seeds give unrelated offsets. The constant keeps seed 0 off ξ = 0 (the
     // hash maps 0 to 0).
@@ -44,7 +45,10 @@ float ImportanceSampler::seedOffset(uint32_t seed) {
     h ^= h >> 15;
     h *= 0x846ca68bu;
     h ^= h >> 16;
-    return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+    const double golden = 0.6180339887498949;  // (√5 − 1)/2
+    const double xi = static_cast<double>(h >> 8) / 16777216.0 + golden * sampleSet;
+    const float f = static_cast<float>(xi - std::floor(xi));
+    return f < 1.0f ? f : 0.0f;
 }
 
 void ImportanceSampler::buildPyramid(const cl::Buffer& flux, int res) {
@@ -79,8 +83,8 @@ double ImportanceSampler::totalLuminance() {
 }
 
 void ImportanceSampler::draw(const cl::Buffer& flux, const cl::Buffer& position, int res, int n,
-                             uint32_t seed, cl::Buffer& samples) {
-    drawWithOffset(flux, position, res, n, seedOffset(seed), samples);
+                             uint32_t seed, cl::Buffer& samples, uint32_t sampleSet) {
+    drawWithOffset(flux, position, res, n, seedOffset(seed, sampleSet), samples);
 }
 
 void ImportanceSampler::drawWithOffset(const cl::Buffer& flux, const cl::Buffer& position, int res,

@@ -23,11 +23,11 @@ class ImportanceSampler {
     void buildPyramid(const cl::Buffer& flux, int res);
     double totalLuminance();  // ΣY, the pyramid's top (one 4-byte read)
 
-    // n samples with u_i = frac((i + ξ)/n), ξ ∈ [0,1) a hash of seed (seedOffset).
+    // n samples with u_i = frac((i + ξ)/n), ξ = seedOffset(seed, sampleSet).
     // samples[i] = {position[texel].xyz, texel, w = Φ(texel)·ΣY/(n·Y(texel))};
     // all weights 0 when ΣY = 0. Needs buildPyramid(flux, res) first.
     void draw(const cl::Buffer& flux, const cl::Buffer& position, int res, int n, uint32_t seed,
-              cl::Buffer& samples);
+              cl::Buffer& samples, uint32_t sampleSet = 0);
     // The same with ξ given (0 ≤ xi < 1): for tests and for callers that
     // choose their own offset sequence.
     void drawWithOffset(const cl::Buffer& flux, const cl::Buffer& position, int res, int n,
@@ -41,8 +41,11 @@ class ImportanceSampler {
     // Start of level k in pyramid() (in floats) and the pyramid's length.
     static size_t levelOffset(int res, int level);
     static size_t pyramidSize(int res);
-    // ξ for a seed: the top 24 bits of a 32-bit integer hash, over 2^24.
-    static float seedOffset(uint32_t seed);
+    // ξ for a seed: the top 24 bits of a 32-bit integer hash, over 2^24, moved
+    // by sampleSet times the golden ratio's fraction (mod 1). Successive sets'
+    // offsets stay evenly spread, so the union of K sets is stratified like one
+    // set of K·n samples (progressive accumulation averages them).
+    static float seedOffset(uint32_t seed, uint32_t sampleSet = 0);
 
   private:
     ClRuntime& cl_;

@@ -57,6 +57,8 @@ std::vector<OptionSpec> renderSpecs() {
     specs.push_back({"stats", true, false, "FILE.json  per-stage timings, bytes, counts"});
     specs.push_back({"frames", true, false,
                      "N  render the frame N times, report the last (warm timings; default 1)"});
+    specs.push_back({"progressive", false, false,
+                     "with --frames N: each frame a new sample set, the image their mean"});
     return specs;
 }
 
@@ -82,6 +84,7 @@ int runRender(const std::vector<std::string>& argv) {
     RenderOptions options = renderOptionsFromArgs(args);
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
+    options.progressive = args.flag("progressive");
 
     const int frames = args.getInt("frames", 1, 1, 100000);
     Renderer renderer(args.getString("cl-device", ""));

@@ -50,7 +50,17 @@ struct FrameContext {
     int lightResolution = 0;
     std::vector<cl::Buffer> lightFlux;      // flux per texel rgb (DESIGN §2), a = covered
     std::vector<cl::Buffer> lightPosition;  // xyz, w = distance to the light (mm)
+
+    // Progressive accumulation: frames of the same view already averaged, so
+    // this frame draws sample set `sampleSet` (0 when not accumulating).
+    uint32_t sampleSet = 0;
 };
+
+// The seed of a frame's hashed random numbers: --seed, moved on for each
+// progressive sample set (--seed itself for set 0).
+inline uint32_t frameSeed(const FrameContext& ctx) {
+    return ctx.options->seed + 0x9e3779b9u * ctx.sampleSet;
+}
 
 class Method {
   public:

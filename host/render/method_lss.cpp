@@ -137,7 +137,7 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                            static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
                            static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries), rd_,
                            table_.table().info, camera(ctx.scene->camera, ctx.height),
-                           static_cast<cl_uint>(ctx.options->seed), ctx.radiosity);
+                           static_cast<cl_uint>(frameSeed(ctx)), ctx.radiosity);
              cl::Event e;
              enqueue1D(cl_.queue(), gather_, static_cast<size_t>(count), kLocal, &e);
              ctx.stats->addStage("lss_gather", eventMilliseconds(e));

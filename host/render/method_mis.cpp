@@ -109,7 +109,7 @@ void MisMethod::gather(FrameContext& ctx) {
     info_.n_tex = n;
     info_.n_dist = ctx.options->misDistanceSamples;
     info_.tex_scale = sumY > 0.0 ? static_cast<float>(n / sumY) : 0.0f;
-    info_.seed = ctx.options->seed;
+    info_.seed = frameSeed(ctx);
     setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_, texDensity_);
     gatherEvents_.emplace_back();
     enqueue1D(q, prepare_, static_cast<size_t>(n), kLocal, &gatherEvents_.back());
@@ -145,7 +145,7 @@ void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                    {"mis_samples"},
                    [this, &ctx, n] {
                        sampler_.draw(ctx.fluxAtlas, ctx.positionAtlas, ctx.atlasResolution, n,
-                                     ctx.options->seed, samples_);
+                                     ctx.options->seed, samples_, ctx.sampleSet);
                        ctx.stats->addStage("mis_sample", sampler_.lastDrawMs());
                    },
                    true});

@@ -48,7 +48,7 @@ void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const Rad
                    {statPrefix + "samples"},
                    [this, &ctx, n, statPrefix] {
                        sampler_.draw(ctx.fluxAtlas, ctx.positionAtlas, ctx.atlasResolution, n,
-                                     ctx.options->seed, samples_);
+                                     ctx.options->seed, samples_, ctx.sampleSet);
                        ctx.stats->addStage(statPrefix + "sample", sampler_.lastDrawMs());
                    },
                    true});

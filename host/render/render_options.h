@@ -28,6 +28,10 @@ struct RenderOptions {
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
     double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
     bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
+    // Average this frame's radiosity with the frames before it while nothing
+    // that changes the radiosity changed (render/accumulator.h); each frame
+    // draws a new sample set.
+    bool progressive = false;
 };
 
 }  // namespace tsis

@@ -43,6 +43,39 @@ ImageF toImage(const std::vector<float>& rgba, int w, int h, int channels, int f
     return img;
 }
 
+template <typename T>
+void hashValue(uint64_t& h, const T& value) {
+    hashBytes(h, &value, 1);
+}
+
+// Everything that changes the radiosity a frame computes, except the sample
+// set: frames with equal keys may be averaged. Field by field (no struct
+// padding); a new option that changes the radiosity belongs here too.
+uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t meshHash) {
+    uint64_t h = 1469598103934665603ull;
+    hashValue(h, meshHash);
+    hashValue(h, scene.material.sigmaSPrime);
+    hashValue(h, scene.material.sigmaA);
+    hashValue(h, scene.material.eta);
+    for (const Light& l : scene.lights) {
+        hashValue(h, l.type);
+        hashValue(h, l.vec);
+        hashValue(h, l.rgb);
+        hashValue(h, l.shadows);
+    }
+    const Camera& c = scene.camera;
+    for (const glm::vec3& v : {c.eye, c.target, c.up}) hashValue(h, v);
+    hashValue(h, c.fovYDegrees);
+    hashBytes(h, o.method.data(), o.method.size());
+    hashBytes(h, o.rdPart.data(), o.rdPart.size());
+    for (int v : {o.width, o.height, o.atlasResolution, o.lightResolution, o.samples, o.ltsmRings,
+                  o.ltsmPerRing, o.misDistanceSamples})
+        hashValue(h, v);
+    for (double v : {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), o.tsmRadius}) hashValue(h, v);
+    hashValue(h, o.seed);
+    return h;
+}
+
 }  // namespace
 
 uint64_t meshHash(const Mesh& mesh) {
@@ -70,8 +103,7 @@ Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
 
 Renderer::~Renderer() = default;
 
-void Renderer::uploadMeshIfChanged(const Mesh& mesh) {
-    uint64_t h = meshHash(mesh);
+void Renderer::uploadMeshIfChanged(const Mesh& mesh, uint64_t h) {
     if (gpuMesh_ && h == meshHash_) return;
     gpuMesh_ = std::make_unique<GpuMesh>(mesh);
     meshHash_ = h;
@@ -105,6 +137,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     ctx.width = w;
     ctx.height = h;
     ctx.lightResolution = opt.lightResolution;
+    const uint64_t mesh = meshHash(scene.mesh);
+    const uint64_t key = opt.progressive ? accumulationKey(scene, opt, mesh) : 0;
+    if (opt.progressive) ctx.sampleSet = accumulator_.framesFor(key);
 
     const Camera& cam = scene.camera;
     const float camDist = glm::length(cam.eye - cam.target);
@@ -121,7 +156,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     std::vector<int> pointPixel;  // GL pixel index of each covered point
 
     FrameGraph graph;
-    graph.addPass({"upload_mesh", {}, {"mesh"}, [&] { uploadMeshIfChanged(scene.mesh); }});
+    graph.addPass({"upload_mesh", {}, {"mesh"}, [&] { uploadMeshIfChanged(scene.mesh, mesh); }});
     graph.addPass({"gl_light_view", {"mesh"}, {"light_maps"}, [&] {
                        lights_.clear();
                        for (const Light& l : scene.lights)
@@ -272,6 +307,12 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        }
                        stats.addStage("cl_to_gl", t.ms(),
                                       static_cast<long long>(packed.size() * sizeof(float)));
+                       if (opt.progressive) {
+                           Timer ta;
+                           radiosityRGBA = accumulator_.add(key, radiosityRGBA);
+                           stats.addStage("accumulate", ta.ms());
+                           stats.set("accumulated_frames", static_cast<double>(accumulator_.framesFor(key)));
+                       }
                    },
                    true});
     graph.addPass({"composite", {"radiosity", "gbuffer", "light_maps"}, {"image"}, [&] {

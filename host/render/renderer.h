@@ -16,6 +16,7 @@
 #include "gl/gpu_mesh.h"
 #include "gl/passes.h"
 #include "image/image_io.h"
+#include "render/accumulator.h"
 #include "render/frame_stats.h"
 #include "render/method.h"
 #include "render/render_options.h"
@@ -39,12 +40,14 @@ class Renderer {
     ~Renderer();
 
     FrameResult render(const Scene& scene, const RenderOptions& options);
+    // The next progressive frame starts a new mean even if nothing changed.
+    void restartAccumulation() { accumulator_ = RadiosityAccumulator(); }
 
     ClRuntime& cl() { return cl_; }
     std::string glRenderer() const { return gl_.renderer(); }
 
   private:
-    void uploadMeshIfChanged(const Mesh& mesh);
+    void uploadMeshIfChanged(const Mesh& mesh, uint64_t hash);
     Method& method(const std::string& name);
 
     GlContext gl_;
@@ -59,6 +62,7 @@ class Renderer {
     CompositePass compositePass_;
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
+    RadiosityAccumulator accumulator_;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     std::vector<LightView> lights_;
     // CL buffers, grown as needed and kept across frames.
