@@ -311,7 +311,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                            Timer ta;
                            radiosityRGBA = accumulator_.add(key, radiosityRGBA);
                            stats.addStage("accumulate", ta.ms());
-                           stats.set("accumulated_frames", static_cast<double>(accumulator_.framesFor(key)));
+                           stats.set("accumulated_frames",
+                                     static_cast<double>(accumulator_.framesFor(key)));
                        }
                    },
                    true});
