@@ -32,7 +32,8 @@ out="$results/methods_vs_reference.md"
     echo "on $(date -u +%Y-%m-%d), device: DEVICE. Relative RMSE = RMSE of the radiosity"
     echo "over the reference's covered pixels / its mean (\`tsis compare --mask coverage.exr\`);"
     echo "frame = the second of \`--frames 2\` (warm: programs built, the reference's and"
-    echo "hierarchical's sample sets cached), stats \"total\", in ms."
+    echo "hierarchical's sample sets cached; \`--no-reuse-lighting\`: light maps and flux atlas"
+    echo "made again, as when the light moves), stats \"total\", in ms."
     echo
     echo "| scene | method | rel. RMSE | mean rel. err | frame ms | Rd evaluations |"
     echo "|---|---|---:|---:|---:|---:|"
@@ -42,7 +43,7 @@ for scene in $scenes; do
     material=$(echo "$scene" | awk -F: '{print $(NF-1)}')
     mm=$(echo "$scene" | awk -F: '{print $NF}')
     mesh=${scene%:*:*}
-    common="--mesh $mesh --material $material --size-mm $mm --width $size --height $size --frames 2 $extra"
+    common="--mesh $mesh --material $material --size-mm $mm --width $size --height $size --frames 2 --no-reuse-lighting $extra"
     for m in reference $methods; do
         dir="$tmp/$m"
         cmd="$tsis render $common --method $m -o $tmp/$m.png --aov $dir --stats $tmp/$m.json"
@@ -70,7 +71,7 @@ sed -i "s|DEVICE|$device|" "$out"
     echo "Commands (per scene, for the reference and each method):"
     echo
     echo '```'
-    echo "tsis render --mesh MESH --material MAT --size-mm MM --width $size --height $size --frames 2 $extra --method METHOD -o METHOD.png --aov METHOD --stats METHOD.json"
+    echo "tsis render --mesh MESH --material MAT --size-mm MM --width $size --height $size --frames 2 --no-reuse-lighting $extra --method METHOD -o METHOD.png --aov METHOD --stats METHOD.json"
     echo "tsis compare METHOD/radiosity.exr reference/radiosity.exr --mask reference/coverage.exr --json"
     echo '```'
 } >>"$out"

@@ -61,6 +61,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"light-res", true, false, "R  shadow/light-view map resolution (default 1024)"},
         {"key", true, false, "K  tone-mapping key (default 0.18)"},
         {"no-specular", false, false, "turn off the Phong highlight"},
+        {"no-reuse-lighting", false, false,
+         "make the light maps and flux atlas every frame, even when the lighting did not change"},
         {"cl-device", true, false, "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
     };
     return specs;
@@ -193,6 +195,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.tsmRadius = args.getDouble("tsm-radius", 2.0, 1e-3, 1e3);
     o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
+    o.reuseLighting = !args.flag("no-reuse-lighting");
     return o;
 }
 

@@ -32,6 +32,10 @@ struct RenderOptions {
     // that changes the radiosity changed (render/accumulator.h); each frame
     // draws a new sample set.
     bool progressive = false;
+    // Keep the light maps and the flux atlas (GL and CL copies) from the frame
+    // before while the mesh, lights, η and resolutions are unchanged: a frame
+    // that moves only the camera or changes σ, N or the method skips them.
+    bool reuseLighting = true;
 };
 
 }  // namespace tsis

@@ -48,14 +48,12 @@ void hashValue(uint64_t& h, const T& value) {
     hashBytes(h, &value, 1);
 }
 
-// Everything that changes the radiosity a frame computes, except the sample
-// set: frames with equal keys may be averaged. Field by field (no struct
-// padding); a new option that changes the radiosity belongs here too.
-uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t meshHash) {
+// Everything the light maps and the flux atlas depend on: the mesh, the
+// lights, η (Fresnel at entry) and the two resolutions. Field by field (no
+// struct padding).
+uint64_t lightingKey(const Scene& scene, const RenderOptions& o, uint64_t meshHash) {
     uint64_t h = 1469598103934665603ull;
     hashValue(h, meshHash);
-    hashValue(h, scene.material.sigmaSPrime);
-    hashValue(h, scene.material.sigmaA);
     hashValue(h, scene.material.eta);
     for (const Light& l : scene.lights) {
         hashValue(h, l.type);
@@ -63,13 +61,24 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t me
         hashValue(h, l.rgb);
         hashValue(h, l.shadows);
     }
+    hashValue(h, o.lightResolution);
+    hashValue(h, o.atlasResolution);
+    return h;
+}
+
+// Everything that changes the radiosity a frame computes, except the sample
+// set: frames with equal keys may be averaged. A new option that changes the
+// radiosity belongs here too.
+uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t lighting) {
+    uint64_t h = lighting;
+    hashValue(h, scene.material.sigmaSPrime);
+    hashValue(h, scene.material.sigmaA);
     const Camera& c = scene.camera;
     for (const glm::vec3& v : {c.eye, c.target, c.up}) hashValue(h, v);
     hashValue(h, c.fovYDegrees);
     hashBytes(h, o.method.data(), o.method.size());
     hashBytes(h, o.rdPart.data(), o.rdPart.size());
-    for (int v : {o.width, o.height, o.atlasResolution, o.lightResolution, o.samples, o.ltsmRings,
-                  o.ltsmPerRing, o.misDistanceSamples})
+    for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples})
         hashValue(h, v);
     for (double v : {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), o.tsmRadius}) hashValue(h, v);
     hashValue(h, o.seed);
@@ -138,7 +147,13 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     ctx.height = h;
     ctx.lightResolution = opt.lightResolution;
     const uint64_t mesh = meshHash(scene.mesh);
-    const uint64_t key = opt.progressive ? accumulationKey(scene, opt, mesh) : 0;
+    // A frame that moves only the camera (or changes σ, N, the method…) reuses
+    // the light maps and the flux atlas: same lighting key.
+    const uint64_t lighting = lightingKey(scene, opt, mesh);
+    if (!opt.reuseLighting) lightViewKey_ = fluxKey_ = fluxUploadKey_ = lightMapsUploadKey_ = 0;
+    const bool sameLighting = lighting == lightViewKey_;
+    stats.set("lighting_reused", sameLighting ? 1.0 : 0.0);
+    const uint64_t key = opt.progressive ? accumulationKey(scene, opt, lighting) : 0;
     if (opt.progressive) ctx.sampleSet = accumulator_.framesFor(key);
 
     const Camera& cam = scene.camera;
@@ -158,12 +173,16 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     FrameGraph graph;
     graph.addPass({"upload_mesh", {}, {"mesh"}, [&] { uploadMeshIfChanged(scene.mesh, mesh); }});
     graph.addPass({"gl_light_view", {"mesh"}, {"light_maps"}, [&] {
+                       if (sameLighting) return;
+                       // Nothing made from the old maps is current any more.
+                       lightViewKey_ = fluxKey_ = fluxUploadKey_ = lightMapsUploadKey_ = 0;
                        lights_.clear();
                        for (const Light& l : scene.lights)
                            lights_.push_back(
                                makeLightView(l, ctx.boundingRadius, opt.lightResolution));
                        lightPass_.run(*gpuMesh_, lights_, eta);
                        glFinish();
+                       lightViewKey_ = lighting;
                    }});
     // The geometry atlas depends on the mesh and resolution only: made once.
     graph.addPass({"gl_geometry_atlas", {"mesh"}, {"geometry_atlas"}, [&] {
@@ -174,9 +193,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        geometryVersion_++;
                    }});
     graph.addPass({"gl_flux_atlas", {"geometry_atlas", "light_maps"}, {"atlas"}, [&] {
+                       if (fluxKey_ == lighting) return;
                        fluxAtlasPass_.run(geometryAtlasPass_.target(), lights_,
                                           lightPass_.shadows(), eta);
                        glFinish();
+                       fluxKey_ = lighting;
                    }});
     graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
                        gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj, w,
@@ -192,11 +213,16 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                    [&] {
                        Timer t;
                        size_t bytes = static_cast<size_t>(res) * res * 16;
-                       long long moved = static_cast<long long>(bytes);
-                       fluxAtlas_.reserve(cl_.context(), bytes);
-                       std::vector<float> flux = fluxAtlasPass_.target().readRGBA(0);
-                       cl_.queue().enqueueWriteBuffer(fluxAtlas_.buffer, CL_FALSE, 0, bytes,
-                                                      flux.data());
+                       long long moved = 0;
+                       std::vector<float> flux;
+                       if (fluxUploadKey_ != lighting || opt.keepAovs)
+                           flux = fluxAtlasPass_.target().readRGBA(0);
+                       if (fluxUploadKey_ != lighting) {
+                           fluxAtlas_.reserve(cl_.context(), bytes);
+                           cl_.queue().enqueueWriteBuffer(fluxAtlas_.buffer, CL_FALSE, 0, bytes,
+                                                          flux.data());
+                           moved += static_cast<long long>(bytes);
+                       }
                        if (positionVersion_ != geometryVersion_) {
                            positionAtlas_.reserve(cl_.context(), bytes);
                            std::vector<float> pos = geometryAtlasPass_.target().readRGBA(0);
@@ -206,6 +232,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                            moved += static_cast<long long>(bytes);
                        }
                        cl_.queue().finish();
+                       fluxUploadKey_ = lighting;
                        ctx.fluxAtlas = fluxAtlas_.buffer;
                        ctx.positionAtlas = positionAtlas_.buffer;
                        stats.addStage("gl_to_cl_atlas", t.ms(), moved);
@@ -271,18 +298,22 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
              Timer t;
              size_t bytes = static_cast<size_t>(opt.lightResolution) * opt.lightResolution * 16;
              long long total = 0;
+             const bool upload = lightMapsUploadKey_ != lighting;
              lightCl_.resize(2 * lights_.size());
              ctx.lightFlux.clear();
              ctx.lightPosition.clear();
              for (size_t l = 0; l < lights_.size(); ++l)
                  for (int i = 0; i < 2; ++i) {
                      GrowingBuffer& b = lightCl_[2 * l + static_cast<size_t>(i)];
-                     b.reserve(cl_.context(), bytes);
-                     std::vector<float> data = lights_[l].target->readRGBA(i);
-                     cl_.queue().enqueueWriteBuffer(b.buffer, CL_TRUE, 0, bytes, data.data());
+                     if (upload) {
+                         b.reserve(cl_.context(), bytes);
+                         std::vector<float> data = lights_[l].target->readRGBA(i);
+                         cl_.queue().enqueueWriteBuffer(b.buffer, CL_TRUE, 0, bytes, data.data());
+                         total += static_cast<long long>(bytes);
+                     }
                      (i == 0 ? ctx.lightFlux : ctx.lightPosition).push_back(b.buffer);
-                     total += static_cast<long long>(bytes);
                  }
+             lightMapsUploadKey_ = lighting;
              stats.addStage("gl_to_cl_light_maps", t.ms(), total);
          },
          true});

@@ -63,6 +63,9 @@ class Renderer {
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     RadiosityAccumulator accumulator_;
+    // Lighting keys (renderer.cpp) of what the GL targets and CL buffers hold;
+    // 0 = nothing current. A frame with the same key reuses them.
+    uint64_t lightViewKey_ = 0, fluxKey_ = 0, fluxUploadKey_ = 0, lightMapsUploadKey_ = 0;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     std::vector<LightView> lights_;
     // CL buffers, grown as needed and kept across frames.

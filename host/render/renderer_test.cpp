@@ -1,0 +1,52 @@
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include "render/render_test_util.h"
+
+namespace tsis {
+namespace {
+
+double statValue(const FrameStats& stats, const std::string& key) {
+    for (const auto& [k, v] : stats.values)
+        if (k == key) return v.number();
+    return -1;
+}
+
+// A frame that keeps the light maps and flux atlas of the frame before (only
+// the camera or the method moved) is the same, byte for byte, as the frame
+// made from scratch; a change of light is never served stale maps.
+TEST(Renderer, ReusedLightingGivesTheSameFrameAsFreshLighting) {
+    Scene a = test::sphereScene("skin1",
+                                {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    Scene moved = a;
+    moved.camera.eye = glm::vec3(10, 4, 12);
+    Scene relit = moved;
+    relit.lights[0].vec = glm::vec3(8, 10, 6);
+    const RenderOptions opt = test::smallOptions(48, 256, 256);
+
+    for (const char* method : {"tsis", "hybrid"}) {
+        SCOPED_TRACE(method);
+        const FrameResult first = test::renderWith(a, opt, method);
+        const FrameResult reused = test::renderWith(moved, opt, method);
+        EXPECT_EQ(statValue(reused.stats, "lighting_reused"), 1);
+        EXPECT_LT(reused.stats.stageMs("gl_flux_atlas"), first.stats.stageMs("gl_flux_atlas"));
+        const FrameResult other = test::renderWith(relit, opt, method);
+        EXPECT_EQ(statValue(other.stats, "lighting_reused"), 0);
+        EXPECT_NE(other.radiosity.pixels, reused.radiosity.pixels);
+        // Back to a's light from a different one: made afresh.
+        const FrameResult fresh = test::renderWith(moved, opt, method);
+        EXPECT_EQ(statValue(fresh.stats, "lighting_reused"), 0);
+        EXPECT_EQ(fresh.radiosity.pixels, reused.radiosity.pixels);
+        EXPECT_EQ(fresh.rgb8, reused.rgb8);
+        EXPECT_EQ(test::renderWith(a, opt, method).rgb8, first.rgb8);
+        RenderOptions again = opt;
+        again.reuseLighting = false;
+        const FrameResult forced = test::renderWith(a, again, method);
+        EXPECT_EQ(statValue(forced.stats, "lighting_reused"), 0);
+        EXPECT_EQ(forced.rgb8, first.rgb8);
+    }
+}
+
+}  // namespace
+}  // namespace tsis
