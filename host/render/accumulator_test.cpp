@@ -28,12 +28,6 @@ TEST(RadiosityAccumulator, MeanOfFramesUntilTheKeyChanges) {
     EXPECT_EQ(acc.framesFor(8), 1u);
 }
 
-double statValue(const FrameStats& stats, const std::string& key) {
-    for (const auto& [k, v] : stats.values)
-        if (k == key) return v.number();
-    return -1;
-}
-
 // K progressive frames of N samples come as close to the converged image as
 // one frame of K·N: the sets' offsets are spread by the golden ratio, so their
 // union stays stratified (independent offsets would only gain √K).
@@ -54,7 +48,7 @@ TEST(Progressive, SixteenFramesOfNAreAsGoodAsOneFrameOf16N) {
     FrameResult f = test::renderWith(scene, opt, "tsis");
     EXPECT_EQ(f.radiosity.pixels, single.radiosity.pixels) << "the first set is the plain frame's";
     for (int k = 1; k < 16; ++k) f = test::renderWith(scene, opt, "tsis");
-    EXPECT_EQ(statValue(f.stats, "accumulated_frames"), 16);
+    EXPECT_EQ(test::statValue(f.stats, "accumulated_frames"), 16);
     const double progressive = test::relativeRmse(f, ref);
     std::printf("relative RMSE: N = 256 %.4f, 16 progressive frames of 256 %.4f, N = 4096 %.4f\n",
                 one, progressive, big);
@@ -71,17 +65,17 @@ TEST(Progressive, AChangeStartsANewMean) {
     opt.progressive = true;
     test::sharedRenderer().restartAccumulation();
     test::renderWith(scene, opt, "tsis");
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 2);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 2);
     opt.key = 0.5f;  // tone mapping only: the radiosity's mean goes on
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 3);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 3);
     scene.lights[0].vec = glm::vec3(0.3f, -1, 0);
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
     opt.samples = 128;
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
     scene.material = presetMaterial("skin1");
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
     opt.progressive = false;
-    EXPECT_EQ(statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), -1);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), -1);
 }
 
 }  // namespace

@@ -102,6 +102,13 @@ inline glm::dvec3 planeClosedForm(const Material& m) {
     return fresnelTransmittance(m.eta, 1.0) * Dipole(m).totalReflectance();
 }
 
+// A number set in a frame's stats (FrameStats::set); -1 when absent.
+inline double statValue(const FrameStats& stats, const std::string& key) {
+    for (const auto& [k, v] : stats.values)
+        if (k == key) return v.number();
+    return -1;
+}
+
 // Pixels with coverage.
 inline size_t coveredPixels(const FrameResult& f) {
     size_t n = 0;
