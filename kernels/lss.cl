@@ -81,9 +81,9 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count,
     const float per_mm = 1.0f / (depth * cam.pixel_angle); /* pixels per mm at xo */
     const uint h1 = tsis_hash((uint)pix ^ tsis_hash(seed));
     const uint h2 = tsis_hash(h1 + 0x9e3779b9U);
-    const float xi = (float)(h1 >> 8) * 0x1p-24f;
+    const float xi = tsis_hash_unit(h1);
     float cs;
-    const float sn = sincos((float)(h2 >> 8) * 0x1p-24f * 6.2831853f, &cs);
+    const float sn = sincos(tsis_hash_unit(h2) * 6.2831853f, &cs);
     const float du = (float)entries / (float)m;
 #if TSIS_LSS_LANES == 1
     float3 b = (float3)(0.0f);
