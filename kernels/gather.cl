@@ -56,33 +56,10 @@ kernel void tsis_gather(const __global float4* points, const int count,
 
 #elif TSIS_GATHER_WIDTH == 8 || TSIS_GATHER_WIDTH == 16
 
-/* Vectors are built from, and split into, named per-lane values, never
- * through private arrays: PoCL keeps those on the stack, and storing scalars
- * to reload them as one vector stalls store forwarding (that version took
- * about 1.3x the time). */
-#if TSIS_GATHER_WIDTH == 16
-#define floatW float16
-#define intW int16
-#define profile_indexW tsis_profile_index16
-#define TSIS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7) F(8) F(9) F(a) F(b) F(c) F(d) F(e) F(f)
-#define TSIS_VEC(P, m) (float16)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m), TSIS_LANE(P, 8, m), TSIS_LANE(P, 9, m), TSIS_LANE(P, a, m), TSIS_LANE(P, b, m), TSIS_LANE(P, c, m), TSIS_LANE(P, d, m), TSIS_LANE(P, e, m), TSIS_LANE(P, f, m))
-#else
-#define floatW float8
-#define intW int8
-#define profile_indexW tsis_profile_index8
-#define TSIS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7)
-#define TSIS_VEC(P, m) (float8)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m))
-#endif
-/* (P, 0, x) -> P0.x; a helper because "P##0.x" would paste a number token. */
-#define TSIS_LANE(P, k, m) P##k.m
+#define TSIS_LANE_WIDTH TSIS_GATHER_WIDTH
+#include "lanes.h"
 
-/* Past the end of the points, lanes repeat the last point (never written). */
-#define TSIS_LOAD_POINT(k) const float4 q##k = points[min(base + 0x##k, count - 1)];
-#define TSIS_LOAD_R(k) const float2 cr##k = split[idx.s##k];
-#define TSIS_LOAD_G(k) const float2 cg##k = split[size + idx.s##k];
-#define TSIS_LOAD_B(k) const float2 cb##k = split[2 * size + idx.s##k];
 #define TSIS_LOAD_ROW(k) const float8 e##k = rows[idx.s##k];
-#define TSIS_STORE(k) if (base + 0x##k < count) out[base + 0x##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
 
 /* Global size = ceil(count / TSIS_GATHER_WIDTH) (rounded up to the local size). */
 kernel void tsis_gather(const __global float4* points, const int count,
@@ -91,8 +68,6 @@ kernel void tsis_gather(const __global float4* points, const int count,
                         __global float4* out) {
     const int base = get_global_id(0) * TSIS_GATHER_WIDTH;
     if (base >= count) return;
-    const int size = (int)info.size;
-    const __global float8* rows = (const __global float8*)split;
     TSIS_LANES(TSIS_LOAD_POINT)
     const floatW px = TSIS_VEC(q, x);
     const floatW py = TSIS_VEC(q, y);
@@ -103,24 +78,20 @@ kernel void tsis_gather(const __global float4* points, const int count,
     floatW bb = (floatW)(0.0f);
     for (int i = 0; i < n; ++i) {
         const TsisSample s = samples[i];
+#if TSIS_GATHER_INTERLEAVED
+        const __global float8* rows = (const __global float8*)split;
         const floatW dx = px - s.px;
         const floatW dy = py - s.py;
         const floatW dz = pz - s.pz;
         floatW t;
         const intW idx = profile_indexW(sqrt(dx * dx + dy * dy + dz * dz), info, &t);
-#if TSIS_GATHER_INTERLEAVED
         TSIS_LANES(TSIS_LOAD_ROW)
         br += s.wr * (TSIS_VEC(e, s0) + t * TSIS_VEC(e, s1));
         bg += s.wg * (TSIS_VEC(e, s2) + t * TSIS_VEC(e, s3));
         bb += s.wb * (TSIS_VEC(e, s4) + t * TSIS_VEC(e, s5));
 #else
-        /* No gather load in OpenCL C: one (value, step) pair per lane and channel. */
-        TSIS_LANES(TSIS_LOAD_R)
-        TSIS_LANES(TSIS_LOAD_G)
-        TSIS_LANES(TSIS_LOAD_B)
-        br += s.wr * (TSIS_VEC(cr, x) + t * TSIS_VEC(cr, y));
-        bg += s.wg * (TSIS_VEC(cg, x) + t * TSIS_VEC(cg, y));
-        bb += s.wb * (TSIS_VEC(cb, x) + t * TSIS_VEC(cb, y));
+        tsis_lanes_add(px, py, pz, (float3)(s.px, s.py, s.pz), (float3)(s.wr, s.wg, s.wb), split,
+                       info, &br, &bg, &bb);
 #endif
     }
     TSIS_LANES(TSIS_STORE)

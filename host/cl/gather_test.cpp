@@ -7,39 +7,15 @@
 #include <random>
 
 #include "cl/cl_test_fixture.h"
+#include "cl/table_test_util.h"
 #include "physics/profile_table.h"
 
 namespace tsis {
 namespace {
 
+using test::analyticTable;
 using test::ClTest;
-
-// A table filled directly (no physics needed): f_c(r) = (1 − r/rMax)²·e^(−s_c r),
-// smooth and 0 at rMax, so float and double agree near the cut-off too.
-ProfileTable analyticTable(double rMax) {
-    const double s[3] = {0.5, 1.0, 2.0};
-    ProfileTable t;
-    t.info.r_max = float(rMax);
-    t.info.inv_step = float((TSIS_TABLE_SIZE - 1) / rMax);
-    t.info.size = TSIS_TABLE_SIZE;
-    t.rgba.resize(4 * TSIS_TABLE_SIZE);
-    for (int k = 0; k < TSIS_TABLE_SIZE; ++k) {
-        const double r = k * rMax / (TSIS_TABLE_SIZE - 1);
-        for (int c = 0; c < 3; ++c)
-            t.rgba[4 * k + c] = float((1 - r / rMax) * (1 - r / rMax) * std::exp(-s[c] * r));
-    }
-    return t;
-}
-
-// The table's interpolation in double (kernels/profile.h semantics).
-double lookup(const ProfileTable& t, double r, int c) {
-    const double x = r * t.info.inv_step;
-    if (!(x < t.info.size - 1)) return 0.0;
-    const int i = int(x);
-    const double a = t.rgba[4 * i + c];
-    const double b = t.rgba[4 * i + 4 + c];
-    return a + (x - i) * (b - a);
-}
+using test::lookup;
 
 std::vector<cl_float4> randomPoints(int count, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -155,13 +131,14 @@ TEST_P(GatherTest, NoPointsIsANoOp) {
     EXPECT_EQ(gatherer.lastMs(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Widths, GatherTest, ::testing::Values(1, 8, 16, -8, -16), [](const auto& info) {
-    // Appended, not "w" + …: GCC 12 warns falsely (-Wrestrict) on that.
-    std::string name = "w";
-    name += std::to_string(std::abs(info.param));
-    if (info.param < 0) name += "interleaved";
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(Widths, GatherTest, ::testing::Values(1, 8, 16, -8, -16),
+                         [](const auto& info) {
+                             // Appended, not "w" + …: GCC 12 warns falsely (-Wrestrict) on that.
+                             std::string name = "w";
+                             name += std::to_string(std::abs(info.param));
+                             if (info.param < 0) name += "interleaved";
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace tsis

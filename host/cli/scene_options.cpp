@@ -40,6 +40,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
          "σt', the smallest mean free path"},
         {"epsilon", true, false,
          "E  hierarchical: use an octree node whole when its area/distance^2 < E (default 0.05)"},
+        {"pyramid-epsilon", true, false,
+         "E  pyramid: use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E ≤ 1 "
+         "(default 0.05)"},
         {"rp-bound", true, false,
          "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
         {"rp-k", true, false,
@@ -176,6 +179,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.seed = static_cast<uint32_t>(args.getInt("seed", 1, 0, 0xffffffffll >> 1));
     o.spacingMm = args.getDouble("spacing", 0.0, 1e-4, 1e4);
     o.epsilon = static_cast<float>(args.getDouble("epsilon", o.epsilon, 0.0, 1e3));
+    o.pyramidEpsilon =
+        static_cast<float>(args.getDouble("pyramid-epsilon", o.pyramidEpsilon, 0.0, 1.0));
     auto powerOfTwo = [&](const char* name, int def) {
         int r = args.getInt(name, def, 1, 8192);
         if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");

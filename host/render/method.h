@@ -30,6 +30,7 @@ struct FrameContext {
     int atlasResolution = 0;
     cl::Buffer fluxAtlas;         // "flux_atlas_cl": res² float4 (flux rgb)
     cl::Buffer positionAtlas;     // "position_atlas_cl": res² float4 (xyz, 1 where covered)
+    cl::Buffer normalAtlas;       // "normal_atlas_cl": res² float4 (normal, w = texel area mm²)
     std::vector<LightView>* lights = nullptr;  // "light_maps": depth, flux, position per light
     int pointCount = 0;           // covered pixels
     cl::Buffer points;            // "points_cl": pointCount float4 (xyz of each covered pixel)

@@ -6,6 +6,7 @@
 #include "render/method_lss.h"
 #include "render/method_ltsm.h"
 #include "render/method_mis.h"
+#include "render/method_pyramid.h"
 #include "render/method_tsis.h"
 #include "render/method_tsm.h"
 #include "util/error.h"
@@ -20,6 +21,7 @@ struct Entry {
 };
 
 const Entry kMethods[] = {
+    {"pyramid", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<PyramidMethod>(cl); }},
     {"tsis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
     {"hybrid", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HybridMethod>(cl); }},
     {"ltsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LtsmMethod>(cl); }},

@@ -26,6 +26,8 @@ struct RenderOptions {
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
+    // pyramid: a node is used whole when max(radius², area/π) < ε·(d² + ℓ²)
+    float pyramidEpsilon = 0.05f;
     double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
     bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
     // Average this frame's radiosity with the frames before it while nothing

@@ -80,7 +80,9 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     hashBytes(h, o.rdPart.data(), o.rdPart.size());
     for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples})
         hashValue(h, v);
-    for (double v : {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), o.tsmRadius}) hashValue(h, v);
+    for (double v :
+         {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon), o.tsmRadius})
+        hashValue(h, v);
     hashValue(h, o.seed);
     return h;
 }
@@ -239,6 +241,27 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        if (opt.keepAovs) result.fluxAtlas = toImage(flux, res, res, 3);
                    },
                    true});
+    // The geometry atlas' normals (w = texel area) for methods that need areas:
+    // again only when the mesh or resolution changed.
+    graph.addPass({"gl_to_cl_normal_atlas",
+                   {"geometry_atlas"},
+                   {"normal_atlas_cl"},
+                   [&] {
+                       Timer t;
+                       long long moved = 0;
+                       if (normalVersion_ != geometryVersion_) {
+                           const size_t bytes = static_cast<size_t>(res) * res * 16;
+                           normalAtlas_.reserve(cl_.context(), bytes);
+                           std::vector<float> normals = geometryAtlasPass_.target().readRGBA(1);
+                           cl_.queue().enqueueWriteBuffer(normalAtlas_.buffer, CL_TRUE, 0, bytes,
+                                                          normals.data());
+                           normalVersion_ = geometryVersion_;
+                           moved = static_cast<long long>(bytes);
+                       }
+                       ctx.normalAtlas = normalAtlas_.buffer;
+                       stats.addStage("gl_to_cl_normal_atlas", t.ms(), moved);
+                   },
+                   true});
     // Only covered pixels cross, packed (xyz per point).
     graph.addPass({"gl_to_cl_points",
                    {"gbuffer"},
@@ -321,32 +344,31 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     m.addPasses(graph, ctx);
 
     std::vector<float> radiosityRGBA(static_cast<size_t>(w) * h * 4, 0.0f);
-    graph.addPass({"cl_to_gl",
-                   {"radiosity_cl"},
-                   {"radiosity"},
-                   [&] {
-                       Timer t;
-                       std::vector<float> packed(static_cast<size_t>(ctx.pointCount) * 4);
-                       if (!packed.empty())
-                           cl_.queue().enqueueReadBuffer(ctx.radiosity, CL_TRUE, 0,
-                                                         packed.size() * sizeof(float),
-                                                         packed.data());
-                       for (size_t k = 0; k < pointPixel.size(); ++k) {
-                           size_t i = static_cast<size_t>(pointPixel[k]) * 4;
-                           std::memcpy(&radiosityRGBA[i], &packed[k * 4], 3 * sizeof(float));
-                           radiosityRGBA[i + 3] = 1.0f;
-                       }
-                       stats.addStage("cl_to_gl", t.ms(),
-                                      static_cast<long long>(packed.size() * sizeof(float)));
-                       if (opt.progressive) {
-                           Timer ta;
-                           radiosityRGBA = accumulator_.add(key, radiosityRGBA);
-                           stats.addStage("accumulate", ta.ms());
-                           stats.set("accumulated_frames",
-                                     static_cast<double>(accumulator_.framesFor(key)));
-                       }
-                   },
-                   true});
+    graph.addPass(
+        {"cl_to_gl",
+         {"radiosity_cl"},
+         {"radiosity"},
+         [&] {
+             Timer t;
+             std::vector<float> packed(static_cast<size_t>(ctx.pointCount) * 4);
+             if (!packed.empty())
+                 cl_.queue().enqueueReadBuffer(ctx.radiosity, CL_TRUE, 0,
+                                               packed.size() * sizeof(float), packed.data());
+             for (size_t k = 0; k < pointPixel.size(); ++k) {
+                 size_t i = static_cast<size_t>(pointPixel[k]) * 4;
+                 std::memcpy(&radiosityRGBA[i], &packed[k * 4], 3 * sizeof(float));
+                 radiosityRGBA[i + 3] = 1.0f;
+             }
+             stats.addStage("cl_to_gl", t.ms(),
+                            static_cast<long long>(packed.size() * sizeof(float)));
+             if (opt.progressive) {
+                 Timer ta;
+                 radiosityRGBA = accumulator_.add(key, radiosityRGBA);
+                 stats.addStage("accumulate", ta.ms());
+                 stats.set("accumulated_frames", static_cast<double>(accumulator_.framesFor(key)));
+             }
+         },
+         true});
     graph.addPass({"composite", {"radiosity", "gbuffer", "light_maps"}, {"image"}, [&] {
                        compositePass_.radiance(radiosityRGBA.data(), gbufferPass_.target(), cam.eye,
                                                eta);

@@ -57,7 +57,8 @@ class Renderer {
     FluxAtlasPass fluxAtlasPass_;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution) of the geometry atlas
     int geometryVersion_ = 0,
-        positionVersion_ = -1;  // position atlas on the CL side is current when equal
+        positionVersion_ = -1,  // position atlas on the CL side is current when equal
+        normalVersion_ = -1;    // normal atlas likewise
     GBufferPass gbufferPass_;
     CompositePass compositePass_;
     std::unique_ptr<GpuMesh> gpuMesh_;
@@ -78,7 +79,7 @@ class Renderer {
             buffer = cl::Buffer(ctx, CL_MEM_READ_WRITE, capacity);
         }
     };
-    GrowingBuffer fluxAtlas_, positionAtlas_, points_, radiosity_, gbufferCl_[3];
+    GrowingBuffer fluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_, gbufferCl_[3];
     std::vector<GrowingBuffer> lightCl_;
 };
 

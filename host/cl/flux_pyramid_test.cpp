@@ -1,0 +1,212 @@
+#include "cl/flux_pyramid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <random>
+
+#include "cl/cl_test_fixture.h"
+#include "cl/importance_sampler.h"
+#include "cl/table_test_util.h"
+
+namespace tsis {
+namespace {
+
+using test::analyticTable;
+using test::ClTest;
+using test::lookup;
+
+// A 16×16 atlas of two charts: the left half of the atlas on the plane z = 0,
+// the right half on the plane z = 3 (so blocks across the seam are far apart
+// in 3D), ~80% of the texels covered, random flux and texel areas.
+struct SyntheticAtlas {
+    static constexpr int kRes = 16;
+    std::vector<cl_float4> flux, position, normal;
+
+    explicit SyntheticAtlas(uint32_t seed) {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        const size_t n = size_t(kRes) * kRes;
+        flux.assign(n, {{0, 0, 0, 0}});
+        position.assign(n, {{0, 0, 0, 0}});
+        normal.assign(n, {{0, 0, 1, 0}});
+        for (int y = 0; y < kRes; ++y)
+            for (int x = 0; x < kRes; ++x) {
+                if (u(rng) > 0.8f) continue;
+                const size_t i = size_t(y) * kRes + x;
+                const bool right = x >= kRes / 2;
+                const float s = 0.25f;  // mm per texel
+                position[i] = {{(x % (kRes / 2)) * s, y * s, right ? 3.0f : 0.0f, 1.0f}};
+                normal[i] = {{0, 0, 1, s * s * (0.8f + 0.4f * u(rng))}};
+                flux[i] = {{u(rng), u(rng), u(rng), 1.0f}};
+            }
+    }
+    bool covered(size_t i) const { return position[i].s[3] > 0; }
+    glm::dvec3 at(size_t i) const { return {position[i].s[0], position[i].s[1], position[i].s[2]}; }
+};
+
+class FluxPyramidTest : public ClTest {
+  protected:
+    FluxPyramid pyramid{rt};
+    SyntheticAtlas atlas{5};
+
+    void build() {
+        pyramid.build(upload(atlas.flux), upload(atlas.position), upload(atlas.normal),
+                      SyntheticAtlas::kRes);
+    }
+    std::vector<TsisFluxNode> nodes() {
+        return download<TsisFluxNode>(pyramid.nodes(),
+                                      ImportanceSampler::pyramidSize(SyntheticAtlas::kRes));
+    }
+    // B at `points` through the pyramid with `epsilon`.
+    std::vector<cl_float4> gather(const std::vector<cl_float4>& points, float epsilon,
+                                  const ProfileTable& t, float ell = 0.5f) {
+        cl::Buffer out = buffer(points.size() * sizeof(cl_float4));
+        std::vector<cl_int> order(points.size());
+        for (size_t j = 0; j < order.size(); ++j) order[j] = cl_int(order.size() - 1 - j);
+        pyramid.gather(upload(points), upload(order), int(points.size()), epsilon, ell,
+                       upload(t.rgba), t.info, out);
+        return download<cl_float4>(out, points.size());
+    }
+    // The exact sum over every covered texel, in double.
+    glm::dvec3 exact(const cl_float4& p, const ProfileTable& t) const {
+        glm::dvec3 b(0.0);
+        for (size_t i = 0; i < atlas.flux.size(); ++i) {
+            if (!atlas.covered(i)) continue;
+            const double r = glm::length(glm::dvec3(p.s[0], p.s[1], p.s[2]) - atlas.at(i));
+            for (int c = 0; c < 3; ++c) b[c] += atlas.flux[i].s[c] * lookup(t, r, c);
+        }
+        return b;
+    }
+};
+
+std::vector<cl_float4> pointsOnCharts(int count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 2.0f), side(0.0f, 1.0f);
+    std::vector<cl_float4> p(count);
+    for (cl_float4& x : p) x = {{u(rng), 2 * u(rng), side(rng) < 0.5f ? 0.0f : 3.0f, 1.0f}};
+    return p;
+}
+
+TEST_F(FluxPyramidTest, NodesSumTheirTexelsAndBoundThemInRadius) {
+    build();
+    const std::vector<TsisFluxNode> n = nodes();
+    const int res = SyntheticAtlas::kRes;
+    for (int level = 0; (res >> level) >= 1; ++level) {
+        const int lr = res >> level, size = 1 << level;
+        for (int y = 0; y < lr; ++y)
+            for (int x = 0; x < lr; ++x) {
+                const TsisFluxNode& node =
+                    n[ImportanceSampler::levelOffset(res, level) + y * lr + x];
+                glm::dvec3 flux(0.0), weighted(0.0);
+                double area = 0, weight = 0;
+                for (int ty = y * size; ty < (y + 1) * size; ++ty)
+                    for (int tx = x * size; tx < (x + 1) * size; ++tx) {
+                        const size_t i = size_t(ty) * res + tx;
+                        if (!atlas.covered(i)) continue;
+                        const cl_float4& f = atlas.flux[i];
+                        flux += glm::dvec3(f.s[0], f.s[1], f.s[2]);
+                        area += atlas.normal[i].s[3];
+                        const double y709 =
+                            TSIS_LUMA_R * f.s[0] + TSIS_LUMA_G * f.s[1] + TSIS_LUMA_B * f.s[2];
+                        weighted += y709 * atlas.at(i);
+                        weight += y709;
+                    }
+                const std::string where = "level " + std::to_string(level) + " (" +
+                                          std::to_string(x) + "," + std::to_string(y) + ")";
+                EXPECT_NEAR(node.fr, flux.x, 1e-5 * (1 + flux.x)) << where;
+                EXPECT_NEAR(node.fb, flux.z, 1e-5 * (1 + flux.z)) << where;
+                EXPECT_NEAR(node.area, area, 1e-5 * (1 + area)) << where;
+                if (weight <= 0) continue;
+                const glm::dvec3 centroid = weighted / weight;
+                const glm::dvec3 p(node.px, node.py, node.pz);
+                EXPECT_LT(glm::length(p - centroid), 1e-4) << where;
+                // Every texel centre of the block lies inside the node's radius.
+                for (int ty = y * size; ty < (y + 1) * size; ++ty)
+                    for (int tx = x * size; tx < (x + 1) * size; ++tx) {
+                        const size_t i = size_t(ty) * res + tx;
+                        if (atlas.covered(i)) {
+                            EXPECT_LE(glm::length(atlas.at(i) - p), node.radius + 1e-5) << where;
+                        }
+                    }
+            }
+    }
+    // The top spans both charts (3 mm apart): its radius says so.
+    EXPECT_GT(n.back().radius, 1.5f);
+}
+
+TEST_F(FluxPyramidTest, EpsilonZeroIsTheExactSumOverTheAtlas) {
+    build();
+    const ProfileTable t = analyticTable(10.0);
+    const std::vector<cl_float4> points = pointsOnCharts(37, 2);  // not a multiple of 8
+    const std::vector<cl_float4> b = gather(points, 0.0f, t);
+    for (size_t j = 0; j < points.size(); ++j) {
+        const glm::dvec3 e = exact(points[j], t);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[j].s[c], e[c], 2e-5 * e[c]) << j << " " << c;
+    }
+    // Every covered texel for every lane of each group of 8.
+    size_t covered = 0;
+    for (size_t i = 0; i < atlas.flux.size(); ++i) covered += atlas.covered(i);
+    EXPECT_EQ(pyramid.lastEvaluations(), static_cast<long long>(5 * 8 * covered));
+}
+
+TEST_F(FluxPyramidTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
+    build();
+    const ProfileTable t = analyticTable(10.0);
+    const std::vector<cl_float4> points = pointsOnCharts(64, 3);
+    double lastError = 1e9;
+    long long lastCost = 0;
+    for (float epsilon : {0.5f, 0.1f, 0.02f, 0.004f}) {
+        const std::vector<cl_float4> b = gather(points, epsilon, t);
+        const long long cost = pyramid.lastEvaluations();
+        double worst = 0;
+        for (size_t j = 0; j < points.size(); ++j) {
+            const glm::dvec3 e = exact(points[j], t);
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[j].s[c] / e[c] - 1));
+        }
+        std::printf("epsilon %.3f: worst relative error %.5f, %lld evaluations\n", epsilon, worst,
+                    cost);
+        EXPECT_LT(worst, lastError) << epsilon;
+        EXPECT_GT(cost, lastCost) << epsilon;
+        // The bound: the midpoint error of a node used whole is O(epsilon).
+        EXPECT_LT(worst, epsilon) << epsilon;
+        lastError = worst;
+        lastCost = cost;
+    }
+}
+
+TEST_F(FluxPyramidTest, SameInputsGiveTheSameBits) {
+    build();
+    const ProfileTable t = analyticTable(10.0);
+    const std::vector<cl_float4> points = pointsOnCharts(40, 4);
+    const std::vector<cl_float4> a = gather(points, 0.05f, t);
+    build();
+    const std::vector<cl_float4> b = gather(points, 0.05f, t);
+    for (size_t j = 0; j < points.size(); ++j)
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(a[j].s[c], b[j].s[c]);
+}
+
+}  // namespace
+}  // namespace tsis
+
+namespace tsis {
+namespace {
+
+// A full 8×4 image: runs of 8 in the order are the 4×2 tiles, row-major within.
+TEST(FluxPyramidOrder, GroupsPixelsByTiles) {
+    std::vector<int> pixels(32);
+    for (int i = 0; i < 32; ++i) pixels[i] = i;
+    const std::vector<int> order = FluxPyramid::tileOrder(pixels, 8);
+    const std::vector<int> expected = {0,  1,  2,  3,  8,  9,  10, 11, 4,  5,  6,
+                                       7,  12, 13, 14, 15, 16, 17, 18, 19, 24, 25,
+                                       26, 27, 20, 21, 22, 23, 28, 29, 30, 31};
+    EXPECT_EQ(order, expected);
+    // With holes: still a permutation of the covered points.
+    const std::vector<int> sparse = {1, 5, 9, 30};
+    EXPECT_EQ(FluxPyramid::tileOrder(sparse, 8), (std::vector<int>{0, 2, 1, 3}));
+}
+
+}  // namespace
+}  // namespace tsis
