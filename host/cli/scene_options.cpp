@@ -32,7 +32,7 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"fov", true, false, "DEG  vertical field of view (default 35)"},
         {"width", true, false, "W  image width (default 512)"},
         {"height", true, false, "H  image height (default 512)"},
-        {"method", true, false, "NAME  tsis (default); see README for the others"},
+        {"method", true, false, "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see README"},
         {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
         {"seed", true, false, "S  random seed (default 1)"},
         {"spacing", true, false,
@@ -172,7 +172,7 @@ Scene sceneFromArgs(const Args& args) {
 
 RenderOptions renderOptionsFromArgs(const Args& args) {
     RenderOptions o;
-    o.method = args.getString("method", "tsis");
+    o.method = args.getString("method", o.method);
     o.width = args.getInt("width", 512, 1, 8192);
     o.height = args.getInt("height", 512, 1, 8192);
     o.samples = args.getInt("samples", 900, 1, 1 << 22);
