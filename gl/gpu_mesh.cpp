@@ -43,15 +43,48 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     attrib(2, 2, 6);  // uv
     attrib(3, 1, 8);  // area ratio
     glBindVertexArray(0);
+
+    std::vector<float> vertices;
+    vertices.reserve(mesh.positions.size() * 6);
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        const glm::vec3& n = mesh.normals[v];
+        vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    glGenVertexArrays(1, &indexedVao_);
+    glBindVertexArray(indexedVao_);
+    glGenBuffers(1, &indexedVbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, indexedVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
+                 vertices.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &ebo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
+                 mesh.triangles.data(), GL_STATIC_DRAW);
+    for (GLuint index : {0u, 1u}) {
+        glEnableVertexAttribArray(index);
+        glVertexAttribPointer(index, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                              reinterpret_cast<const void*>(index * 3 * sizeof(float)));
+    }
+    glBindVertexArray(0);
     checkGl("GpuMesh upload");
 }
 
 GpuMesh::~GpuMesh() {
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    for (GLuint b : {vbo_, indexedVbo_, ebo_})
+        if (b) glDeleteBuffers(1, &b);
+    for (GLuint a : {vao_, indexedVao_})
+        if (a) glDeleteVertexArrays(1, &a);
 }
 
 void GpuMesh::draw() const {
+    glBindVertexArray(indexedVao_);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+void GpuMesh::drawUnrolled() const {
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count_));
     glBindVertexArray(0);

@@ -1,5 +1,8 @@
-// The mesh on the GL side: triangles unindexed (three vertices each) so that a
-// per-triangle value, the area ratio A3D/AUV of eq. 3.2, can ride along.
+// The mesh on the GL side, twice: indexed (positions and normals of the shared
+// vertices) for the camera and light views, where llvmpipe's vertex cache
+// shades each vertex once instead of once per triangle corner; and unindexed
+// (three vertices per triangle) for the atlas pass, so that a per-triangle
+// value, the area ratio A3D/AUV of eq. 3.2, can ride along.
 #pragma once
 
 #include "gl/gl.h"
@@ -9,17 +12,19 @@ namespace tsis {
 
 class GpuMesh {
   public:
-    // Layout per vertex: position (3), normal (3), uv (2), area ratio (1).
+    // Attributes: 0 position, 1 normal; unindexed only: 2 uv, 3 area ratio.
     explicit GpuMesh(const Mesh& mesh);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    void draw() const;
+    void draw() const;          // indexed: positions and normals
+    void drawUnrolled() const;  // unindexed, with uv and area ratio (the atlas pass)
     size_t vertexCount() const { return count_; }
 
   private:
-    GLuint vao_ = 0, vbo_ = 0;
+    GLuint vao_ = 0, vbo_ = 0;                          // unindexed
+    GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
 };
 

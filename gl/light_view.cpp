@@ -17,7 +17,7 @@ glm::vec3 anyPerpendicularUp(const glm::vec3& dir) {
 
 }  // namespace
 
-LightView makeLightView(const Light& light, float radius, int resolution) {
+LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
     LightView lv;
     lv.light = light;
     const glm::vec3 centre(0.0f);
@@ -47,8 +47,9 @@ LightView makeLightView(const Light& light, float radius, int resolution) {
         lv.texelMm = 2.0f * r / static_cast<float>(resolution);
         lv.texelAreaMm = lv.texelMm * lv.texelMm;
     }
-    lv.target = std::make_unique<RenderTarget>(resolution, resolution,
-                                               std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F}, true);
+    lv.target = std::make_unique<RenderTarget>(
+        resolution, resolution,
+        maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);
     return lv;
 }
 

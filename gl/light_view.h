@@ -22,8 +22,10 @@ struct LightView {
 };
 
 // Projections that fit the object's bounding sphere (centre 0, radius R).
-// Throws tsis::Error for a point light inside that sphere or a zero direction.
-LightView makeLightView(const Light& light, float boundingRadius, int resolution);
+// maps: the target also has the flux and position maps (the light-view
+// methods read them); without, it is depth only. Throws tsis::Error for a
+// point light inside that sphere or a zero direction.
+LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
 // form the shaders sample.

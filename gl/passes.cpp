@@ -24,7 +24,8 @@ void ensureTarget(std::unique_ptr<RenderTarget>& t, int w, int h, std::vector<GL
 
 }  // namespace
 
-LightViewPass::LightViewPass() : program_("mesh.vert", "light_view.frag") {}
+LightViewPass::LightViewPass()
+    : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {}
 
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta) {
     program_.use();
@@ -35,11 +36,16 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, flo
     for (size_t i = 0; i < lights.size(); ++i) {
         RenderTarget& t = *lights[i].target;
         t.bindAndClear();
-        program_.set("u_viewProj", lights[i].viewProj);
-        program_.set("u_light", static_cast<int>(i));
-        program_.set("u_tanHalf", lights[i].tanHalf);
-        program_.set("u_texelAreaMm", lights[i].texelAreaMm);
-        program_.set("u_resolution", glm::vec2(t.width(), t.height()));
+        const bool maps = t.colorCount() > 0;
+        const ShaderProgram& p = maps ? program_ : depthProgram_;
+        p.use();
+        p.set("u_viewProj", lights[i].viewProj);
+        if (maps) {
+            p.set("u_light", static_cast<int>(i));
+            p.set("u_tanHalf", lights[i].tanHalf);
+            p.set("u_texelAreaMm", lights[i].texelAreaMm);
+            p.set("u_resolution", glm::vec2(t.width(), t.height()));
+        }
         mesh.draw();
     }
     glDisable(GL_DEPTH_TEST);
@@ -56,7 +62,7 @@ void GeometryAtlasPass::run(const GpuMesh& mesh, int resolution) {
     program_.set("u_texelArea", 1.0f / (static_cast<float>(resolution) * resolution));
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-    mesh.draw();
+    mesh.drawUnrolled();
     checkGl("GeometryAtlasPass");
 }
 
@@ -78,16 +84,21 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
     checkGl("FluxAtlasPass");
 }
 
-GBufferPass::GBufferPass() : program_("mesh.vert", "gbuffer.frag") {}
-
 void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
                       const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj,
-                      int width, int height) {
-    ensureTarget(target_, width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, true);
-    target_->bindAndClear();
-    program_.use();
-    bindLights(program_, lights, eta, kShadowUnit, shadows);
-    program_.set("u_viewProj", viewProj);
+                      int width, int height, bool irradiance) {
+    current_ = irradiance ? 1 : 0;
+    Variant& v = variants_[current_];
+    if (!v.program)
+        v.program = std::make_unique<ShaderProgram>(
+            "mesh.vert", "gbuffer.frag", irradiance ? "#define TSIS_GBUFFER_IRRADIANCE 1\n" : "");
+    std::vector<GLenum> formats(irradiance ? 3 : 2, GL_RGBA32F);
+    ensureTarget(v.target, width, height, formats, true);
+    v.target->bindAndClear();
+    const ShaderProgram& program = *v.program;
+    program.use();
+    bindLights(program, lights, eta, kShadowUnit, shadows);
+    program.set("u_viewProj", viewProj);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);

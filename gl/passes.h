@@ -16,7 +16,9 @@
 
 namespace tsis {
 
-// Pass B: per light, depth (shadow map), light-view flux and position maps.
+// Pass B: per light, depth (shadow map) and, when the light views have colour
+// targets (makeLightView with maps), the light-view flux and position maps.
+// Without maps only depth is drawn (no fragment shading).
 class LightViewPass {
   public:
     LightViewPass();
@@ -25,7 +27,7 @@ class LightViewPass {
     const ShadowMapArray& shadows() const { return shadows_; }
 
   private:
-    ShaderProgram program_;
+    ShaderProgram program_, depthProgram_;
     ShadowMapArray shadows_;
 };
 
@@ -57,19 +59,23 @@ class FluxAtlasPass {
     GLuint emptyVao_ = 0;
 };
 
-// Pass C: camera G-buffer: position (w = coverage), normal, irradiance
-// (attachments 0, 1, 2).
+// Pass C: camera G-buffer: position (w = coverage), normal and, with
+// `irradiance` (for the camera-view methods), E at each pixel's surface point
+// (attachments 0, 1, 2). Each variant is compiled on first use.
 class GBufferPass {
   public:
-    GBufferPass();
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj, int width,
-             int height);
-    const RenderTarget& target() const { return *target_; }
+             int height, bool irradiance);
+    const RenderTarget& target() const { return *variants_[current_].target; }
 
   private:
-    ShaderProgram program_;
-    std::unique_ptr<RenderTarget> target_;
+    struct Variant {
+        std::unique_ptr<ShaderProgram> program;
+        std::unique_ptr<RenderTarget> target;
+    };
+    Variant variants_[2];  // without, with irradiance
+    int current_ = 0;
 };
 
 // Composite: radiance L = Ft/π·B, then tone map + specular + sRGB.

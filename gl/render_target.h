@@ -22,6 +22,7 @@ class RenderTarget {
     int width() const { return width_; }
     int height() const { return height_; }
     GLuint color(int i) const { return colors_[static_cast<size_t>(i)]; }
+    int colorCount() const { return static_cast<int>(colors_.size()); }
     GLuint depth() const { return depth_; }
 
     // Attachment i as RGBA floats, GL order (row 0 = bottom).

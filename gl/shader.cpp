@@ -25,8 +25,9 @@ void requireStatus(GLuint object, GLenum status, GetIv getIv, GetLog getLog,
     checkFailed(__FILE__, __LINE__, concat(what, " failed:\n", log.data()));
 }
 
-GLuint compile(GLenum stage, const std::string& file) {
+GLuint compile(GLenum stage, const std::string& file, const std::string& defines) {
     std::string src = "#version 450 core\n";
+    src += defines;
     src += embeddedText(embeddedShaders(), "common.glsl");
     src += "\n#line 1 1\n";  // messages: source string 1 = the stage's own file
     src += embeddedText(embeddedShaders(), file);
@@ -41,10 +42,11 @@ GLuint compile(GLenum stage, const std::string& file) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile)
+ShaderProgram::ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile,
+                             const std::string& defines)
     : name_(vertexFile + "+" + fragmentFile) {
-    GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
-    GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+    GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
     id_ = glCreateProgram();
     glAttachShader(id_, vs);
     glAttachShader(id_, fs);

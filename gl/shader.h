@@ -14,7 +14,10 @@ namespace tsis {
 
 class ShaderProgram {
   public:
-    ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile);
+    // defines: lines such as "#define X 1\n", placed before common.glsl in
+    // both stages (a shader file's variants, instead of copies of it).
+    ShaderProgram(const std::string& vertexFile, const std::string& fragmentFile,
+                  const std::string& defines = "");
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;

@@ -1,14 +1,19 @@
-// Camera G-buffer: world position (w = coverage), normal, and the irradiance
-// E(x) at the pixel's surface point (for camera-view methods such as LSS).
+// Camera G-buffer: world position (w = coverage), normal, and with
+// TSIS_GBUFFER_IRRADIANCE the irradiance E(x) at the pixel's surface point
+// (for camera-view methods such as LSS; the shadow taps cost most of the pass).
 in vec3 v_position;
 in vec3 v_normal;
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
+#ifdef TSIS_GBUFFER_IRRADIANCE
 layout(location = 2) out vec4 o_irradiance;
+#endif
 
 void main() {
     vec3 n = normalize(v_normal);
     o_position = vec4(v_position, 1.0);
     o_normal = vec4(n, 1.0);
+#ifdef TSIS_GBUFFER_IRRADIANCE
     o_irradiance = vec4(irradiance(v_position, n), 1.0);
+#endif
 }

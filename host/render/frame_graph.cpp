@@ -38,6 +38,9 @@ void FrameGraph::execute(const std::vector<std::string>& outputs, FrameStats& st
     for (const std::string& o : outputs)
         if (!written.count(o))
             checkFailed(__FILE__, __LINE__, concat("frame graph: nothing writes output '", o, "'"));
+    needed_.clear();
+    for (size_t k = 0; k < passes_.size(); ++k)
+        if (keep[k]) needed_.insert(passes_[k].reads.begin(), passes_[k].reads.end());
     executed_.clear();
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!keep[k]) continue;

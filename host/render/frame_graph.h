@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,13 @@ class FrameGraph {
     void execute(const std::vector<std::string>& outputs, FrameStats& stats);
     // Names of the passes the last execute() ran (for tests and --stats).
     const std::vector<std::string>& executed() const { return executed_; }
+    // Whether a pass that execute() runs reads `resource`: valid from the
+    // start of execute(), so a pass can skip work that nothing will read.
+    bool isRead(const std::string& resource) const { return needed_.count(resource) > 0; }
 
   private:
     std::vector<Pass> passes_;
+    std::set<std::string> needed_;
     std::vector<std::string> executed_;
 };
 

@@ -175,13 +175,16 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
     FrameGraph graph;
     graph.addPass({"upload_mesh", {}, {"mesh"}, [&] { uploadMeshIfChanged(scene.mesh, mesh); }});
     graph.addPass({"gl_light_view", {"mesh"}, {"light_maps"}, [&] {
-                       if (sameLighting) return;
+                       // Flux and position maps only when a light-view method reads them.
+                       const bool maps = graph.isRead("light_maps_cl");
+                       if (sameLighting && (lightMapsMade_ || !maps)) return;
                        // Nothing made from the old maps is current any more.
                        lightViewKey_ = fluxKey_ = fluxUploadKey_ = lightMapsUploadKey_ = 0;
                        lights_.clear();
                        for (const Light& l : scene.lights)
                            lights_.push_back(
-                               makeLightView(l, ctx.boundingRadius, opt.lightResolution));
+                               makeLightView(l, ctx.boundingRadius, opt.lightResolution, maps));
+                       lightMapsMade_ = maps;
                        lightPass_.run(*gpuMesh_, lights_, eta);
                        glFinish();
                        lightViewKey_ = lighting;
@@ -203,7 +206,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                    }});
     graph.addPass({"gl_gbuffer", {"mesh", "light_maps"}, {"gbuffer"}, [&] {
                        gbufferPass_.run(*gpuMesh_, lights_, lightPass_.shadows(), eta, viewProj, w,
-                                        h);
+                                        h, graph.isRead("gbuffer_cl"));
                        glFinish();
                    }});
     // Staged hand-off: read back from GL, write to CL (no cl_khr_gl_sharing on

@@ -67,6 +67,7 @@ class Renderer {
     // Lighting keys (renderer.cpp) of what the GL targets and CL buffers hold;
     // 0 = nothing current. A frame with the same key reuses them.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0, fluxUploadKey_ = 0, lightMapsUploadKey_ = 0;
+    bool lightMapsMade_ = false;  // the light views have flux and position maps
     std::map<std::string, std::unique_ptr<Method>> methods_;
     std::vector<LightView> lights_;
     // CL buffers, grown as needed and kept across frames.

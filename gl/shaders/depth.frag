@@ -1,0 +1,2 @@
+// Light views that only make a shadow map: depth is all that is written.
+void main() {}
