@@ -32,7 +32,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"fov", true, false, "DEG  vertical field of view (default 35)"},
         {"width", true, false, "W  image width (default 512)"},
         {"height", true, false, "H  image height (default 512)"},
-        {"method", true, false, "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see README"},
+        {"method", true, false,
+         "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see "
+         "README"},
         {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
         {"seed", true, false, "S  random seed (default 1)"},
         {"spacing", true, false,
@@ -43,6 +45,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"pyramid-epsilon", true, false,
          "E  pyramid: use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E ≤ 1 "
          "(default 0.05)"},
+        {"pyramid-stride", true, false,
+         "S  pyramid: evaluate every S-th pixel and interpolate where the cell is one surface; "
+         "0 = from the mean free path and the pixel size (default), 1 = every pixel"},
         {"rp-bound", true, false,
          "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
         {"rp-k", true, false,
@@ -181,6 +186,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.epsilon = static_cast<float>(args.getDouble("epsilon", o.epsilon, 0.0, 1e3));
     o.pyramidEpsilon =
         static_cast<float>(args.getDouble("pyramid-epsilon", o.pyramidEpsilon, 0.0, 1.0));
+    o.pyramidStride = args.getInt("pyramid-stride", o.pyramidStride, 0, 16);
     auto powerOfTwo = [&](const char* name, int def) {
         int r = args.getInt(name, def, 1, 8192);
         if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");

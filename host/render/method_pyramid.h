@@ -11,6 +11,12 @@
 // max(radius², area/π) < ε·(d² + ℓ²), ℓ the smallest mean free path. No
 // random numbers (the same image for any --seed), no Rp or K to tune, and the
 // error falls with ε (--pyramid-epsilon) at a cost that grows like 1/ε.
+//
+// B is evaluated on a grid of every s-th pixel and interpolated between where
+// the cell is one surface (render/sparse_pixels.h): s = --pyramid-stride, or
+// by default the largest of 1, 2, 4 whose grid spacing at the target's
+// distance is at most ℓ/4, so the interpolation spans a fraction of the
+// scale on which B changes.
 #pragma once
 
 #include "cl/flux_pyramid.h"
@@ -25,7 +31,16 @@ class PyramidMethod : public Method {
     const char* name() const override { return "pyramid"; }
     void addPasses(FrameGraph& graph, FrameContext& ctx) override;
 
+    // The default grid stride for a camera, image height and mean free path ℓ.
+    static int autoStride(const Camera& camera, int height, double ell);
+    static constexpr int kMaxAutoStride = 4;
+    static constexpr double kGridSpacing = 0.25;  // grid spacing ≤ kGridSpacing·ℓ
+    // Corners within this·ℓ in 3D and within 2 frontal cell diagonals.
+    static constexpr double kMaxCornerDistance = 0.5;
+
   private:
+    void gather(FrameContext& ctx);
+
     ClRuntime& cl_;
     FluxPyramid pyramid_;
     DipoleTable rd_;

@@ -55,6 +55,27 @@ TEST(Pyramid, ErrorFallsAsEpsilonFallsAndCostRises) {
     EXPECT_LT(pyramid, 0.5 * tsis);
 }
 
+// The grid: at 256² the default stride evaluates a fraction of the pixels and
+// stays within 0.5% of evaluating every pixel.
+TEST(Pyramid, GridInterpolationStaysCloseToEveryPixel) {
+    for (const char* material : {"skin1", "skimmilk"}) {
+        const Scene scene = test::torusScene(material, 10.0);
+        RenderOptions opt = pyramidOptions(256, 256, RenderOptions{}.pyramidEpsilon);
+        const FrameResult sparse = test::renderWith(scene, opt, "pyramid");
+        opt.pyramidStride = 1;
+        const FrameResult every = test::renderWith(scene, opt, "pyramid");
+        const double diff = test::relativeRmse(sparse, every);
+        const double stride = test::statValue(sparse.stats, "pyramid_stride");
+        const double evaluated = test::statValue(sparse.stats, "pyramid_evaluated_pixels") /
+                                 test::statValue(sparse.stats, "covered_pixels");
+        std::printf("%s: stride %.0f, %.1f%% of the pixels evaluated, %.3f%% from every pixel\n",
+                    material, stride, 100 * evaluated, 100 * diff);
+        EXPECT_GE(stride, 2) << material;
+        EXPECT_LT(evaluated, 0.4) << material;
+        EXPECT_LT(diff, 0.005) << material;
+    }
+}
+
 // No random numbers: the seed changes nothing, and the same inputs give the
 // same bytes.
 TEST(Pyramid, DeterministicAndSeedIndependent) {

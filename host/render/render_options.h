@@ -28,6 +28,9 @@ struct RenderOptions {
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
     // pyramid: a node is used whole when max(radius², area/π) < ε·(d² + ℓ²)
     float pyramidEpsilon = 0.05f;
+    // pyramid: evaluate every s-th pixel, interpolate between; 0 = by ℓ and the
+    // pixel's size (method_pyramid.h), 1 = every pixel
+    int pyramidStride = 0;
     double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
     bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
     // Average this frame's radiosity with the frames before it while nothing

@@ -1,0 +1,82 @@
+#include "render/sparse_pixels.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "cl/flux_pyramid.h"
+#include "util/error.h"
+
+namespace tsis {
+namespace {
+
+constexpr float kFlatness = 0.1f;  // of maxCornerMm
+
+}  // namespace
+
+SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<float>& positions,
+                              int width, int height, int stride, float maxCornerMm) {
+    TSIS_CHECK_GE(stride, 1);
+    TSIS_CHECK_GE(positions.size(), pixels.size() * 4);
+    // Packed index of each pixel, −1 where uncovered.
+    std::vector<int> packed(static_cast<size_t>(width) * height, -1);
+    for (size_t k = 0; k < pixels.size(); ++k) packed[static_cast<size_t>(pixels[k])] = int(k);
+    auto at = [&](int k) {
+        const float* p = &positions[static_cast<size_t>(k) * 4];
+        return glm::vec3(p[0], p[1], p[2]);
+    };
+    auto pointAt = [&](int x, int y) {
+        return x < width && y < height ? packed[static_cast<size_t>(y) * width + x] : -1;
+    };
+
+    SparsePixels plan;
+    std::vector<int> grid, gridCells, rest, restPixels;
+    for (size_t k = 0; k < pixels.size(); ++k) {
+        const int x = pixels[k] % width, y = pixels[k] / width;
+        const int x0 = x - x % stride, y0 = y - y % stride;
+        if (x == x0 && y == y0) {
+            grid.push_back(int(k));
+            // The grid in its own coordinates, so its tiles are 4×2 grid points.
+            gridCells.push_back((y0 / stride) * ((width + stride - 1) / stride) + x0 / stride);
+            continue;
+        }
+        const std::array<int, 4> c = {pointAt(x0, y0), pointAt(x0 + stride, y0),
+                                      pointAt(x0, y0 + stride), pointAt(x0 + stride, y0 + stride)};
+        bool ok = true;
+        for (int corner : c)
+            ok = ok && corner >= 0 && glm::distance(at(corner), at(int(k))) <= maxCornerMm;
+        if (!ok) {
+            rest.push_back(int(k));
+            restPixels.push_back(pixels[k]);
+            continue;
+        }
+        const float fx = float(x - x0) / stride, fy = float(y - y0) / stride;
+        const std::array<float, 4> w = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+        // The corners' positions interpolated must land near the pixel's own:
+        // the cell is close to flat, so B's interpolation follows the surface.
+        glm::vec3 p(0.0f);
+        for (int j = 0; j < 4; ++j) p += w[size_t(j)] * at(c[size_t(j)]);
+        if (glm::distance(p, at(int(k))) > kFlatness * maxCornerMm) {
+            rest.push_back(int(k));
+            restPixels.push_back(pixels[k]);
+            continue;
+        }
+        plan.interpolate.push_back({int(k), c, w});
+    }
+    for (int i : FluxPyramid::tileOrder(gridCells, (width + stride - 1) / stride))
+        plan.evaluate.push_back(grid[static_cast<size_t>(i)]);
+    for (int i : FluxPyramid::tileOrder(restPixels, width))
+        plan.evaluate.push_back(rest[static_cast<size_t>(i)]);
+    return plan;
+}
+
+void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba) {
+    for (const SparsePixels::Interpolated& p : plan.interpolate)
+        for (int c = 0; c < 4; ++c) {
+            float v = 0;
+            for (int j = 0; j < 4; ++j)
+                v += p.weights[size_t(j)] * rgba[static_cast<size_t>(p.corners[size_t(j)]) * 4 + c];
+            rgba[static_cast<size_t>(p.point) * 4 + c] = v;
+        }
+}
+
+}  // namespace tsis

@@ -1,0 +1,73 @@
+#include "render/sparse_pixels.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace tsis {
+namespace {
+
+// A width×height image of a plane z = depth(x, y), every pixel covered,
+// 0.1 mm per pixel.
+struct Image {
+    int width, height;
+    std::vector<int> pixels;
+    std::vector<float> positions;
+    Image(int w, int h, float (*depth)(int x, int y)) : width(w), height(h) {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                pixels.push_back(y * w + x);
+                positions.insert(positions.end(), {0.1f * x, 0.1f * y, depth(x, y), 1.0f});
+            }
+    }
+};
+
+TEST(SparsePixels, StrideOneEvaluatesEveryPoint) {
+    const Image img(9, 6, [](int, int) { return 0.0f; });
+    const SparsePixels plan = planSparsePixels(img.pixels, img.positions, 9, 6, 1, 1.0f);
+    EXPECT_TRUE(plan.interpolate.empty());
+    std::vector<int> sorted = plan.evaluate;
+    std::sort(sorted.begin(), sorted.end());
+    for (int k = 0; k < 54; ++k) EXPECT_EQ(sorted[size_t(k)], k);
+}
+
+// On a flat plane a field linear in x and y is reproduced exactly between the
+// grid points; every point is evaluated or interpolated, once.
+TEST(SparsePixels, LinearFieldIsExactOnAPlane) {
+    const int w = 17, h = 13, stride = 4;
+    const Image img(w, h, [](int, int) { return 0.0f; });
+    const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 2.0f);
+    EXPECT_EQ(plan.evaluate.size() + plan.interpolate.size(), size_t(w * h));
+    // Only the grid itself is evaluated where the cell is complete: 5×4 grid
+    // points plus the pixels past the last full cell (x = 17 is outside).
+    EXPECT_LT(plan.evaluate.size(), size_t(w * h) / 4);
+    std::vector<float> rgba(size_t(w * h) * 4, -1.0f);
+    auto field = [&](int k) { return 3.0f + 0.5f * (k % w) - 0.25f * (k / w); };
+    for (int k : plan.evaluate)
+        for (int c = 0; c < 4; ++c) rgba[size_t(k) * 4 + c] = field(k) * float(c + 1);
+    interpolateSparsePixels(plan, rgba);
+    for (int k = 0; k < w * h; ++k)
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(rgba[size_t(k) * 4 + c], field(k) * float(c + 1), 1e-4f) << k << " " << c;
+}
+
+// A depth jump (another surface 5 mm behind) and a missing corner: the
+// pixels of those cells are evaluated, not interpolated across.
+TEST(SparsePixels, DepthJumpsAndHolesAreEvaluated) {
+    const int w = 16, h = 8, stride = 4;
+    Image img(w, h, [](int x, int) { return x >= 6 ? 5.0f : 0.0f; });
+    // A hole at grid point (12, 4).
+    const int hole = 4 * w + 12;
+    img.pixels.erase(img.pixels.begin() + hole);
+    img.positions.erase(img.positions.begin() + hole * 4, img.positions.begin() + hole * 4 + 4);
+    const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 1.0f);
+    // Cells at x0 = 4 span the jump (x = 6); cells at x0 = 8 have the hole as a
+    // corner; cells at x0 = 12 reach past the image. Only x0 = 0 is interpolated.
+    ASSERT_FALSE(plan.interpolate.empty());
+    for (const SparsePixels::Interpolated& p : plan.interpolate)
+        EXPECT_LT(img.pixels[size_t(p.point)] % w, 4) << "pixel " << img.pixels[size_t(p.point)];
+    EXPECT_EQ(plan.evaluate.size() + plan.interpolate.size(), img.pixels.size());
+}
+
+}  // namespace
+}  // namespace tsis
