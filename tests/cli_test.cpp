@@ -109,6 +109,27 @@ const BadInput kBadInputs[] = {
      "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=", "no OpenCL device"},
     {"NoSuchClDevice", "render " + kFast + "--cl-device no-such-gpu", "", "no-such-gpu"},
     {"MissingOutputDir", "render " + kFast + "-o @DIR@/missing/x.png", "", "missing"},
+    // Option errors come before the mesh (a missing one here) and any GL/CL start-up.
+    {"ZeroWidthFirst", "render --width 0 --mesh @DIR@/nope.off", "", "--width"},
+    {"UnknownMethodFirst", "render --method magic --mesh @DIR@/nope.off", "", "magic"},
+    {"RdPartOfHybridFirst", "render --method hybrid --rd-part local --mesh @DIR@/nope.off", "",
+     "--rd-part"},
+    {"NineLightsFirst",
+     "render --mesh @DIR@/nope.off" +
+         [] {
+             std::string s;
+             for (int i = 0; i < 9; ++i) s += " --light dir:0,-1,0:1,1,1";
+             return s;
+         }(),
+     "", "too many lights"},
+    {"AnimateBadFpsFirst", "animate --fps 0 --mesh @DIR@/nope.off -o @DIR@/anim", "", "--fps"},
+    {"OutputIsADirectory", "render --mesh @DIR@/nope.off -o @DIR@", "", "it is a directory"},
+    {"StatsIsADirectory", "render --mesh @DIR@/nope.off --stats @DIR@", "", "it is a directory"},
+    {"UnwritableOutputDir", "render --mesh @DIR@/nope.off -o /sys/x.png", "",
+     "cannot write '/sys/x.png'"},
+    {"UnknownImageFormat", "render --mesh @DIR@/nope.off -o @DIR@/x.xyz", "", "no image format"},
+    {"StatsOnFullDevice", "render " + kFast + "--stats /dev/full", "",
+     "cannot write '/dev/full': No space left on device"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, CliBadInput, ::testing::ValuesIn(kBadInputs),
