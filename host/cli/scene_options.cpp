@@ -16,7 +16,7 @@ namespace tsis {
 const std::vector<OptionSpec>& sceneOptionSpecs() {
     static const std::vector<OptionSpec> specs = {
         {"mesh", true, false,
-         "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default "
+         "M  mesh file (.off/.obj/.ply/.stl), builtin:NAME or a data mesh name (default "
          "builtin:default)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"material", true, false, "NAME  preset material (default skin1; see tsis materials)"},
