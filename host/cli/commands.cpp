@@ -205,6 +205,7 @@ int runAtlas(const std::vector<std::string>& argv) {
     AtlasOptions ao = atlasOptionsFromArgs(args);
     OutputSet outputs;
     const auto png = args.value("output");
+    if (png && *png == "-") fail("-o -: standard output carries the statistics");
     if (png) addImageOutput(outputs, *png);
     Mesh mesh = loadMesh(*meshSpec);
     normalizeMesh(mesh, size);

@@ -24,8 +24,8 @@ std::optional<std::string> findInPath(const std::string& name) {
     while (begin <= path.size()) {
         size_t end = path.find(':', begin);
         if (end == std::string::npos) end = path.size();
-        std::string dir = path.substr(begin, end - begin);
-        if (dir.empty()) dir = ".";  // an empty entry is the current folder
+        // An empty entry is the current folder.
+        const std::string dir = end > begin ? path.substr(begin, end - begin) : std::string(".");
         const std::string file = dir + "/" + name;
         struct stat st;
         if (::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
