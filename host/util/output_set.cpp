@@ -135,6 +135,7 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         const fs::file_status ds = fs::status(dir, ec);
         if (ds.type() == fs::file_type::not_found)
             cannotWrite(target, "directory '", dir.string(), "' does not exist");
+        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
         if (ds.type() != fs::file_type::directory)
             cannotWrite(target, "'", dir.string(), "' is not a directory");
         const fs::path abs = fs::weakly_canonical(fs::absolute(e.dest), ec);
@@ -148,8 +149,10 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         if (fd < 0) cannotWrite(target, std::strerror(errno));
         ::close(fd);
     } else {
-        // The format follows the name given (a link to /dev/null named x.png is a PNG).
+        // The format follows the name given (a link to /dev/null named x.png is a
+        // PNG), else the file it points to.
         std::string ext = fs::path(target).extension().string();
+        if (ext.empty()) ext = e.dest.extension().string();
         if (ext.empty() && e.kind == Kind::WriteThrough) ext = defaultExtension;
         const fs::path dir =
             e.kind == Kind::Rename ? e.dest.parent_path() : fs::temp_directory_path();
