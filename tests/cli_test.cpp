@@ -2,7 +2,9 @@
 // one clear line on stderr, a non-zero exit, and no output file left behind.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 
 #include "test_util.h"
 
@@ -113,6 +115,27 @@ const BadInput kBadInputs[] = {
      "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=", "no OpenCL device"},
     {"NoSuchClDevice", "render " + kFast + "--cl-device no-such-gpu", "", "no-such-gpu"},
     {"MissingOutputDir", "render " + kFast + "-o @DIR@/missing/x.png", "", "missing"},
+    // Option errors come before the mesh (a missing one here) and any GL/CL start-up.
+    {"ZeroWidthFirst", "render --width 0 --mesh @DIR@/nope.off", "", "--width"},
+    {"UnknownMethodFirst", "render --method magic --mesh @DIR@/nope.off", "", "magic"},
+    {"RdPartOfHybridFirst", "render --method hybrid --rd-part local --mesh @DIR@/nope.off", "",
+     "--rd-part"},
+    {"NineLightsFirst",
+     "render --mesh @DIR@/nope.off" +
+         [] {
+             std::string s;
+             for (int i = 0; i < 9; ++i) s += " --light dir:0,-1,0:1,1,1";
+             return s;
+         }(),
+     "", "too many lights"},
+    {"AnimateBadFpsFirst", "animate --fps 0 --mesh @DIR@/nope.off -o @DIR@/anim", "", "--fps"},
+    {"OutputIsADirectory", "render --mesh @DIR@/nope.off -o @DIR@", "", "it is a directory"},
+    {"StatsIsADirectory", "render --mesh @DIR@/nope.off --stats @DIR@", "", "it is a directory"},
+    {"UnwritableOutputDir", "render --mesh @DIR@/nope.off -o /sys/x.png", "",
+     "cannot write '/sys/x.png'"},
+    {"UnknownImageFormat", "render --mesh @DIR@/nope.off -o @DIR@/x.xyz", "", "no image format"},
+    {"StatsOnFullDevice", "render " + kFast + "--stats /dev/full", "",
+     "cannot write '/dev/full': No space left on device"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, CliBadInput, ::testing::ValuesIn(kBadInputs),
@@ -141,6 +164,29 @@ TEST(Cli, BrokenMeshFilesAreRefused) {
         EXPECT_NE(r.err.find(name), std::string::npos) << name << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir.file("x.png"))) << name;
     }
+}
+
+// An STL file (binary, one corner record per triangle) renders like any mesh.
+TEST(Cli, RendersStlFile) {
+    ScratchDir dir;
+    const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    std::string stl(80, ' ');
+    auto put = [&](const void* p, size_t n) { stl.append(static_cast<const char*>(p), n); };
+    const uint32_t count = 4;  // little-endian on the machines tsis builds for
+    put(&count, 4);
+    for (const auto& f : faces) {
+        const float normal[3] = {0, 0, 0};
+        put(normal, 12);
+        for (int c : f) put(v[c], 12);
+        stl.append(2, '\0');
+    }
+    std::ofstream(dir.file("tetra.stl"), std::ios::binary) << stl;
+    RunResult r = runTsis("render " + kFast + "--mesh " + dir.file("tetra.stl") + " -o " +
+                          dir.file("t.png") + " --stats " + dir.file("s.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(dir.file("s.json")).find("\"triangles\": 4"), std::string::npos)
+        << readFile(dir.file("s.json"));
 }
 
 TEST(Cli, HelpAndInfoCommands) {

@@ -44,6 +44,12 @@ std::string readFile(const std::string& path) {
     return s.str();
 }
 
+std::string shellQuote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
 size_t fileCount(const std::filesystem::path& dir) {
     size_t n = 0;
     for (auto it = std::filesystem::directory_iterator(dir);

@@ -35,6 +35,9 @@ class ScratchDir {
 
 std::string readFile(const std::string& path);
 
+// `s` as one shell word (for runTsis arguments with quotes, spaces, `$()`).
+std::string shellQuote(const std::string& s);
+
 // Number of files in a folder (to prove nothing half-written was left).
 size_t fileCount(const std::filesystem::path& dir);
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 
+#include "cl/pocl_cache.h"
 #include "cl/program_cache.h"
 #include "util/embedded.h"
 #include "util/error.h"
@@ -72,9 +73,10 @@ std::string joined(const std::vector<Candidate>& all) {
 }  // namespace
 
 ClRuntime::ClRuntime(const std::string& selector) {
+    const std::string poclCache = preparePoclCache();  // before PoCL reads its environment
     std::string why;
     const std::vector<Candidate> all = enumerate(&why);
-    if (all.empty()) fail("no OpenCL device: ", why);
+    if (all.empty()) fail("no OpenCL device: ", why, poclCache.empty() ? "" : "; ", poclCache);
 
     std::string sel = selector;
     std::string from;
@@ -108,6 +110,7 @@ ClRuntime::ClRuntime(const std::string& selector) {
 }
 
 std::vector<std::string> ClRuntime::availableDevices() {
+    preparePoclCache();
     std::string why;
     std::vector<std::string> names;
     for (const Candidate& c : enumerate(&why)) names.push_back(c.name);

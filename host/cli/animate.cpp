@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/args.h"
@@ -26,7 +27,8 @@
 #include "mesh/mesh_io.h"
 #include "render/renderer.h"
 #include "util/error.h"
-#include "util/output_file.h"
+#include "util/output_set.h"
+#include "util/process.h"
 #include "util/progress.h"
 #include "util/timer.h"
 
@@ -36,7 +38,8 @@ namespace {
 
 std::vector<OptionSpec> animateSpecs() {
     std::vector<OptionSpec> specs = sceneOptionSpecs();
-    specs.push_back({"output|o", true, false, "DIR  folder for frame_NNNN.png (required; created)"});
+    specs.push_back(
+        {"output|o", true, false, "DIR  folder for frame_NNNN.png (required; created)"});
     specs.push_back({"frames", true, false, "N  number of frames (default 30)"});
     specs.push_back({"orbit", false, false, "the lights orbit the object (one turn)"});
     specs.push_back({"size-to", true, false, "S  size at the last frame, mm (from --size-mm)"});
@@ -63,7 +66,13 @@ void rescale(Scene& scene, const Scene& base, double s0, double s) {
     }
 }
 
-bool haveFfmpeg() { return std::system("command -v ffmpeg >/dev/null 2>&1") == 0; }
+// ffmpeg's image-sequence input for the frames in `dir`: absolute, so that
+// no path reads as an option or a protocol, and '%' doubled (ffmpeg's pattern).
+std::string framePattern(const std::filesystem::path& dir) {
+    std::string d = std::filesystem::absolute(dir).string(), out;
+    for (char c : d) out += c == '%' ? std::string("%%") : std::string(1, c);
+    return out + "/frame_%04d.png";
+}
 
 }  // namespace
 
@@ -71,18 +80,21 @@ int runAnimate(const std::vector<std::string>& argv) {
     const std::vector<OptionSpec> specs = animateSpecs();
     for (const std::string& a : argv)
         if (a == "--help" || a == "-h") {
-            std::cout << usageText("tsis animate -o DIR [--frames N] [--orbit] [--size-to S] "
-                                   "[--materials A,B] [render options]",
-                                   specs);
+            std::cout << usageText(
+                "tsis animate -o DIR [--frames N] [--orbit] [--size-to S] "
+                "[--materials A,B] [render options]",
+                specs);
             return 0;
         }
     Args args("animate", specs, argv);
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
     auto out = args.value("output");
     if (!out) fail("tsis animate needs -o DIR");
+    // Every option first, then every output, then the mesh, GL and CL.
     const int frames = args.getInt("frames", 30, 1, 100000);
     const double size0 = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
     const double size1 = args.getDouble("size-to", size0, 1e-3, 1e5);
+    const int videoFps = args.getInt("fps", 15, 1, 240);
     std::vector<std::string> materials;
     if (auto m = args.value("materials")) {
         std::stringstream ss(*m);
@@ -90,15 +102,28 @@ int runAnimate(const std::vector<std::string>& argv) {
             if (!name.empty()) materials.push_back(name);
         for (const std::string& name : materials) presetMaterial(name);  // fails early on a typo
     }
-    if (auto s = args.value("stats")) {
-        std::filesystem::path dir = std::filesystem::path(*s).parent_path();
-        if (!dir.empty() && !std::filesystem::is_directory(dir))
-            fail("cannot write '", *s, "': directory '", dir.string(), "' does not exist");
-    }
-    std::filesystem::create_directories(*out);
-
-    const Scene base = sceneFromArgs(args);
+    Scene base = parseScene(args);
     const RenderOptions options = renderOptionsFromArgs(args);
+    const auto statsPath = args.value("stats");
+
+    // The frames are staged in a hidden folder inside DIR (ffmpeg reads them
+    // there) and move to DIR with the video and the stats when all succeeded.
+    OutputSet outputs;
+    outputs.makeDirectory(*out);
+    const std::filesystem::path stage = outputs.makeStagingDirectory(*out);
+    auto framePath = [&](int f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", f);
+        return (std::filesystem::path(*out) / name).string();
+    };
+    for (int f = 0; f < frames; ++f) outputs.add(framePath(f), "", stage);
+    const std::string video = (std::filesystem::path(*out) / "animation.mp4").string();
+    const std::optional<std::string> ffmpeg =
+        args.flag("video") ? findInPath("ffmpeg") : std::nullopt;
+    if (ffmpeg) outputs.add(video);
+    if (statsPath) outputs.add(*statsPath, ".json");
+
+    loadSceneMesh(base, args);
     Scene scene = base;
     Renderer renderer(args.getString("cl-device", ""));
     Progress progress("animate", frames);
@@ -110,19 +135,18 @@ int runAnimate(const std::vector<std::string>& argv) {
         if (size1 != size0) rescale(scene, base, size0, size0 + (size1 - size0) * phase);
         if (!materials.empty()) scene.material = presetMaterial(materials[f % materials.size()]);
         if (args.flag("orbit")) {
-            const glm::mat4 rot = glm::rotate(glm::mat4(1.0f),
-                                              static_cast<float>(2.0 * M_PI * f / frames),
-                                              glm::vec3(0.0f, 1.0f, 0.0f));
+            const glm::mat4 rot =
+                glm::rotate(glm::mat4(1.0f), static_cast<float>(2.0 * M_PI * f / frames),
+                            glm::vec3(0.0f, 1.0f, 0.0f));
             for (size_t i = 0; i < scene.lights.size(); ++i) {
                 const glm::vec3 v = size1 != size0 ? scene.lights[i].vec : base.lights[i].vec;
                 scene.lights[i].vec = glm::vec3(rot * glm::vec4(v, 0.0f));
             }
         }
         FrameResult frame = renderer.render(scene, options);
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d.png", f);
-        writeImage8((std::filesystem::path(*out) / name).string(), frame.width, frame.height, 3,
-                    frame.rgb8);
+        outputs.write(framePath(f), [&](const std::filesystem::path& file) {
+            writeImage8(file.string(), frame.width, frame.height, 3, frame.rgb8);
+        });
         ms.push_back(t.ms());  // everything: scene update, frame, PNG
         Json j = Json::object();
         j.set("frame", f);
@@ -136,24 +160,19 @@ int runAnimate(const std::vector<std::string>& argv) {
     double steadyMs = 0;
     for (size_t i = 1; i < ms.size(); ++i) steadyMs += ms[i];
     const double fps = ms.size() > 1 ? (ms.size() - 1) * 1000.0 / steadyMs : 1000.0 / ms[0];
-    std::fprintf(stderr, "tsis: %d frames in %s; first %.0f ms, steady %.2f fps\n", frames,
-                 out->c_str(), ms[0], fps);
-    if (args.flag("video")) {
-        if (!haveFfmpeg()) {
-            std::fprintf(stderr, "tsis: ffmpeg not found; no video written\n");
-        } else {
-            const std::filesystem::path video = std::filesystem::path(*out) / "animation.mp4";
-            writeAtomically(video, [&](const std::filesystem::path& tmp) {
-                std::ostringstream cmd;
-                cmd << "ffmpeg -loglevel error -y -framerate "
-                    << args.getInt("fps", 15, 1, 240) << " -i '"
-                    << (std::filesystem::path(*out) / "frame_%04d.png").string()
-                    << "' -pix_fmt yuv420p '" << tmp.string() << "'";
-                if (std::system(cmd.str().c_str()) != 0) fail("ffmpeg failed: ", cmd.str());
-            });
-        }
+    if (args.flag("video") && !ffmpeg)
+        std::fprintf(stderr, "tsis: ffmpeg not found on the PATH; no video written\n");
+    if (ffmpeg) {
+        outputs.write(video, [&](const std::filesystem::path& file) {
+            // No shell: every path reaches ffmpeg as one argument, whatever it holds.
+            const int rc = runProgram(
+                *ffmpeg, {"-nostdin", "-loglevel", "error", "-y", "-framerate",
+                          std::to_string(videoFps), "-i", framePattern(stage), "-pix_fmt",
+                          "yuv420p", std::filesystem::absolute(file).string()});
+            if (rc != 0) fail("cannot write '", file.string(), "': ffmpeg exited with ", rc);
+        });
     }
-    if (auto s = args.value("stats")) {
+    if (statsPath) {
         Json j = Json::object();
         j.set("frames", frames);
         j.set("first_ms", ms[0]);
@@ -163,8 +182,12 @@ int runAnimate(const std::vector<std::string>& argv) {
         j.set("height", options.height);
         j.set("samples", options.samples);
         j.set("per_frame", perFrame);
-        writeTextFile(*s, j.dump() + "\n");
+        outputs.write(*statsPath,
+                      [&](const std::filesystem::path& file) { writeText(file, j.dump() + "\n"); });
     }
+    outputs.commit();
+    std::fprintf(stderr, "tsis: %d frames in %s; first %.0f ms, steady %.2f fps\n", frames,
+                 printable(*out).c_str(), ms[0], fps);
     return 0;
 }
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/args.h"
 #include "cli/animate.h"
+#include "cli/args.h"
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
 #include "image/image_io.h"
@@ -16,7 +16,7 @@
 #include "physics/report.h"
 #include "render/renderer.h"
 #include "util/error.h"
-#include "util/output_file.h"
+#include "util/output_set.h"
 
 namespace tsis {
 
@@ -62,10 +62,26 @@ std::vector<OptionSpec> renderSpecs() {
     return specs;
 }
 
-void requireParentDir(const std::string& path) {
-    std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir))
-        fail("cannot write '", path, "': directory '", dir.string(), "' does not exist");
+// The AOV files of --aov DIR (flux_atlas only when the method made the atlas).
+struct Aov {
+    const char* file;
+    ImageF FrameResult::*image;
+    std::vector<std::string> channels;
+};
+const Aov kAovs[] = {
+    {"radiosity.exr", &FrameResult::radiosity, {"R", "G", "B"}},
+    {"radiance.exr", &FrameResult::radiance, {"R", "G", "B"}},
+    {"position.exr", &FrameResult::position, {"X", "Y", "Z"}},
+    {"normal.exr", &FrameResult::normal, {"X", "Y", "Z"}},
+    {"coverage.exr", &FrameResult::coverage, {"Y"}},
+    {"flux_atlas.exr", &FrameResult::fluxAtlas, {"R", "G", "B"}},
+};
+
+// An image output: its place takes a file and its format is known ("-": a PNG on stdout).
+void addImageOutput(OutputSet& outputs, const std::string& path) {
+    outputs.add(path, ".png");
+    // The temporary has the extension the image is written by ("-", /dev/null: PNG).
+    outputs.write(path, [](const std::filesystem::path& f) { requireImageFormat(f.string()); });
 }
 
 int runRender(const std::vector<std::string>& argv) {
@@ -76,43 +92,58 @@ int runRender(const std::vector<std::string>& argv) {
     }
     Args args("render", specs, argv);
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
-    const std::string output = args.getString("output", "tsis.png");
-    // Output folders are checked before the (long) render, not after it.
-    requireParentDir(output);
-    if (auto s = args.value("stats")) requireParentDir(*s);
-    Scene scene = sceneFromArgs(args);
+    // Every option is checked first, then every output, and only then the
+    // (slow) mesh, GL and CL: a mistake costs no waiting.
+    Scene scene = parseScene(args);
     RenderOptions options = renderOptionsFromArgs(args);
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
     options.progressive = args.flag("progressive");
-
     const int frames = args.getInt("frames", 1, 1, 100000);
+    const std::string output = args.getString("output", "tsis.png");
+    const auto statsPath = args.value("stats");
+
+    OutputSet outputs;
+    addImageOutput(outputs, output);
+    auto aovPath = [&](const char* name) {
+        return (std::filesystem::path(*aovDir) / name).string();
+    };
+    if (aovDir) {
+        outputs.makeDirectory(*aovDir);
+        for (const Aov& a : kAovs) outputs.add(aovPath(a.file));
+    }
+    if (statsPath) outputs.add(*statsPath, ".json");
+
+    loadSceneMesh(scene, args);
     Renderer renderer(args.getString("cl-device", ""));
     FrameResult frame = renderer.render(scene, options);
     for (int i = 1; i < frames; ++i) frame = renderer.render(scene, options);
 
-    writeImage8(output, frame.width, frame.height, 3, frame.rgb8);
+    outputs.write(output, [&](const std::filesystem::path& f) {
+        writeImage8(f.string(), frame.width, frame.height, 3, frame.rgb8);
+    });
     if (aovDir) {
-        std::filesystem::create_directories(*aovDir);
-        auto path = [&](const char* name) {
-            return (std::filesystem::path(*aovDir) / name).string();
-        };
-        writeImageF(path("radiosity.exr"), frame.radiosity, {"R", "G", "B"});
-        writeImageF(path("radiance.exr"), frame.radiance, {"R", "G", "B"});
-        writeImageF(path("position.exr"), frame.position, {"X", "Y", "Z"});
-        writeImageF(path("normal.exr"), frame.normal, {"X", "Y", "Z"});
-        writeImageF(path("coverage.exr"), frame.coverage, {"Y"});
-        // Methods that never read the atlas (ltsm, lss, …) leave it unmade.
-        if (frame.fluxAtlas.channels > 0)
-            writeImageF(path("flux_atlas.exr"), frame.fluxAtlas, {"R", "G", "B"});
+        for (const Aov& a : kAovs) {
+            const ImageF& image = frame.*a.image;
+            // Methods that never read the atlas (ltsm, lss, …) leave it unmade.
+            if (image.channels == 0) {
+                outputs.discard(aovPath(a.file));
+                continue;
+            }
+            outputs.write(aovPath(a.file), [&](const std::filesystem::path& f) {
+                writeImageF(f.string(), image, a.channels);
+            });
+        }
     }
-    if (auto statsPath = args.value("stats")) {
+    if (statsPath) {
         Json j = frame.stats.toJson();
         j.set("mesh", scene.mesh.name);
         j.set("material", scene.material.name);
         j.set("lavg", frame.lavg);
-        writeTextFile(*statsPath, j.dump() + "\n");
+        outputs.write(*statsPath,
+                      [&](const std::filesystem::path& f) { writeText(f, j.dump() + "\n"); });
     }
+    outputs.commit();
     return 0;
 }
 
@@ -169,17 +200,27 @@ int runAtlas(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
     auto meshSpec = args.value("mesh");
     if (!meshSpec) fail("tsis atlas needs --mesh");
-    if (auto o = args.value("output")) requireParentDir(*o);
-    Mesh mesh = loadMesh(*meshSpec);
-    normalizeMesh(mesh, args.getDouble("size-mm", 10.0, 1e-3, 1e5));
-    ensureNormals(mesh);
+    const double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    const std::string mode = atlasMode(args);
     AtlasOptions ao = atlasOptionsFromArgs(args);
+    OutputSet outputs;
+    const auto png = args.value("output");
+    if (png && *png == "-") fail("-o -: standard output carries the statistics");
+    if (png) addImageOutput(outputs, *png);
+    Mesh mesh = loadMesh(*meshSpec);
+    normalizeMesh(mesh, size);
+    ensureNormals(mesh);
     AtlasStats built;
-    mesh = ensureAtlas(mesh, atlasMode(args), ao, &built);
+    mesh = ensureAtlas(mesh, mode, ao, &built);
     AtlasStats stats = measureAtlas(mesh, ao.resolution);
     stats.seconds = built.seconds;
     stats.fromCache = built.fromCache;
-    if (auto o = args.value("output")) writeAtlasPng(*o, mesh, ao.resolution);
+    if (png) {
+        outputs.write(*png, [&](const std::filesystem::path& f) {
+            writeAtlasPng(f.string(), mesh, ao.resolution);
+        });
+        outputs.commit();
+    }
     Json j = atlasStatsJson(stats);
     if (args.flag("json")) {
         std::cout << j.dump() << "\n";
@@ -196,8 +237,7 @@ int runAtlas(const std::vector<std::string>& argv) {
 
 const Command kCommands[] = {
     {"atlas", runAtlas},   {"render", runRender},   {"materials", runMaterials},
-    {"dipole", runDipole}, {"compare", runCompare},
-    {"animate", runAnimate},
+    {"dipole", runDipole}, {"compare", runCompare}, {"animate", runAnimate},
 };
 
 }  // namespace
@@ -217,7 +257,8 @@ int runCli(int argc, char** argv) {
         if (!cmd.empty() && cmd[0] == '-') return runRender(args);
         fail("unknown command '", cmd, "' (see tsis help)");
     } catch (const Error& e) {
-        std::fprintf(stderr, "tsis: error: %s\n", e.what());
+        // Messages quote paths and file contents: printable() keeps them one harmless line.
+        std::fprintf(stderr, "tsis: error: %s\n", printable(e.what()).c_str());
         return 1;
     } catch (const cl::Error& e) {
         std::fprintf(stderr, "tsis: error: OpenCL call %s failed with code %d\n", e.what(),
@@ -227,7 +268,7 @@ int runCli(int argc, char** argv) {
         std::fprintf(stderr, "tsis: error: out of memory\n");
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "tsis: error: %s\n", e.what());
+        std::fprintf(stderr, "tsis: error: %s\n", printable(e.what()).c_str());
         return 1;
     }
 }

@@ -6,7 +6,9 @@
 #include "cli/args.h"
 #include "compare/heatmap.h"
 #include "compare/image_compare.h"
+#include "image/image_io.h"
 #include "util/error.h"
+#include "util/output_set.h"
 
 namespace tsis {
 
@@ -51,6 +53,15 @@ int runCompare(const std::vector<std::string>& argv) {
         fail("compare takes two images, A and the reference B (got ", args.positional().size(),
              ")");
     const std::string pathA = args.positional()[0], pathB = args.positional()[1];
+    const auto heatPath = args.value("heatmap");
+    const double heatMax = args.has("heat-max") ? args.getDouble("heat-max", 0, 1e-9, 1e9) : 0;
+    OutputSet outputs;
+    if (heatPath) {
+        if (*heatPath == "-") fail("--heatmap '-': standard output is for the metrics");
+        outputs.add(*heatPath, ".png");
+        outputs.write(*heatPath,
+                      [](const std::filesystem::path& f) { requireImageFormat(f.string()); });
+    }
     const ImageF a = readInput(pathA, "image"), b = readInput(pathB, "reference image");
     ImageF mask;
     const auto maskPath = args.value("mask");
@@ -59,11 +70,13 @@ int runCompare(const std::vector<std::string>& argv) {
         compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB, maskPath.value_or(""));
     std::cout << (args.flag("json") ? compareJson(cmp.metrics).dump() + "\n"
                                     : compareTable(cmp.metrics));
-    if (auto heatPath = args.value("heatmap")) {
-        const double scale = args.has("heat-max") ? args.getDouble("heat-max", 0, 1e-9, 1e9)
-                                                  : heatmapScale(cmp.relError);
+    if (heatPath) {
+        const double scale = heatMax > 0 ? heatMax : heatmapScale(cmp.relError);
         const Heatmap hm = renderHeatmap(cmp.relError, scale);
-        writeImage8(*heatPath, hm.width, hm.height, 3, hm.rgb);
+        outputs.write(*heatPath, [&](const std::filesystem::path& f) {
+            writeImage8(f.string(), hm.width, hm.height, 3, hm.rgb);
+        });
+        outputs.commit();
         if (!args.flag("json"))
             std::cout << "heat map      " << *heatPath << " (scale 0 to " << 100 * scale
                       << "% relative error)\n";

@@ -16,7 +16,7 @@ namespace tsis {
 const std::vector<OptionSpec>& sceneOptionSpecs() {
     static const std::vector<OptionSpec> specs = {
         {"mesh", true, false,
-         "M  mesh file (.off/.obj/.ply), builtin:NAME or a data mesh name (default "
+         "M  mesh file (.off/.obj/.ply/.stl), builtin:NAME or a data mesh name (default "
          "builtin:default)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"material", true, false, "NAME  preset material (default skin1; see tsis materials)"},
@@ -153,15 +153,15 @@ AtlasOptions atlasOptionsFromArgs(const Args& args) {
     return o;
 }
 
-Scene sceneFromArgs(const Args& args) {
+Scene parseScene(const Args& args) {
     Scene scene;
-    double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    const double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
     scene.material = materialFromArgs(args);
-    scene.mesh = loadMesh(args.getString("mesh", "builtin:default"));
-    normalizeMesh(scene.mesh, size);
-    ensureNormals(scene.mesh);
-    scene.mesh = ensureAtlas(scene.mesh, atlasMode(args), atlasOptionsFromArgs(args));
+    atlasMode(args);
+    atlasOptionsFromArgs(args);
     for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
+    if (static_cast<int>(scene.lights.size()) > kMaxLights)
+        fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     if (scene.lights.empty()) scene.lights = defaultLights(size);
     float fov = static_cast<float>(args.getDouble("fov", 35.0, 1.0, 170.0));
     scene.camera = defaultCamera(size, fov);
@@ -172,6 +172,19 @@ Scene sceneFromArgs(const Args& args) {
     if (glm::length(forward) == 0.0f) fail("--eye and --target are the same point");
     if (glm::length(glm::cross(forward, scene.camera.up)) < 1e-6f * glm::length(forward))
         fail("--up is parallel to the view direction (or zero)");
+    return scene;
+}
+
+void loadSceneMesh(Scene& scene, const Args& args) {
+    scene.mesh = loadMesh(args.getString("mesh", "builtin:default"));
+    normalizeMesh(scene.mesh, args.getDouble("size-mm", 10.0, 1e-3, 1e5));
+    ensureNormals(scene.mesh);
+    scene.mesh = ensureAtlas(scene.mesh, atlasMode(args), atlasOptionsFromArgs(args));
+}
+
+Scene sceneFromArgs(const Args& args) {
+    Scene scene = parseScene(args);
+    loadSceneMesh(scene, args);
     return scene;
 }
 
@@ -207,6 +220,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     o.reuseLighting = !args.flag("no-reuse-lighting");
+    validateRenderOptions(o);
     return o;
 }
 

@@ -29,8 +29,14 @@ Camera defaultCamera(double sizeMm, float fovYDegrees);
 std::string atlasMode(const Args& args);
 AtlasOptions atlasOptionsFromArgs(const Args& args);
 
-// Loads, normalises and prepares (normals, UVs) the mesh; builds the scene.
+// Every scene option parsed and checked (material, lights, camera, atlas
+// options), the mesh not yet loaded: option errors come before slow work.
+Scene parseScene(const Args& args);
+// Loads, normalises and prepares (normals, UVs) the mesh --mesh names.
+void loadSceneMesh(Scene& scene, const Args& args);
+// parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);
+// Parsed and validated (validateRenderOptions); touches no device or file.
 RenderOptions renderOptionsFromArgs(const Args& args);
 
 }  // namespace tsis

@@ -4,26 +4,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "util/error.h"
-#include "util/output_file.h"
 
 namespace tsis {
 
 namespace {
 
 void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void* data) {
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        auto out = OIIO::ImageOutput::create(tmp.string());
-        if (!out) fail("cannot write '", path, "': ", OIIO::geterror());
-        if (!out->open(tmp.string(), spec)) fail("cannot write '", path, "': ", out->geterror());
-        bool ok = out->write_image(spec.format, data);
-        ok = out->close() && ok;
-        if (!ok) fail("cannot write '", path, "': ", out->geterror());
-    });
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) fail("cannot write '", path, "': ", OIIO::geterror());
+    if (!out->open(path, spec)) fail("cannot write '", path, "': ", out->geterror());
+    bool ok = out->write_image(spec.format, data);
+    ok = out->close() && ok;
+    if (!ok) fail("cannot write '", path, "': ", out->geterror());
 }
 
 }  // namespace
+
+void requireImageFormat(const std::string& path) {
+    if (OIIO::ImageOutput::create(path)) return;
+    OIIO::geterror();  // clears OpenImageIO's message; ours says it for a user
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext.empty()) fail("cannot write '", path, "': no extension to choose an image format by");
+    fail("cannot write '", path, "': no image format for the extension '", ext, "'");
+}
 
 void writeImageF(const std::string& path, const ImageF& image,
                  const std::vector<std::string>& channelNames) {
@@ -35,6 +41,9 @@ void writeImageF(const std::string& path, const ImageF& image,
         spec.channelnames = channelNames;
     }
     spec.attribute("compression", "zip");
+    // OpenImageIO stamps EXRs with the time (capDate) unless DateTime is set:
+    // set empty, the file holds no date and the same render gives the same bytes.
+    spec.attribute("DateTime", "");
     writeWith(path, spec, image.pixels.data());
 }
 

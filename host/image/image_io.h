@@ -1,6 +1,7 @@
 // Image files through OpenImageIO. Buffers are top row first (row 0 = top,
 // DESIGN §2); callers holding GL read-backs (bottom row first) flip them.
-// Writes are atomic (temporary name, then rename).
+// Writers write the file they are given; a run's outputs reach their names
+// through util/output_set.h (temporary, then all renamed together).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,10 @@ struct ImageF {
 // Linear float image (EXR: half or float by extension's writer defaults; we ask for float).
 void writeImageF(const std::string& path, const ImageF& image,
                  const std::vector<std::string>& channelNames = {});
+
+// Throws tsis::Error when no writer handles `path`'s extension (checked
+// before the work, not after it).
+void requireImageFormat(const std::string& path);
 
 // 8-bit image (PNG), values already encoded (sRGB).
 void writeImage8(const std::string& path, int width, int height, int channels,

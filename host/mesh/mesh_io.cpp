@@ -45,11 +45,12 @@ std::string lowerExtension(const std::string& spec) {
 Mesh loadByExtension(const std::string& path, const std::string& ext) {
     if (ext == ".off") return loadOFF(path);
     if (ext == ".obj") return loadOBJ(path);
+    if (ext == ".stl") return loadSTL(path);
     return loadPLY(path);
 }
 
 bool knownExtension(const std::string& ext) {
-    return ext == ".off" || ext == ".obj" || ext == ".ply";
+    return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
 }
 
 }  // namespace
@@ -63,6 +64,9 @@ Mesh loadOBJ(const std::string& path) {
 Mesh loadPLY(const std::string& path) {
     return parsePLY(readFile(path), path);
 }
+Mesh loadSTL(const std::string& path) {
+    return parseSTL(readFile(path), path);
+}
 
 Mesh loadMesh(const std::string& spec) {
     if (spec.empty()) fail("mesh: empty name (give a path, a data mesh name or builtin:NAME)");
@@ -70,7 +74,7 @@ Mesh loadMesh(const std::string& spec) {
     const std::string ext = lowerExtension(spec);
     if (knownExtension(ext)) return loadByExtension(spec, ext);
     if (spec.find('/') != std::string::npos)
-        fail("mesh '", spec, "': unknown format '", ext, "' (known: .off, .obj, .ply)");
+        fail("mesh '", spec, "': unknown format '", ext, "' (known: .off, .obj, .ply, .stl)");
 
     // A bare name: the data meshes, $TSIS_MESH_DIR first.
     std::vector<std::string> dirs;

@@ -1,4 +1,4 @@
-// Loading meshes from OFF, OBJ and PLY files and the built-in procedural ones.
+// Loading meshes from OFF, OBJ, PLY and STL files and the built-in procedural ones.
 // Every failure is a tsis::Error naming the file and the problem. A loaded mesh
 // has been checked and repaired (repair.h; one stderr note per repair); its
 // normals are the file's, if any: callers run normalizeMesh and ensureNormals.
@@ -10,17 +10,19 @@
 
 namespace tsis {
 
-// `spec` is a path (format from its extension, .off/.obj/.ply), "builtin:NAME",
+// `spec` is a path (format from its extension, .off/.obj/.ply/.stl), "builtin:NAME",
 // or a bare name resolved under the unpacked data meshes (data/meshes/NAME.off).
 Mesh loadMesh(const std::string& spec);
 
 Mesh loadOFF(const std::string& path);
 Mesh loadOBJ(const std::string& path);
 Mesh loadPLY(const std::string& path);
+Mesh loadSTL(const std::string& path);
 
 // Parsers from memory (used by the loaders and the fuzz targets).
 Mesh parseOFF(const std::string& text, const std::string& name);
 Mesh parseOBJ(const std::string& text, const std::string& name);
 Mesh parsePLY(const std::string& bytes, const std::string& name);
+Mesh parseSTL(const std::string& bytes, const std::string& name);
 
 }  // namespace tsis

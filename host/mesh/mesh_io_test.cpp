@@ -76,7 +76,7 @@ TEST(LoadMesh, MissingFilesSayWhereAndWhy) {
     EXPECT_THAT(msg, HasSubstr("CGAL"));
     const std::string path = dir.path() + "/gone.off";
     EXPECT_THAT(errorOf([&] { loadMesh(path); }, path), HasSubstr("cannot open"));
-    EXPECT_THAT(errorOf([&] { loadMesh(dir.path() + "/x.stl"); }), HasSubstr("unknown format"));
+    EXPECT_THAT(errorOf([&] { loadMesh(dir.path() + "/x.3ds"); }), HasSubstr("unknown format"));
     EXPECT_THAT(errorOf([&] { loadMesh(""); }), HasSubstr("empty"));
     const std::string empty = dir.file("empty.ply", "");
     EXPECT_THAT(errorOf([&] { loadMesh(empty); }, empty), HasSubstr("empty file"));

@@ -101,5 +101,24 @@ TEST(OBJ, Refusals) {
                 HasSubstr("bad vertex index 'x'"));
 }
 
+// What exporters write: mtllib/usemtl, objects and groups, smoothing groups,
+// quads and an n-gon, negative (relative) indices, a line element; from a file.
+TEST(OBJ, RealWorldFile) {
+    const char* text =
+        "# exported\nmtllib scene.mtl\no Box\ng side top\nusemtl red\ns 1\n"
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f -4 -3 -2 -1\n"  // a quad, relative indices
+        "g hexagon\nusemtl blue\ns off\n"
+        "v 2 0 0\nv 3 0 0\nv 3.5 0.5 0\nv 3 1 0\nv 2 1 0\nv 1.5 0.5 0\n"
+        "f 5 6 7 8 9 10\n"  // an n-gon
+        "l 1 5\n";
+    test::ScratchDir dir;
+    const Mesh m = loadMesh(dir.file("scene.obj", text));
+    EXPECT_EQ(m.positions.size(), 10u);
+    ASSERT_EQ(m.triangles.size(), 2u + 4u);
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
+    EXPECT_NEAR(m.surfaceArea(), 1.0 + 1.5, 1e-6);
+}
+
 }  // namespace
 }  // namespace tsis

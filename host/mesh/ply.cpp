@@ -1,7 +1,8 @@
 // Stanford PLY: ascii, binary_little_endian and binary_big_endian. Reads the
 // vertex element (x y z, optional nx ny nz and s t / u v / texture_u
-// texture_v) and the face element's vertex_indices (or vertex_index) list;
-// every other element and property is skipped by its declared type.
+// texture_v), the face element's vertex_indices (or vertex_index) list, and
+// the tristrips element's vertex_indices (triangle strips, -1 starts a new
+// strip); every other element and property is skipped by its declared type.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -252,6 +253,38 @@ Header parseHeader(std::string_view text, const std::string& name) {
     return h;
 }
 
+// The list property of `e` that holds vertex indices; -1 when none.
+int indexList(const Element& e) {
+    int p = e.find("vertex_indices");
+    if (p < 0) p = e.find("vertex_index");
+    return p;
+}
+
+// The index that ends a strip: -1, or its bit pattern in an unsigned type.
+double stripRestart(Type t) {
+    switch (t) {
+        case Type::U8:
+            return 255.0;
+        case Type::U16:
+            return 65535.0;
+        case Type::U32:
+            return 4294967295.0;
+        default:
+            return -1.0;
+    }
+}
+
+// Triangles of one strip s0 s1 s2 …: (s0 s1 s2), (s2 s1 s3), (s2 s3 s4), … so
+// every triangle keeps the strip's orientation; triangles that repeat a
+// vertex (the joins of stitched strips) are left out.
+void addStrip(const std::vector<uint32_t>& s, std::vector<glm::uvec3>& triangles) {
+    for (size_t i = 2; i < s.size(); ++i) {
+        const uint32_t a = s[i - 2], b = s[i - 1], c = s[i];
+        if (a == b || b == c || a == c) continue;
+        triangles.push_back(i % 2 == 0 ? glm::uvec3(a, b, c) : glm::uvec3(b, a, c));
+    }
+}
+
 // The least bytes the data section needs for what the header declares
 // (saturating), so no count is trusted before it is checked against the file.
 unsigned long long leastDataBytes(const Header& h) {
@@ -274,19 +307,24 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
     const Header h = parseHeader(bytes, name);
     const Element* vertex = nullptr;
     const Element* face = nullptr;
+    const Element* strips = nullptr;
     for (const Element& e : h.elements) {
         if (e.name == "vertex" && !vertex) vertex = &e;
         if (e.name == "face" && !face) face = &e;
+        if (e.name == "tristrips" && !strips) strips = &e;
     }
     if (!vertex) failIn(name, "no vertex element");
-    if (!face || face->count == 0)
+    if ((!face || face->count == 0) && (!strips || strips->count == 0))
         failIn(name, "no faces (", vertex->count, " vertices and no triangles)");
+    if (face && face->count == 0) face = nullptr;
+    if (strips && strips->count == 0) strips = nullptr;
 
     const size_t dataBytes = bytes.size() - h.dataStart;
     const unsigned long long least = leastDataBytes(h);
     if (least > dataBytes + (h.format == Format::Ascii ? 1 : 0))
         failIn(name, "truncated or corrupt: header claims ", vertex->count, " vertices and ",
-               face->count, " faces, more than the file's ", bytes.size(), " bytes can hold");
+               face ? face->count : strips->count, face ? " faces" : " strips",
+               ", more than the file's ", bytes.size(), " bytes can hold");
     if (vertex->count >= std::numeric_limits<uint32_t>::max())
         failIn(name, "too many vertices (", vertex->count, ")");
 
@@ -307,11 +345,14 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
         if (i >= 0 && vertex->props[static_cast<size_t>(i)].list)
             failIn(name, "vertex property '", vertex->props[static_cast<size_t>(i)].name,
                    "' is a list");
-    int pf = face->find("vertex_indices");
-    if (pf < 0) pf = face->find("vertex_index");
-    if (pf < 0) failIn(name, "face element has no vertex_indices list");
-    if (!face->props[static_cast<size_t>(pf)].list)
+    const int pf = face ? indexList(*face) : -1;
+    if (face && pf < 0) failIn(name, "face element has no vertex_indices list");
+    if (face && !face->props[static_cast<size_t>(pf)].list)
         failIn(name, "face property 'vertex_indices' is not a list");
+    const int ps = strips ? indexList(*strips) : -1;
+    if (strips && ps < 0) failIn(name, "tristrips element has no vertex_indices list");
+    if (strips && !strips->props[static_cast<size_t>(ps)].list)
+        failIn(name, "tristrips property 'vertex_indices' is not a list");
 
     Mesh mesh;
     mesh.name = name;
@@ -322,15 +363,16 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
     // Faces may be empty lists (one byte each): reserve for what a triangle
     // needs at least (count + 3 indices), growing past it if need be.
     mesh.triangles.reserve(
-        static_cast<size_t>(std::min<unsigned long long>(face->count, dataBytes / 4)));
+        static_cast<size_t>(std::min<unsigned long long>(face ? face->count : 0, dataBytes / 4)));
 
     Data data(std::string_view(bytes).substr(h.dataStart), h.dataLine, h.format, name);
-    bool doneV = false, doneF = false;
+    bool doneV = false, doneF = !face, doneS = !strips;
     size_t shortFaces = 0;
     std::vector<double> values;
+    std::vector<uint32_t> strip;
     for (const Element& e : h.elements) {
-        if (doneV && doneF) break;      // what follows is not needed
-        if (e.props.empty()) continue;  // no data at all, however large its count
+        if (doneV && doneF && doneS) break;  // what follows is not needed
+        if (e.props.empty()) continue;       // no data at all, however large its count
         for (unsigned long long r = 0; r < e.count; ++r) {
             data.at(e, r);
             if (&e == vertex) {
@@ -371,12 +413,34 @@ Mesh parsePLY(const std::string& bytes, const std::string& name) {
                     }
                     shortFaces += n < 3;
                 }
+            } else if (&e == strips) {
+                for (size_t k = 0; k < e.props.size(); ++k) {
+                    if (static_cast<int>(k) != ps) {
+                        data.skip(e.props[k]);
+                        continue;
+                    }
+                    const unsigned long long n = data.listCount(e.props[k]);
+                    strip.clear();
+                    for (unsigned long long c = 0; c < n; ++c) {
+                        const double x = data.read(e.props[k].item);
+                        if (x == stripRestart(e.props[k].item)) {
+                            addStrip(strip, mesh.triangles);
+                            strip.clear();
+                            continue;
+                        }
+                        if (!(x >= 0.0 && x < static_cast<double>(nv)) || std::floor(x) != x)
+                            data.failHere("vertex index ", x, " out of range (", nv, " vertices)");
+                        strip.push_back(static_cast<uint32_t>(x));
+                    }
+                    addStrip(strip, mesh.triangles);
+                }
             } else {
                 for (const Property& p : e.props) data.skip(p);
             }
         }
         doneV = doneV || &e == vertex;
         doneF = doneF || &e == face;
+        doneS = doneS || &e == strips;
     }
     noteShortFaces(name, shortFaces);
     repairMesh(mesh);

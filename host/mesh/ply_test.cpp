@@ -185,5 +185,60 @@ TEST(PLY, AbsurdCountsRefusedBeforeAllocating) {
                 HasSubstr("no faces"));
 }
 
+// A scanner's file: extra per-vertex properties, big-endian data and the
+// faces as triangle strips (-1 starts a new strip), through loadMesh.
+TEST(PLY, TristripsBigEndianWithExtraProperties) {
+    std::string out =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 7\nproperty float x\n"
+        "property float y\nproperty float z\nproperty float confidence\n"
+        "property float intensity\nproperty uchar red\n"
+        "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+    auto put = [&](auto value) {
+        unsigned char b[sizeof value];
+        std::memcpy(b, &value, sizeof value);
+        if (std::endian::native == std::endian::little)
+            for (size_t i = 0; i < sizeof value / 2; ++i) std::swap(b[i], b[sizeof value - 1 - i]);
+        out.append(reinterpret_cast<const char*>(b), sizeof value);
+    };
+    // A 2x1 grid of quads as one strip of 4 triangles, then a triangle above
+    // it after a restart.
+    const float v[7][3] = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0},
+                           {2, 0, 0}, {2, 1, 0}, {0, 2, 0}};
+    for (const auto& p : v) {
+        put(p[0]);
+        put(p[1]);
+        put(p[2]);
+        put(0.5f);
+        put(7.0f);
+        put(uint8_t{200});
+    }
+    const int32_t strip[] = {0, 1, 2, 3, 4, 5, -1, 1, 6, 3};
+    put(int32_t{10});
+    for (int32_t i : strip) put(i);
+    test::ScratchDir dir;
+    const Mesh m = loadMesh(dir.file("scan.ply", out));
+    EXPECT_EQ(m.positions.size(), 7u);
+    ASSERT_EQ(m.triangles.size(), 5u);
+    // Strip order: (0 1 2), (2 1 3), (2 3 4), (4 3 5) — one orientation throughout.
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
+    EXPECT_EQ(m.triangles[1], glm::uvec3(2, 1, 3));
+    EXPECT_EQ(m.triangles[2], glm::uvec3(2, 3, 4));
+    EXPECT_EQ(m.triangles[3], glm::uvec3(4, 3, 5));
+    EXPECT_EQ(m.triangles[4], glm::uvec3(1, 6, 3));
+    EXPECT_NEAR(m.surfaceArea(), 2.5, 1e-9);
+}
+
+TEST(PLY, AsciiTristripsWithUnsignedRestartAndRefusals) {
+    const std::string head =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement tristrips 1\nproperty list uchar uint vertex_indices\n"
+        "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n";
+    const Mesh m = parsePLY(head + "7 0 1 2 4294967295 1 3 2\n", "s.ply");
+    ASSERT_EQ(m.triangles.size(), 2u);
+    EXPECT_EQ(m.triangles[1], glm::uvec3(1, 3, 2));
+    EXPECT_THAT(errorOf([&] { parsePLY(head + "3 0 1 9\n", "r.ply"); }, "r.ply"),
+                HasSubstr("out of range"));
+}
+
 }  // namespace
 }  // namespace tsis

@@ -13,7 +13,7 @@ struct RenderOptions {
     int lightResolution = 1024;  // shadow map and light-view flux map
     int samples = 900;           // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
-    float key = 0.18f;           // Reinhard key
+    float key = 0.18f;  // Reinhard key
     bool specular = true;
     float specularKs = 0.2f;
     float shininess = 40.0f;
@@ -32,7 +32,8 @@ struct RenderOptions {
     // pixel's size (method_pyramid.h), 1 = every pixel
     int pyramidStride = 0;
     double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
-    bool keepAovs = false;       // copy radiosity/radiance/position/normal/coverage/atlas to the host result
+    // Copy radiosity/radiance/position/normal/coverage/atlas to the host result.
+    bool keepAovs = false;
     // Average this frame's radiosity with the frames before it while nothing
     // that changes the radiosity changed (render/accumulator.h); each frame
     // draws a new sample set.
@@ -42,5 +43,10 @@ struct RenderOptions {
     // that moves only the camera or changes σ, N or the method skips them.
     bool reuseLighting = true;
 };
+
+// Checks what the renderer and the methods would otherwise refuse only after
+// the mesh is loaded and GL/CL started (the method's name, --rd-part, the
+// ltsm filter), so that every option error comes first. Throws tsis::Error.
+void validateRenderOptions(const RenderOptions& o);
 
 }  // namespace tsis

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace tsis {
 
@@ -28,6 +29,11 @@ template <typename... Args>
 [[noreturn]] void fail(const Args&... args) {
     throw Error(concat(args...));
 }
+
+// `text` safe to print on a terminal: control characters (C0, DEL, C1) and
+// bytes that are not UTF-8 become \xNN, so bytes quoted from an input file
+// cannot move the cursor, retitle the terminal or break the one-line message.
+std::string printable(std::string_view text);
 
 [[noreturn]] void checkFailed(const char* file, int line, const std::string& what);
 

@@ -1,8 +1,11 @@
 #include "util/output_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <system_error>
 
 #include "util/error.h"
@@ -33,21 +36,33 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
         fs::remove(tmp, ec);
         throw;
     }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
+    if (::rename(tmp.c_str(), target.c_str()) != 0) {
+        const std::string why = std::strerror(errno);  // before the cleanup overwrites errno
+        std::error_code ec;
         fs::remove(tmp, ec);
-        fail("cannot write '", target.string(), "': ", ec.message());
+        fail("cannot write '", target.string(), "': ", why);
     }
 }
 
+void writeText(const fs::path& file, const std::string& text) {
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) fail("cannot write '", file.string(), "': ", std::strerror(errno));
+    std::string error;
+    for (size_t off = 0; off < text.size();) {
+        const ssize_t w = ::write(fd, text.data() + off, text.size() - off);
+        if (w < 0 && errno == EINTR) continue;
+        if (w < 0) {
+            error = std::strerror(errno);
+            break;
+        }
+        off += static_cast<size_t>(w);
+    }
+    if (::close(fd) != 0 && error.empty()) error = std::strerror(errno);
+    if (!error.empty()) fail("cannot write '", file.string(), "': ", error);
+}
+
 void writeTextFile(const fs::path& target, const std::string& text) {
-    writeAtomically(target, [&](const fs::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) fail("cannot write '", target.string(), "'");
-    });
+    writeAtomically(target, [&](const fs::path& tmp) { writeText(tmp, text); });
 }
 
 }  // namespace tsis

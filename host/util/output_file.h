@@ -1,5 +1,5 @@
-// Outputs are written to a temporary name beside the target and renamed into
-// place only when complete, so a failed run never leaves a half-written file.
+// One file written to a temporary name beside it and renamed into place only
+// when complete (caches). A run's outputs go through util/output_set.h.
 #pragma once
 
 #include <filesystem>
@@ -17,7 +17,11 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& tmp)>& write);
 
-// Writes `text` to `target` atomically.
+// Writes `text` to `file` (created or truncated); the error names `file` and
+// the reason.
+void writeText(const std::filesystem::path& file, const std::string& text);
+
+// Writes `text` to `target` atomically (writeText to a temporary, rename).
 void writeTextFile(const std::filesystem::path& target, const std::string& text);
 
 }  // namespace tsis

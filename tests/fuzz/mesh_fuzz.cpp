@@ -1,6 +1,7 @@
-// libFuzzer target: arbitrary bytes into the OFF, OBJ and PLY parsers. The
-// first byte picks the parser so that seed files keep their own format:
-// 'p' → PLY, an OFF keyword letter → OFF, anything else → OBJ. A tsis::Error
+// libFuzzer target: arbitrary bytes into the OFF, OBJ, PLY and STL parsers.
+// The first byte picks the parser so that seed files keep their own format:
+// 'p' → PLY, 's' → STL (ASCII "solid…", or binary with a header that starts
+// with 's'), an OFF keyword letter → OFF, anything else → OBJ. A tsis::Error
 // is the expected answer to bad input; any other exception, crash, leak,
 // sanitizer report, timeout or allocation past -rss_limit_mb is a finding.
 #include <cstddef>
@@ -19,6 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         tsis::Mesh mesh;
         if (data[0] == 'p') {
             mesh = tsis::parsePLY(bytes, "fuzz.ply");
+        } else if (data[0] == 's') {
+            mesh = tsis::parseSTL(bytes, "fuzz.stl");
         } else if (std::strchr("OCNS4n", data[0]) != nullptr) {
             mesh = tsis::parseOFF(bytes, "fuzz.off");
         } else {

@@ -1,0 +1,37 @@
+#include "render/render_options.h"
+
+#include <algorithm>
+
+#include "render/method.h"
+#include "render/profiles.h"
+#include "util/error.h"
+
+namespace tsis {
+
+void validateRenderOptions(const RenderOptions& o) {
+    const std::vector<std::string> names = methodNames();
+    if (std::find(names.begin(), names.end(), o.method) == names.end()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+        fail("unknown method '", o.method, "'; available: ", list);
+    }
+    if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
+        fail("image size ", o.width, "x", o.height, " is outside 1 to 8192");
+    if (o.samples < 1) fail("--samples ", o.samples, " must be at least 1");
+    const int res = o.atlasResolution;
+    if (res < 16 || res > 4096 || (res & (res - 1)))
+        fail("--atlas-res ", res, " must be a power of two from 16 to 4096");
+    if (o.lightResolution < 16 || o.lightResolution > 8192)
+        fail("--light-res ", o.lightResolution, " is outside 16 to 8192");
+    // The checks the methods make when they run (method_hybrid, method_mis, method_ltsm).
+    const RdPart part = parseRdPart(o.rdPart);
+    if (part != RdPart::Full && o.method == "hybrid")
+        fail("--rd-part applies to tsis and ltsm; the hybrid always splits the full Rd");
+    if (part != RdPart::Full && o.method == "mis")
+        fail("--rd-part applies to tsis and ltsm; mis integrates the full Rd");
+    if (o.ltsmRings < 0 || o.ltsmPerRing < 1)
+        fail("--ltsm-rings ", o.ltsmRings, " / --ltsm-per-ring ", o.ltsmPerRing,
+             ": need L ≥ 0 rings of C ≥ 1 samples");
+}
+
+}  // namespace tsis

@@ -1,0 +1,260 @@
+#include "util/output_set.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <optional>
+
+#include "util/error.h"
+
+namespace tsis {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// New files get the usual 0666 & ~umask, not mkstemp's 0600.
+mode_t creationMode() {
+    static const mode_t mode = [] {
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        return static_cast<mode_t>(0666 & ~mask);
+    }();
+    return mode;
+}
+
+// Creates a new, empty temporary in `dir`: ".<stem>.tsis-tmp-XXXXXX<ext>" (image
+// writers choose the format from the extension). errno is kept on failure.
+std::optional<fs::path> reserveTemporary(const fs::path& dir, const std::string& stem,
+                                         const std::string& ext) {
+    std::string name = (dir.empty() ? fs::path(".") : dir) / ("." + stem + ".tsis-tmp-XXXXXX");
+    name += ext;
+    const int fd = ::mkstemps(name.data(), static_cast<int>(ext.size()));
+    if (fd < 0) return std::nullopt;
+    ::fchmod(fd, creationMode());
+    ::close(fd);
+    return fs::path(name);
+}
+
+// Writes all of `file` to the open descriptor `fd`; the error text or "".
+std::string copyTo(const fs::path& file, int fd) {
+    const int in = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (in < 0) return std::strerror(errno);
+    char buf[1 << 16];
+    std::string error;
+    for (;;) {
+        const ssize_t n = ::read(in, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) error = std::strerror(errno);
+        if (n <= 0) break;
+        for (ssize_t off = 0; off < n && error.empty();) {
+            const ssize_t w = ::write(fd, buf + off, static_cast<size_t>(n - off));
+            if (w < 0 && errno == EINTR) continue;
+            if (w < 0) error = std::strerror(errno);
+            off += w > 0 ? w : 0;
+        }
+        if (!error.empty()) break;
+    }
+    ::close(in);
+    return error;
+}
+
+template <typename... Why>
+[[noreturn]] void cannotWrite(const std::string& target, const Why&... why) {
+    fail("cannot write '", target, "': ", why...);
+}
+
+void replaceAll(std::string& s, const std::string& from, const std::string& to) {
+    if (from.empty()) return;
+    for (size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += to.size())
+        s.replace(p, from.size(), to);
+}
+
+}  // namespace
+
+OutputSet::~OutputSet() {
+    if (!committed_) rollback();
+}
+
+void OutputSet::rollback() noexcept {
+    std::error_code ec;
+    for (const Entry& e : entries_) fs::remove(e.temp, ec);
+    for (const fs::path& d : stagingDirs_) fs::remove_all(d, ec);
+    // Only folders left empty: a committed output keeps its folder.
+    for (auto it = madeDirs_.rbegin(); it != madeDirs_.rend(); ++it) fs::remove(*it, ec);
+}
+
+void OutputSet::add(const std::string& target, const std::string& defaultExtension,
+                    const fs::path& stageIn) {
+    if (target.empty()) fail("an output path is empty");
+    Entry e{target, target, {}, Kind::Rename};
+    if (target == "-") {
+        if (defaultExtension.empty()) fail("'-' (standard output) is not possible for this output");
+        for (const Entry& o : entries_)
+            if (o.kind == Kind::Stdout) fail("two outputs are '-' (standard output)");
+        e.kind = Kind::Stdout;
+        auto tmp = reserveTemporary(fs::temp_directory_path(), "stdout", defaultExtension);
+        if (!tmp) cannotWrite(target, "no temporary file: ", std::strerror(errno));
+        e.temp = *tmp;
+        entries_.push_back(e);
+        return;
+    }
+    std::error_code ec;
+    fs::file_status st = fs::symlink_status(e.dest, ec);
+    if (st.type() == fs::file_type::symlink) {
+        // Written through to the file it points to; the link itself stays.
+        st = fs::status(e.dest, ec);
+        if (st.type() == fs::file_type::not_found)
+            cannotWrite(target, "it is a symbolic link to a missing file");
+        e.dest = fs::canonical(e.dest, ec);
+        if (ec) cannotWrite(target, ec.message());
+    }
+    switch (st.type()) {
+        case fs::file_type::directory:
+            cannotWrite(target, "it is a directory");
+        case fs::file_type::character:
+        case fs::file_type::fifo:
+            // Never replaced by a regular file: the bytes are written into it.
+            if (::access(e.dest.c_str(), W_OK) != 0) cannotWrite(target, std::strerror(errno));
+            e.kind = Kind::WriteThrough;
+            break;
+        case fs::file_type::regular:
+        case fs::file_type::not_found:
+            break;
+        default:
+            cannotWrite(target, "it is not a regular file, a character device or a FIFO");
+    }
+    if (e.kind == Kind::Rename) {
+        const fs::path dir = e.dest.parent_path().empty() ? fs::path(".") : e.dest.parent_path();
+        const fs::file_status ds = fs::status(dir, ec);
+        if (ds.type() == fs::file_type::not_found)
+            cannotWrite(target, "directory '", dir.string(), "' does not exist");
+        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
+        if (ds.type() != fs::file_type::directory)
+            cannotWrite(target, "'", dir.string(), "' is not a directory");
+        const fs::path abs = fs::weakly_canonical(fs::absolute(e.dest), ec);
+        for (const Entry& o : entries_)
+            if (o.kind == Kind::Rename && fs::weakly_canonical(fs::absolute(o.dest), ec) == abs)
+                fail("'", target, "' is given for two outputs");
+    }
+    if (!stageIn.empty()) {
+        e.temp = stageIn / e.dest.filename();
+        const int fd = ::open(e.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0) cannotWrite(target, std::strerror(errno));
+        ::close(fd);
+    } else {
+        // The format follows the name given (a link to /dev/null named x.png is a
+        // PNG), else the file it points to.
+        std::string ext = fs::path(target).extension().string();
+        if (ext.empty()) ext = e.dest.extension().string();
+        if (ext.empty() && e.kind == Kind::WriteThrough) ext = defaultExtension;
+        const fs::path dir =
+            e.kind == Kind::Rename ? e.dest.parent_path() : fs::temp_directory_path();
+        auto tmp = reserveTemporary(dir, e.dest.stem().string(), ext);
+        if (!tmp) cannotWrite(target, std::strerror(errno));
+        e.temp = *tmp;
+    }
+    entries_.push_back(e);
+}
+
+void OutputSet::makeDirectory(const std::string& dir) {
+    std::error_code ec;
+    fs::path p(dir);
+    const fs::file_status st = fs::status(p, ec);
+    if (st.type() == fs::file_type::directory) return;
+    if (st.type() != fs::file_type::not_found)
+        fail("cannot write into '", dir, "': it is not a directory");
+    std::vector<fs::path> missing;
+    fs::path q = p;
+    for (; !q.empty() && fs::symlink_status(q, ec).type() == fs::file_type::not_found;
+         q = q.parent_path())
+        missing.push_back(q);
+    if (!q.empty() && !fs::is_directory(q, ec))
+        fail("cannot create directory '", dir, "': '", q.string(), "' is not a directory");
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+        if (!fs::create_directory(*it, ec) && ec)
+            fail("cannot create directory '", it->string(), "': ", ec.message());
+        madeDirs_.push_back(*it);
+    }
+}
+
+fs::path OutputSet::makeStagingDirectory(const std::string& dir) {
+    std::string name = (fs::path(dir) / ".tsis-tmp-XXXXXX").string();
+    if (!::mkdtemp(name.data())) fail("cannot write into '", dir, "': ", std::strerror(errno));
+    stagingDirs_.push_back(name);
+    return name;
+}
+
+const OutputSet::Entry& OutputSet::find(const std::string& target) const {
+    for (const Entry& e : entries_)
+        if (e.target == target) return e;
+    fail("internal: output '", target, "' was not added");
+}
+
+fs::path OutputSet::temporary(const std::string& target) const {
+    return find(target).temp;
+}
+
+void OutputSet::write(const std::string& target,
+                      const std::function<void(const fs::path& file)>& write) {
+    const Entry& e = find(target);
+    try {
+        write(e.temp);
+    } catch (const Error& err) {
+        std::string what = err.what();
+        replaceAll(what, e.temp.string(), target);
+        replaceAll(what, e.temp.filename().string(), fs::path(target).filename().string());
+        throw Error(what);
+    }
+}
+
+void OutputSet::discard(const std::string& target) {
+    for (auto it = entries_.begin(); it != entries_.end(); ++it)
+        if (it->target == target) {
+            std::error_code ec;
+            fs::remove(it->temp, ec);
+            entries_.erase(it);
+            return;
+        }
+}
+
+void OutputSet::commit() {
+    std::fflush(stdout);
+    std::cout.flush();
+    // Devices and standard output first: they are the ones that fail late (a
+    // full disk behind a device, a closed pipe); renames in a checked folder rarely do.
+    std::vector<const Entry*> order;
+    for (const Entry& e : entries_)
+        if (e.kind != Kind::Rename) order.push_back(&e);
+    for (const Entry& e : entries_)
+        if (e.kind == Kind::Rename) order.push_back(&e);
+    for (const Entry* ep : order) {
+        const Entry& e = *ep;
+        std::string error;
+        if (e.kind == Kind::Rename) {
+            // rename(2), not std::filesystem: its error is the one we report.
+            if (::rename(e.temp.c_str(), e.dest.c_str()) != 0) error = std::strerror(errno);
+        } else {
+            const int fd = e.kind == Kind::Stdout
+                               ? STDOUT_FILENO
+                               : ::open(e.dest.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+            error = fd < 0 ? std::strerror(errno) : copyTo(e.temp, fd);
+            if (fd >= 0 && e.kind != Kind::Stdout && ::close(fd) != 0 && error.empty())
+                error = std::strerror(errno);
+            std::error_code ec;
+            fs::remove(e.temp, ec);
+        }
+        if (!error.empty()) cannotWrite(e.target, error);
+    }
+    committed_ = true;
+    std::error_code ec;
+    for (const fs::path& d : stagingDirs_) fs::remove_all(d, ec);
+}
+
+}  // namespace tsis

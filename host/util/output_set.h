@@ -1,0 +1,72 @@
+// All the output files of one run, checked before the work and committed
+// together, so a run either writes every output or leaves none behind.
+//
+// add() checks a target at once: its folder exists and takes a new file (the
+// temporary the writer will fill is created there now), and the target is not
+// a folder. What a target is decides how it is written at commit():
+//   a regular file or a new name   the temporary, beside it, is renamed onto it
+//   a symbolic link                the same, at the file it points to (the link stays)
+//   a character device or a FIFO   the bytes are written through (/dev/null stays a device)
+//   "-"                            the bytes go to standard output
+// Anything else (a folder, a socket, a dangling link) is refused by add().
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "util/output_file.h"  // writeText, for callers
+
+namespace tsis {
+
+class OutputSet {
+  public:
+    OutputSet() = default;
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+    // Without commit(): removes every temporary and every folder it made.
+    ~OutputSet();
+
+    // Checks `target` and reserves its temporary; throws tsis::Error naming
+    // the target. `defaultExtension` (".png") gives the format of "-" and of a
+    // device named without an extension; without it "-" is refused. `stageIn`, when given, is a
+    // folder (made by makeStagingDirectory) whose file of the target's name is the temporary.
+    void add(const std::string& target, const std::string& defaultExtension = "",
+             const std::filesystem::path& stageIn = {});
+    // Creates `dir` and missing parents now (they go again unless committed).
+    void makeDirectory(const std::string& dir);
+    // A fresh hidden folder inside `dir` for temporaries that need their own
+    // names (a frame sequence); removed when the set ends.
+    std::filesystem::path makeStagingDirectory(const std::string& dir);
+
+    // Calls write(file) with the temporary of `target` (added before). An
+    // error's message names the target, never the temporary.
+    void write(const std::string& target,
+               const std::function<void(const std::filesystem::path& file)>& write);
+    // The temporary of `target`, for writers that run outside write().
+    std::filesystem::path temporary(const std::string& target) const;
+    // Drops `target`: its temporary goes and nothing is written there.
+    void discard(const std::string& target);
+
+    // Moves every output into place: devices and "-" first, then the renames.
+    void commit();
+
+  private:
+    enum class Kind { Rename, WriteThrough, Stdout };
+    struct Entry {
+        std::string target;          // as the user gave it (messages)
+        std::filesystem::path dest;  // where the bytes go (a link resolved)
+        std::filesystem::path temp;
+        Kind kind;
+    };
+    const Entry& find(const std::string& target) const;
+    void rollback() noexcept;
+
+    std::vector<Entry> entries_;
+    std::vector<std::filesystem::path> madeDirs_;  // deepest last
+    std::vector<std::filesystem::path> stagingDirs_;
+    bool committed_ = false;
+};
+
+}  // namespace tsis
