@@ -27,11 +27,14 @@ struct Sweep {
 
 int run(const BenchArgs& a) {
     const std::vector<Case> cases = {
-        {"cow_marble_10mm", "cow, marble, 10 mm (global translucency matters)",
+        {"cow_marble_10mm",
+         "cow, marble, 10 mm (global translucency matters)",
          {"--mesh", "cow", "--material", "marble", "--size-mm", "10"}},
-        {"cow_skin2_30mm", "cow, skin2, 30 mm (local-dominated)",
+        {"cow_skin2_30mm",
+         "cow, skin2, 30 mm (local-dominated)",
          {"--mesh", "cow", "--material", "skin2", "--size-mm", "30"}},
-        {"default_skin1_10mm", "builtin:default, skin1, 10 mm, back-lit thin parts",
+        {"default_skin1_10mm",
+         "builtin:default, skin1, 10 mm, back-lit thin parts",
          {"--mesh", "builtin:default", "--material", "skin1", "--size-mm", "10"}},
     };
     std::vector<Sweep> sweeps = {
@@ -39,6 +42,7 @@ int run(const BenchArgs& a) {
         {"hybrid", "samples", {"16", "49", "100", "256", "900", "2500"}},
         {"mis", "samples", {"16", "49", "100", "256", "900"}},
         {"hierarchical", "epsilon", {"2", "1", "0.5", "0.2", "0.1", "0.05", "0.02"}},
+        {"pyramid", "pyramid-epsilon", {"0.8", "0.4", "0.2", "0.1", "0.05", "0.025"}},
         {"tsm", "tsm-radius", {"1", "2", "4", "8"}},
         {"ltsm", "ltsm-rings", {"1", "2", "4", "8"}},
         {"lss", "samples", {"16", "49", "100", "256", "900"}},
@@ -55,16 +59,20 @@ int run(const BenchArgs& a) {
     }
     Renderer renderer;
     const std::string machine = machineLine(renderer);
-    Table csv({"case", "method", "knob", "value", "frame_ms_median", "frame_ms_min",
-               "frame_ms_max", "rel_rmse", "load1"});
-    std::string md = "# Error against time\n\nMade by `bench/run.sh error` "
-                     "(`build-bench/bench/bench_error`) on " +
-                     timestamp() + ".\nMachine: " + machine +
-                     ".\nRelative RMSE of radiance L against `--method reference` over its "
-                     "covered pixels, 512×512, atlas 1024², default lights; frame time = the "
-                     "whole frame (GL passes, hand-offs, kernels, composite), median of " +
-                     std::to_string(a.frames) +
-                     " frames after the frame measured for error. Plots: `error_<case>.png`.\n\n";
+    Table csv({"case", "method", "knob", "value", "frame_ms_median", "frame_ms_min", "frame_ms_max",
+               "rel_rmse", "load1"});
+    std::string md =
+        "# Error against time\n\nMade by `bench/run.sh error` "
+        "(`build-bench/bench/bench_error`) on " +
+        timestamp() + ".\nMachine: " + machine +
+        ".\nRelative RMSE of radiance L against `--method reference` over its "
+        "covered pixels, 512×512, atlas " +
+        std::to_string(RenderOptions{}.atlasResolution) + "², light maps " +
+        std::to_string(RenderOptions{}.lightResolution) +
+        "², default lights; frame time = the "
+        "whole frame (GL passes, hand-offs, kernels, composite), median of " +
+        std::to_string(a.frames) +
+        " frames after the frame measured for error. Plots: `error_<case>.png`.\n\n";
     const double thresholds[] = {0.05, 0.02, 0.01};
     for (const Case& cs : cases) {
         BenchCase base = makeCase(cs.args);
@@ -128,4 +136,6 @@ int run(const BenchArgs& a) {
 }  // namespace
 }  // namespace tsis::bench
 
-int main(int argc, char** argv) { return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3); }
+int main(int argc, char** argv) {
+    return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3);
+}

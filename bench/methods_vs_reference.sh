@@ -6,7 +6,7 @@
 #   bench/methods_vs_reference.sh
 #   METHODS="tsis hierarchical tsm lss hybrid" SIZE=256 bench/methods_vs_reference.sh
 #
-# METHODS   methods to compare (default "tsis hierarchical"; N = 900 for tsis)
+# METHODS   methods to compare (default "pyramid tsis hierarchical"; N = 900 for tsis)
 # SCENES    "mesh:material:size_mm ..." (default: builtin:sphere and
 #           builtin:default, marble at 10 mm and skin1 at 30 mm)
 # SIZE      image width = height (default 512)
@@ -17,7 +17,7 @@
 # methods_vs_reference.md there.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
-methods=${METHODS:-tsis hierarchical}
+methods=${METHODS:-pyramid tsis hierarchical}
 scenes=${SCENES:-builtin:sphere:marble:10 builtin:sphere:skin1:30 builtin:default:marble:10 builtin:default:skin1:30}
 size=${SIZE:-512}
 extra=${EXTRA:-}

@@ -2,7 +2,7 @@
 # Runs the benchmark programs and makes the plots (gnuplot; `apt-get install -y
 # gnuplot-nox`). Results: bench/results/*.md, *.csv, *.png. Not part of the tests.
 #
-#   bench/run.sh [all|tables|error|kernels|handoff|scaling|animate|plots]... [-- ARGS]
+#   bench/run.sh [all|tables|error|kernels|handoff|scaling|frame|animate|plots]... [-- ARGS]
 #
 # ARGS go to every program (--quick: fewer configurations; --frames N).
 # TSIS_BENCH_BUILD (default build-bench) and TSIS_BENCH_RESULTS override the
@@ -16,10 +16,10 @@ what=""
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do what="$what $1"; shift; done
 [ $# -gt 0 ] && shift
 [ -z "$what" ] && what=" all"
-[ "$what" = " all" ] && what="tables error kernels handoff scaling animate plots"
+[ "$what" = " all" ] && what="tables error kernels handoff scaling frame animate plots"
 
 cmake -S "$root" -B "$build" >/dev/null
-make -C "$build" -j2 tsis bench_tables bench_error bench_kernels bench_handoff bench_scaling >/dev/null
+make -C "$build" -j2 tsis bench_tables bench_error bench_kernels bench_handoff bench_scaling bench_frame >/dev/null
 mkdir -p "$results"
 
 animate() {
@@ -132,7 +132,7 @@ GP
 
 for w in $what; do
     case $w in
-        tables | error | kernels | handoff | scaling) "$build/bench/bench_$w" "$@" ;;
+        tables | error | kernels | handoff | scaling | frame) "$build/bench/bench_$w" "$@" ;;
         animate) animate ;;
         plots) plots ;;
         *) echo "bench/run.sh: unknown benchmark '$w'" >&2; exit 2 ;;

@@ -63,7 +63,10 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
 // E(x) of DESIGN §2, summed over the lights.
 vec3 irradiance(vec3 p, vec3 n) {
     vec3 e = vec3(0.0);
-    for (int i = 0; i < u_lightCount; ++i) {
+    // A constant trip count (unrolled, so the light uniforms are read at
+    // constant indices: llvmpipe gathers dynamically indexed ones per lane).
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_lightCount) break;
         float falloff;
         vec3 l = toLight(i, p, falloff);
         float c = dot(n, l);

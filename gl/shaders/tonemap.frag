@@ -30,11 +30,17 @@ void main() {
     vec3 ls = u_key * texelFetch(u_radiance, px, 0).rgb / max(u_lavg, 1e-30);
     vec3 c = ls / (1.0 + ls);
     if (u_specular > 0.0) {
-        for (int i = 0; i < u_lightCount; ++i) {
+        // A constant trip count (unrolled, so the light uniforms are read at
+        // constant indices: llvmpipe gathers dynamically indexed ones per lane).
+        for (int i = 0; i < MAX_LIGHTS; ++i) {
+            if (i >= u_lightCount) break;
             float falloff;
             vec3 l = toLight(i, p.xyz, falloff);
             if (dot(n, l) <= 0.0) continue;
             float s = pow(max(dot(reflect(-l, n), v), 0.0), u_shininess);
+            // Outside the lobe the highlight is below an 8-bit step: skip the
+            // shadow taps (most pixels; they cost most of this pass).
+            if (u_specular * s < 1e-4) continue;
             vec3 tint = u_lightRgb[i] / max(max(u_lightRgb[i].r, u_lightRgb[i].g), max(u_lightRgb[i].b, 1e-30));
             c += u_specular * s * tint * visibility(i, p.xyz, n, l);
         }

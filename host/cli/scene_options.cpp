@@ -62,7 +62,7 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"tsm-radius", true, false,
          "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding radius "
          "(default 2)"},
-        {"atlas-res", true, false, "R  atlas resolution, a power of two (default 1024)"},
+        {"atlas-res", true, false, "R  atlas resolution, a power of two (default 512)"},
         {"atlas", true, false,
          "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
          "build"},
@@ -149,7 +149,7 @@ std::string atlasMode(const Args& args) {
 
 AtlasOptions atlasOptionsFromArgs(const Args& args) {
     AtlasOptions o;
-    o.resolution = args.getInt("atlas-res", 1024, 16, 4096);
+    o.resolution = args.getInt("atlas-res", RenderOptions{}.atlasResolution, 16, 4096);
     return o;
 }
 
@@ -205,10 +205,10 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
         if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");
         return r;
     };
-    o.atlasResolution = powerOfTwo("atlas-res", 1024);
+    o.atlasResolution = powerOfTwo("atlas-res", o.atlasResolution);
     if (o.atlasResolution > 4096)
         fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
-    o.lightResolution = args.getInt("light-res", 1024, 16, 8192);
+    o.lightResolution = args.getInt("light-res", o.lightResolution, 16, 8192);
     o.rpBound = args.getDouble("rp-bound", 0.1, 1e-9, 1e9);
     o.rpK = args.getDouble("rp-k", 1.5, 0.0, 1e6);
     o.rdPart = args.getString("rd-part", "full");

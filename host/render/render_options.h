@@ -9,7 +9,7 @@ namespace tsis {
 struct RenderOptions {
     std::string method = "pyramid";  // the most accurate per ms measured (README)
     int width = 512, height = 512;
-    int atlasResolution = 1024;  // flux/position atlas (power of two)
+    int atlasResolution = 512;   // flux/position atlas (power of two; bench/results/frame.md)
     int lightResolution = 1024;  // shadow map and light-view flux map
     int samples = 900;           // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
