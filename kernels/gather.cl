@@ -80,11 +80,8 @@ kernel void tsis_gather(const __global float4* points, const int count,
         const TsisSample s = samples[i];
 #if TSIS_GATHER_INTERLEAVED
         const __global float8* rows = (const __global float8*)split;
-        const floatW dx = px - s.px;
-        const floatW dy = py - s.py;
-        const floatW dz = pz - s.pz;
         floatW t;
-        const intW idx = profile_indexW(sqrt(dx * dx + dy * dy + dz * dz), info, &t);
+        const intW idx = tsis_lanes_index(px, py, pz, (float3)(s.px, s.py, s.pz), info, &t);
         TSIS_LANES(TSIS_LOAD_ROW)
         br += s.wr * (TSIS_VEC(e, s0) + t * TSIS_VEC(e, s1));
         bg += s.wg * (TSIS_VEC(e, s2) + t * TSIS_VEC(e, s3));

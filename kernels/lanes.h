@@ -41,16 +41,22 @@
 #define TSIS_LOAD_G(k) const float2 cg##k = split[size + idx.s##k];
 #define TSIS_LOAD_B(k) const float2 cb##k = split[2 * size + idx.s##k];
 
+/* Table entry and fraction of |p - at| in every lane (profile.h). */
+static inline intW tsis_lanes_index(const floatW px, const floatW py, const floatW pz,
+                                    const float3 at, const TsisTableInfo info, floatW* t) {
+    const floatW dx = px - at.x;
+    const floatW dy = py - at.y;
+    const floatW dz = pz - at.z;
+    return profile_indexW(sqrt(dx * dx + dy * dy + dz * dz), info, t);
+}
+
 /* b += w * f(|p - at|) in every lane, f the split table (profile.h). */
 static inline void tsis_lanes_add(const floatW px, const floatW py, const floatW pz,
                                   const float3 at, const float3 w, const __global float2* split,
                                   const TsisTableInfo info, floatW* br, floatW* bg, floatW* bb) {
     const int size = (int)info.size;
-    const floatW dx = px - at.x;
-    const floatW dy = py - at.y;
-    const floatW dz = pz - at.z;
     floatW t;
-    const intW idx = profile_indexW(sqrt(dx * dx + dy * dy + dz * dz), info, &t);
+    const intW idx = tsis_lanes_index(px, py, pz, at, info, &t);
     TSIS_LANES(TSIS_LOAD_R)
     TSIS_LANES(TSIS_LOAD_G)
     TSIS_LANES(TSIS_LOAD_B)

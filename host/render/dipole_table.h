@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "cl/cl_runtime.h"
 #include "physics/material.h"
 #include "physics/profile_table.h"
 
@@ -16,10 +17,15 @@ class DipoleTable {
     // Returns true when it tabulated again.
     bool update(const Material& material, double rMax);
     const ProfileTable& table() const { return table_; }
+    // The table's float4 entries on the device, uploaded again after update()
+    // tabulated again.
+    const cl::Buffer& device(const cl::Context& context);
 
   private:
     std::string key_;
     ProfileTable table_;
+    cl::Buffer device_;
+    bool deviceCurrent_ = false;
 };
 
 }  // namespace tsis

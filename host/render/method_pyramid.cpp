@@ -49,10 +49,7 @@ void PyramidMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
 
 void PyramidMethod::gather(FrameContext& ctx) {
     // Any two surface points are at most the bounding sphere's diameter apart.
-    if (rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001))
-        table_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                            rd_.table().rgba.size() * sizeof(float),
-                            const_cast<float*>(rd_.table().rgba.data()));
+    rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001);
     const RenderOptions& o = *ctx.options;
     const double ell = smallestMeanFreePath(ctx.scene->material);
     const int stride =
@@ -73,7 +70,8 @@ void PyramidMethod::gather(FrameContext& ctx) {
                                        order.data());
     }
     pyramid_.gather(ctx.points, order_, static_cast<int>(order.size()), o.pyramidEpsilon,
-                    static_cast<float>(ell), table_, rd_.table().info, ctx.radiosity);
+                    static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
+                    ctx.radiosity);
     double ms = pyramid_.lastGatherMs();
     if (!plan.interpolate.empty()) {
         Timer t;

@@ -44,7 +44,6 @@ class PyramidMethod : public Method {
     ClRuntime& cl_;
     FluxPyramid pyramid_;
     DipoleTable rd_;
-    cl::Buffer table_;
     cl::Buffer order_;  // the covered pixels in tiles (FluxPyramid::tileOrder)
     size_t orderCapacity_ = 0;
 };

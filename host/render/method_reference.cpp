@@ -61,10 +61,8 @@ void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
 
 void ReferenceMethod::gather(FrameContext& ctx) {
     // Any two surface points are at most the bounding sphere's diameter apart.
-    if (rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001))
-        table_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                            rd_.table().rgba.size() * sizeof(float),
-                            const_cast<float*>(rd_.table().rgba.data()));
+    rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001);
+    const cl::Buffer& table = rd_.device(cl_.context());
     const int n = static_cast<int>(points_.points().size());
     const int count = ctx.pointCount;
     ctx.stats->set("rd_evaluations", static_cast<double>(count) * n);
@@ -90,7 +88,7 @@ void ReferenceMethod::gather(FrameContext& ctx) {
             ctx.points.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         cl::Buffer out =
             ctx.radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
-        gatherer_.run(in, static_cast<int>(len), samples_, n, table_, rd_.table().info, out);
+        gatherer_.run(in, static_cast<int>(len), samples_, n, table, rd_.table().info, out);
         ms += gatherer_.lastMs();  // waits for the chunk
         progress.update(static_cast<long long>(begin + len));
     }

@@ -40,7 +40,6 @@ class ReferenceMethod : public Method {
     SurfaceSampleCache points_;
     cl::Buffer samples_;  // TsisSample per point, w = E·ΔA
     DipoleTable rd_;
-    cl::Buffer table_;
 };
 
 }  // namespace tsis
