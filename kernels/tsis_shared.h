@@ -34,19 +34,20 @@ typedef struct {
     tsis_uint pad;
 } TsisTableInfo;
 
-/* A node of the flux pyramid (kernels/flux_pyramid.cl, --method pyramid): a
- * block of 2^k x 2^k atlas texels summed -- flux sum E*A per channel (fr, fg,
- * fb) and surface area (mm^2) -- and stood in for by its flux-weighted
- * position (px, py, pz); every texel of the block lies within `radius` mm of
- * that position. area = 0: no covered texel in the block. */
+/* A node of the flux tree (kernels/flux_pyramid.cl, --method pyramid): atlas
+ * texels close in 3D summed -- flux sum E*A per channel (fr, fg, fb) and
+ * surface area (mm^2) -- and stood in for by their flux-weighted position
+ * (px, py, pz); every texel lies within `radius` mm of that position.
+ * area = 0: no covered texel. */
 typedef struct {
     float fr, fg, fb, area;
     float px, py, pz, radius;
 } TsisFluxNode;
 
-/* The pyramid's finest level has at most 2^TSIS_PYRAMID_MAX_LEVELS texels a
- * side (atlas resolution <= 4096): node codes keep x and y in 12 bits. */
-#define TSIS_PYRAMID_MAX_LEVELS 12
+/* Depth of the flux tree below its root, at most (21 bits of Morton code an
+ * axis in steps of 3, plus the splits of texels that share a code): bounds
+ * the descent's stack. */
+#define TSIS_PYRAMID_MAX_DEPTH 28
 
 /* Luminance weights (Rec. 709) used for importance: Y(Phi). */
 #define TSIS_LUMA_R 0.2126f

@@ -1,10 +1,13 @@
 #include "cl/flux_pyramid.h"
 
 #include <algorithm>
-#include <bit>
+#include <glm/common.hpp>
+#include <glm/gtc/type_precision.hpp>
+#include <glm/vec3.hpp>
+#include <limits>
 #include <numeric>
+#include <utility>
 
-#include "cl/importance_sampler.h"
 #include "cl/launch.h"
 #include "util/error.h"
 
@@ -18,34 +21,98 @@ constexpr size_t kLocalGather = 4;  // as the lane gather (cl/gather.cpp)
 
 FluxPyramid::FluxPyramid(ClRuntime& cl)
     : cl_(cl),
-      leaves_(cl.kernel("flux_pyramid.cl", "tsis_flux_leaves")),
-      reduce_(cl.kernel("flux_pyramid.cl", "tsis_flux_reduce")),
+      update_(cl.kernel("flux_pyramid.cl", "tsis_flux_tree_update")),
       split_(cl.kernel("gather.cl", "tsis_profile_split")),
       gather_(cl.kernel("flux_pyramid.cl", "tsis_flux_pyramid_gather")) {}
 
-void FluxPyramid::build(const cl::Buffer& flux, const cl::Buffer& position,
-                        const cl::Buffer& normal, int res) {
-    TSIS_CHECK(res >= 1 && std::has_single_bit(static_cast<unsigned>(res)));
-    const int levels = std::countr_zero(static_cast<unsigned>(res));
-    TSIS_CHECK_LE(levels, TSIS_PYRAMID_MAX_LEVELS);
-    const size_t texels = size_t(res) * res;
-    for (const cl::Buffer* b : {&flux, &position, &normal})
-        TSIS_CHECK_GE(b->getInfo<CL_MEM_SIZE>(), texels * sizeof(cl_float4));
-    if (res != res_) {
-        nodes_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE,
-                            ImportanceSampler::pyramidSize(res) * sizeof(TsisFluxNode));
-        res_ = res;
+void FluxPyramid::setLeaves(const std::vector<float>& positionRGBA) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (size_t i = 0; i + 3 < positionRGBA.size(); i += 4)
+        if (positionRGBA[i + 3] > 0) {
+            const glm::vec3 p(positionRGBA[i], positionRGBA[i + 1], positionRGBA[i + 2]);
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+    // 21 bits of x, y and z interleaved: a 63-bit Morton code.
+    auto spread = [](uint64_t v) {
+        v &= 0x1fffff;
+        v = (v | (v << 32)) & 0x001f00000000ffffull;
+        v = (v | (v << 16)) & 0x001f0000ff0000ffull;
+        v = (v | (v << 8)) & 0x100f00f00f00f00full;
+        v = (v | (v << 4)) & 0x10c30c30c30c30c3ull;
+        v = (v | (v << 2)) & 0x1249249249249249ull;
+        return v;
+    };
+    const glm::vec3 scale = 2097151.0f / glm::max(hi - lo, glm::vec3(1e-30f));
+    std::vector<std::pair<uint64_t, int>> keyed;
+    for (size_t i = 0; i + 3 < positionRGBA.size(); i += 4) {
+        if (!(positionRGBA[i + 3] > 0)) continue;
+        const glm::vec3 q =
+            (glm::vec3(positionRGBA[i], positionRGBA[i + 1], positionRGBA[i + 2]) - lo) * scale;
+        const glm::u64vec3 c(glm::clamp(q + 0.5f, glm::vec3(0.0f), glm::vec3(2097151.0f)));
+        keyed.emplace_back(spread(c.x) | (spread(c.y) << 1) | (spread(c.z) << 2),
+                           static_cast<int>(i / 4));
     }
+    std::sort(keyed.begin(), keyed.end());  // ties by texel index
+    leafTexels_.clear();
+    for (const auto& k : keyed) leafTexels_.push_back(k.second);
+
+    // Breadth first, so children are contiguous and each depth is a range.
+    struct Range {
+        size_t begin, end;
+        int shift, depth;
+    };
+    std::vector<Range> queue = {{0, std::max<size_t>(keyed.size(), 1), 63, 0}};
+    topology_.clear();
+    depthBegin_.clear();
+    for (size_t q = 0; q < queue.size(); ++q) {
+        const Range r = queue[q];
+        if (depthBegin_.size() <= size_t(r.depth)) depthBegin_.push_back(static_cast<int>(q));
+        if (r.end - r.begin == 1) {
+            // An atlas without texels: one leaf of texel 0, which is uncovered.
+            topology_.push_back({{0, 0, keyed.empty() ? 0 : keyed[r.begin].second, 0}});
+            continue;
+        }
+        std::vector<Range> children;
+        // The next 3 bits that do not all agree split the range by octant.
+        for (int shift = r.shift - 3; shift >= 0 && children.empty(); shift -= 3) {
+            auto octant = [&](size_t k) { return (keyed[k].first >> shift) & 7; };
+            if (octant(r.begin) == octant(r.end - 1)) continue;
+            for (size_t b = r.begin; b < r.end;) {
+                size_t e = b;
+                while (e < r.end && octant(e) == octant(b)) ++e;
+                children.push_back({b, e, shift, r.depth + 1});
+                b = e;
+            }
+        }
+        if (children.empty()) {  // texels that share a code: up to 8 even parts
+            const size_t n = r.end - r.begin, parts = std::min<size_t>(8, n);
+            for (size_t k = 0; k < parts; ++k)
+                children.push_back(
+                    {r.begin + n * k / parts, r.begin + n * (k + 1) / parts, 0, r.depth + 1});
+        }
+        topology_.push_back(
+            {{static_cast<int>(queue.size()), static_cast<int>(children.size()), -1, 0}});
+        queue.insert(queue.end(), children.begin(), children.end());
+    }
+    depthBegin_.push_back(static_cast<int>(queue.size()));
+    TSIS_CHECK_LE(depthBegin_.size(), size_t(TSIS_PYRAMID_MAX_DEPTH + 2));
+    topologyBuffer_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                 topology_.size() * sizeof(cl_int4), topology_.data());
+    nodes_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, topology_.size() * sizeof(TsisFluxNode));
+}
+
+void FluxPyramid::build(const cl::Buffer& flux, const cl::Buffer& position,
+                        const cl::Buffer& normal) {
+    TSIS_CHECK(!topology_.empty());  // setLeaves() first
     cl::CommandQueue& q = cl_.queue();
-    buildEvents_.assign(levels + 1, cl::Event());
-    setKernelArgs(leaves_, flux, position, normal, static_cast<cl_int>(texels), nodes_);
-    enqueue1D(q, leaves_, texels, kLocal, &buildEvents_[0]);
-    for (int k = 1; k <= levels; ++k) {
-        const int dstRes = res >> k;
-        setKernelArgs(reduce_, nodes_,
-                      static_cast<cl_int>(ImportanceSampler::levelOffset(res, k - 1)),
-                      static_cast<cl_int>(ImportanceSampler::levelOffset(res, k)), dstRes);
-        enqueue1D(q, reduce_, size_t(dstRes) * dstRes, kLocal, &buildEvents_[k]);
+    buildEvents_.clear();
+    // The deepest nodes first: each depth reads the one below it (in-order queue).
+    for (size_t d = depthBegin_.size() - 1; d-- > 0;) {
+        const int begin = depthBegin_[d], end = depthBegin_[d + 1];
+        setKernelArgs(update_, flux, position, normal, topologyBuffer_, begin, end, nodes_);
+        buildEvents_.emplace_back();
+        enqueue1D(q, update_, size_t(end - begin), kLocal, &buildEvents_.back());
     }
 }
 
@@ -68,7 +135,7 @@ std::vector<int> FluxPyramid::tileOrder(const std::vector<int>& pixels, int widt
 void FluxPyramid::gather(const cl::Buffer& points, const cl::Buffer& order, int count,
                          float epsilon, float ell, const cl::Buffer& table,
                          const TsisTableInfo& info, cl::Buffer& out) {
-    TSIS_CHECK_GT(res_, 0);  // build() first
+    TSIS_CHECK(!topology_.empty());  // setLeaves() and build() first
     TSIS_CHECK_GE(count, 0);
     TSIS_CHECK_GE(info.size, 2u);
     gatherEvents_.clear();
@@ -90,8 +157,7 @@ void FluxPyramid::gather(const cl::Buffer& points, const cl::Buffer& order, int 
     setKernelArgs(split_, table, info, splitTable_);
     gatherEvents_.emplace_back();
     enqueue1D(q, split_, info.size, 64, &gatherEvents_.back());
-    const int levels = std::countr_zero(static_cast<unsigned>(res_));
-    setKernelArgs(gather_, points, order, count, nodes_, res_, levels, epsilon, ell * ell,
+    setKernelArgs(gather_, points, order, count, nodes_, topologyBuffer_, epsilon, ell * ell,
                   splitTable_, info, out, evaluations_);
     gatherEvents_.emplace_back();
     enqueue1D(q, gather_, size_t(lastItems_), kLocalGather, &gatherEvents_.back());

@@ -8,7 +8,6 @@
 #include <random>
 
 #include "cl/cl_test_fixture.h"
-#include "cl/importance_sampler.h"
 #include "cl/table_test_util.h"
 
 namespace tsis {
@@ -18,11 +17,11 @@ using test::analyticTable;
 using test::ClTest;
 using test::lookup;
 
-// A 16×16 atlas of two charts: the left half of the atlas on the plane z = 0,
+// A 32×32 atlas of two charts: the left half of the atlas on the plane z = 0,
 // the right half on the plane z = 3 (so blocks across the seam are far apart
 // in 3D), ~80% of the texels covered, random flux and texel areas.
 struct SyntheticAtlas {
-    static constexpr int kRes = 16;
+    static constexpr int kRes = 32;
     std::vector<cl_float4> flux, position, normal;
 
     explicit SyntheticAtlas(uint32_t seed) {
@@ -37,7 +36,7 @@ struct SyntheticAtlas {
                 if (u(rng) > 0.8f) continue;
                 const size_t i = size_t(y) * kRes + x;
                 const bool right = x >= kRes / 2;
-                const float s = 0.25f;  // mm per texel
+                const float s = 0.125f;  // mm per texel
                 position[i] = {{(x % (kRes / 2)) * s, y * s, right ? 3.0f : 0.0f, 1.0f}};
                 normal[i] = {{0, 0, 1, s * s * (0.8f + 0.4f * u(rng))}};
                 flux[i] = {{u(rng), u(rng), u(rng), 1.0f}};
@@ -53,12 +52,22 @@ class FluxPyramidTest : public ClTest {
     SyntheticAtlas atlas{5};
 
     void build() {
-        pyramid.build(upload(atlas.flux), upload(atlas.position), upload(atlas.normal),
-                      SyntheticAtlas::kRes);
+        std::vector<float> positions;
+        for (const cl_float4& p : atlas.position) positions.insert(positions.end(), p.s, p.s + 4);
+        pyramid.setLeaves(positions);
+        pyramid.build(upload(atlas.flux), upload(atlas.position), upload(atlas.normal));
     }
     std::vector<TsisFluxNode> nodes() {
-        return download<TsisFluxNode>(pyramid.nodes(),
-                                      ImportanceSampler::pyramidSize(SyntheticAtlas::kRes));
+        return download<TsisFluxNode>(pyramid.nodes(), pyramid.topology().size());
+    }
+    // The texels under node i of the tree.
+    void texelsUnder(int i, std::vector<int>& out) const {
+        const cl_int4& t = pyramid.topology()[size_t(i)];
+        if (t.s[1] == 0) {
+            if (atlas.covered(size_t(t.s[2]))) out.push_back(t.s[2]);
+            return;
+        }
+        for (int c = t.s[0]; c < t.s[0] + t.s[1]; ++c) texelsUnder(c, out);
     }
     // B at `points` through the pyramid with `epsilon`.
     std::vector<cl_float4> gather(const std::vector<cl_float4>& points, float epsilon,
@@ -90,51 +99,60 @@ std::vector<cl_float4> pointsOnCharts(int count, uint32_t seed) {
     return p;
 }
 
+// The leaves are the covered texels, each once, in Morton order of their
+// positions (the two charts, 3 mm apart, do not interleave), and every node's
+// children are contiguous and at most 8.
+TEST_F(FluxPyramidTest, LeavesAreTheCoveredTexelsInSpatialOrder) {
+    build();
+    const std::vector<int>& leaves = pyramid.leafTexels();
+    std::vector<int> sorted = leaves;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<int> covered;
+    for (size_t i = 0; i < atlas.flux.size(); ++i)
+        if (atlas.covered(i)) covered.push_back(int(i));
+    EXPECT_EQ(sorted, covered);
+    int switches = 0;
+    for (size_t k = 1; k < leaves.size(); ++k)
+        switches += (atlas.at(size_t(leaves[k])).z > 1) != (atlas.at(size_t(leaves[k - 1])).z > 1);
+    EXPECT_EQ(switches, 1) << "one run per chart";
+    std::vector<int> under;
+    texelsUnder(0, under);
+    std::sort(under.begin(), under.end());
+    EXPECT_EQ(under, covered) << "the root holds every texel once";
+    for (const cl_int4& t : pyramid.topology()) EXPECT_LE(t.s[1], 8);
+    EXPECT_LE(pyramid.depth(), TSIS_PYRAMID_MAX_DEPTH);
+}
+
+// Every node sums its texels' flux and area, sits at their flux-weighted
+// position, and its radius holds every one of them.
 TEST_F(FluxPyramidTest, NodesSumTheirTexelsAndBoundThemInRadius) {
     build();
     const std::vector<TsisFluxNode> n = nodes();
-    const int res = SyntheticAtlas::kRes;
-    for (int level = 0; (res >> level) >= 1; ++level) {
-        const int lr = res >> level, size = 1 << level;
-        for (int y = 0; y < lr; ++y)
-            for (int x = 0; x < lr; ++x) {
-                const TsisFluxNode& node =
-                    n[ImportanceSampler::levelOffset(res, level) + y * lr + x];
-                glm::dvec3 flux(0.0), weighted(0.0);
-                double area = 0, weight = 0;
-                for (int ty = y * size; ty < (y + 1) * size; ++ty)
-                    for (int tx = x * size; tx < (x + 1) * size; ++tx) {
-                        const size_t i = size_t(ty) * res + tx;
-                        if (!atlas.covered(i)) continue;
-                        const cl_float4& f = atlas.flux[i];
-                        flux += glm::dvec3(f.s[0], f.s[1], f.s[2]);
-                        area += atlas.normal[i].s[3];
-                        const double y709 =
-                            TSIS_LUMA_R * f.s[0] + TSIS_LUMA_G * f.s[1] + TSIS_LUMA_B * f.s[2];
-                        weighted += y709 * atlas.at(i);
-                        weight += y709;
-                    }
-                const std::string where = "level " + std::to_string(level) + " (" +
-                                          std::to_string(x) + "," + std::to_string(y) + ")";
-                EXPECT_NEAR(node.fr, flux.x, 1e-5 * (1 + flux.x)) << where;
-                EXPECT_NEAR(node.fb, flux.z, 1e-5 * (1 + flux.z)) << where;
-                EXPECT_NEAR(node.area, area, 1e-5 * (1 + area)) << where;
-                if (weight <= 0) continue;
-                const glm::dvec3 centroid = weighted / weight;
-                const glm::dvec3 p(node.px, node.py, node.pz);
-                EXPECT_LT(glm::length(p - centroid), 1e-4) << where;
-                // Every texel centre of the block lies inside the node's radius.
-                for (int ty = y * size; ty < (y + 1) * size; ++ty)
-                    for (int tx = x * size; tx < (x + 1) * size; ++tx) {
-                        const size_t i = size_t(ty) * res + tx;
-                        if (atlas.covered(i)) {
-                            EXPECT_LE(glm::length(atlas.at(i) - p), node.radius + 1e-5) << where;
-                        }
-                    }
-            }
+    for (size_t i = 0; i < n.size(); ++i) {
+        std::vector<int> texels;
+        texelsUnder(int(i), texels);
+        glm::dvec3 flux(0.0), weighted(0.0);
+        double area = 0, weight = 0;
+        for (int t : texels) {
+            const cl_float4& f = atlas.flux[size_t(t)];
+            flux += glm::dvec3(f.s[0], f.s[1], f.s[2]);
+            area += atlas.normal[size_t(t)].s[3];
+            const double y709 = TSIS_LUMA_R * f.s[0] + TSIS_LUMA_G * f.s[1] + TSIS_LUMA_B * f.s[2];
+            weighted += y709 * atlas.at(size_t(t));
+            weight += y709;
+        }
+        const std::string where = "node " + std::to_string(i);
+        EXPECT_NEAR(n[i].fr, flux.x, 1e-5 * (1 + flux.x)) << where;
+        EXPECT_NEAR(n[i].fb, flux.z, 1e-5 * (1 + flux.z)) << where;
+        EXPECT_NEAR(n[i].area, area, 1e-5 * (1 + area)) << where;
+        if (weight <= 0) continue;
+        const glm::dvec3 p(n[i].px, n[i].py, n[i].pz);
+        EXPECT_LT(glm::length(p - weighted / weight), 1e-4) << where;
+        for (int t : texels)
+            EXPECT_LE(glm::length(atlas.at(size_t(t)) - p), n[i].radius + 1e-5) << where;
     }
-    // The top spans both charts (3 mm apart): its radius says so.
-    EXPECT_GT(n.back().radius, 1.5f);
+    // The root spans both charts (3 mm apart): its radius says so.
+    EXPECT_GT(n.front().radius, 1.5f);
 }
 
 TEST_F(FluxPyramidTest, EpsilonZeroIsTheExactSumOverTheAtlas) {
@@ -158,7 +176,7 @@ TEST_F(FluxPyramidTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
     const std::vector<cl_float4> points = pointsOnCharts(64, 3);
     double lastError = 1e9;
     long long lastCost = 0;
-    for (float epsilon : {0.5f, 0.1f, 0.02f, 0.004f}) {
+    for (float epsilon : {0.5f, 0.1f, 0.03f, 0.01f}) {
         const std::vector<cl_float4> b = gather(points, epsilon, t);
         const long long cost = pyramid.lastEvaluations();
         double worst = 0;

@@ -31,6 +31,7 @@ struct FrameContext {
     cl::Buffer fluxAtlas;         // "flux_atlas_cl": res² float4 (flux rgb)
     cl::Buffer positionAtlas;     // "position_atlas_cl": res² float4 (xyz, 1 where covered)
     cl::Buffer normalAtlas;       // "normal_atlas_cl": res² float4 (normal, w = texel area mm²)
+    int geometryVersion = 0;      // "position_atlas_cl" too: changes with the mesh or resolution
     std::vector<LightView>* lights = nullptr;  // "light_maps": depth, flux, position per light
     int pointCount = 0;           // covered pixels
     cl::Buffer points;            // "points_cl": pointCount float4 (xyz of each covered pixel)

@@ -34,17 +34,33 @@ void PyramidMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     graph.addPass({"pyramid_build",
                    {"flux_atlas_cl", "position_atlas_cl", "normal_atlas_cl"},
                    {"flux_pyramid"},
-                   [this, &ctx] {
-                       pyramid_.build(ctx.fluxAtlas, ctx.positionAtlas, ctx.normalAtlas,
-                                      ctx.atlasResolution);
-                       ctx.stats->addStage("pyramid_build", pyramid_.lastBuildMs());
-                   },
+                   [this, &ctx] { build(ctx); },
                    true});
     graph.addPass({"pyramid_gather",
                    {"flux_pyramid", "points_cl"},
                    {"radiosity_cl"},
                    [this, &ctx] { gather(ctx); },
                    true});
+}
+
+void PyramidMethod::build(FrameContext& ctx) {
+    // The leaves' order depends on the positions only: again when the mesh or
+    // the atlas resolution changed.
+    if (ctx.geometryVersion != leavesVersion_) {
+        Timer t;
+        const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
+        std::vector<float> positions(texels * 4);
+        cl_.queue().enqueueReadBuffer(ctx.positionAtlas, CL_TRUE, 0,
+                                      positions.size() * sizeof(float), positions.data());
+        pyramid_.setLeaves(positions);
+        leavesVersion_ = ctx.geometryVersion;
+        ctx.stats->addStage("pyramid_order", t.ms());
+    }
+    pyramid_.build(ctx.fluxAtlas, ctx.positionAtlas, ctx.normalAtlas);
+    ctx.stats->addStage("pyramid_build", pyramid_.lastBuildMs());
+    ctx.stats->set("pyramid_leaves", static_cast<double>(pyramid_.leafTexels().size()));
+    ctx.stats->set("pyramid_nodes", static_cast<double>(pyramid_.topology().size()));
+    ctx.stats->set("pyramid_depth", pyramid_.depth());
 }
 
 void PyramidMethod::gather(FrameContext& ctx) {

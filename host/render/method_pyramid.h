@@ -4,10 +4,12 @@
 // The thesis draws N samples from the flux atlas' sum pyramid; Jensen &
 // Buhler sum an octree of irradiance samples top-down, using a node whole
 // when it is small as seen from the point. This method does the second on the
-// first's structure: the pyramid's 2×2 blocks of atlas texels are the nodes
-// (flux, area, flux-weighted position, a radius bounding the block in 3D),
-// built on the device each time the flux atlas changes, and every group of 8
-// neighbouring pixels descends it with the criterion
+// first's data: the atlas texels are the leaves, summed four to a node in the
+// order of a 3D Morton curve through their positions (fixed per mesh and
+// atlas resolution, so atlas neighbours from unrelated charts never share a
+// node); each node keeps flux, area, flux-weighted position and a radius
+// bounding it, rebuilt on the device each time the flux atlas changes, and
+// every group of 8 neighbouring pixels descends it with the criterion
 // max(radius², area/π) < ε·(d² + ℓ²), ℓ the smallest mean free path. No
 // random numbers (the same image for any --seed), no Rp or K to tune, and the
 // error falls with ε (--pyramid-epsilon) at a cost that grows like 1/ε.
@@ -39,12 +41,14 @@ class PyramidMethod : public Method {
     static constexpr double kMaxCornerDistance = 0.5;
 
   private:
+    void build(FrameContext& ctx);
     void gather(FrameContext& ctx);
 
     ClRuntime& cl_;
     FluxPyramid pyramid_;
     DipoleTable rd_;
-    cl::Buffer order_;  // the covered pixels in tiles (FluxPyramid::tileOrder)
+    int leavesVersion_ = -1;  // FrameContext::geometryVersion of the pyramid's leaf order
+    cl::Buffer order_;        // the covered pixels in tiles (FluxPyramid::tileOrder)
     size_t orderCapacity_ = 0;
 };
 

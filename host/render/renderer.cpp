@@ -241,6 +241,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        fluxUploadKey_ = lighting;
                        ctx.fluxAtlas = fluxAtlas_.buffer;
                        ctx.positionAtlas = positionAtlas_.buffer;
+                       ctx.geometryVersion = geometryVersion_;
                        stats.addStage("gl_to_cl_atlas", t.ms(), moved);
                        if (opt.keepAovs) result.fluxAtlas = toImage(flux, res, res, 3);
                    },
