@@ -29,6 +29,7 @@ struct FrameContext {
     float boundingRadius = 0;     // the object fits in a sphere of this radius at the origin
     int atlasResolution = 0;
     cl::Buffer fluxAtlas;         // "flux_atlas_cl": res² float4 (flux rgb)
+    uint64_t fluxKey = 0;         // "flux_atlas_cl" too: equal keys, equal flux (0: unknown)
     cl::Buffer positionAtlas;     // "position_atlas_cl": res² float4 (xyz, 1 where covered)
     cl::Buffer normalAtlas;       // "normal_atlas_cl": res² float4 (normal, w = texel area mm²)
     int geometryVersion = 0;      // "position_atlas_cl" too: changes with the mesh or resolution

@@ -56,8 +56,15 @@ void PyramidMethod::build(FrameContext& ctx) {
         leavesVersion_ = ctx.geometryVersion;
         ctx.stats->addStage("pyramid_order", t.ms());
     }
-    pyramid_.build(ctx.fluxAtlas, ctx.positionAtlas, ctx.normalAtlas);
-    ctx.stats->addStage("pyramid_build", pyramid_.lastBuildMs());
+    // The sums change only with the flux (a camera-only frame keeps them).
+    const bool current =
+        ctx.fluxKey != 0 && ctx.fluxKey == builtFluxKey_ && leavesVersion_ == builtLeavesVersion_;
+    if (!current) {
+        pyramid_.build(ctx.fluxAtlas, ctx.positionAtlas, ctx.normalAtlas);
+        builtFluxKey_ = ctx.fluxKey;
+        builtLeavesVersion_ = leavesVersion_;
+    }
+    ctx.stats->addStage("pyramid_build", current ? 0.0 : pyramid_.lastBuildMs());
     ctx.stats->set("pyramid_leaves", static_cast<double>(pyramid_.leafTexels().size()));
     ctx.stats->set("pyramid_nodes", static_cast<double>(pyramid_.topology().size()));
     ctx.stats->set("pyramid_depth", pyramid_.depth());

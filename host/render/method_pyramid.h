@@ -48,7 +48,10 @@ class PyramidMethod : public Method {
     FluxPyramid pyramid_;
     DipoleTable rd_;
     int leavesVersion_ = -1;  // FrameContext::geometryVersion of the pyramid's leaf order
-    cl::Buffer order_;        // the covered pixels in tiles (FluxPyramid::tileOrder)
+    // What the node sums were made from (FrameContext::fluxKey, leavesVersion_).
+    uint64_t builtFluxKey_ = 0;
+    int builtLeavesVersion_ = -1;
+    cl::Buffer order_;  // the covered pixels in tiles (FluxPyramid::tileOrder)
     size_t orderCapacity_ = 0;
 };
 

@@ -239,6 +239,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& opt) {
                        }
                        cl_.queue().finish();
                        fluxUploadKey_ = lighting;
+                       ctx.fluxKey = opt.reuseLighting ? lighting : 0;
                        ctx.fluxAtlas = fluxAtlas_.buffer;
                        ctx.positionAtlas = positionAtlas_.buffer;
                        ctx.geometryVersion = geometryVersion_;

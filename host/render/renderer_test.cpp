@@ -11,19 +11,23 @@ namespace {
 // the camera or the method moved) is the same, byte for byte, as the frame
 // made from scratch; a change of light is never served stale maps.
 TEST(Renderer, ReusedLightingGivesTheSameFrameAsFreshLighting) {
-    Scene a = test::sphereScene("skin1",
-                                {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    Scene a =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
     Scene moved = a;
     moved.camera.eye = glm::vec3(10, 4, 12);
     Scene relit = moved;
     relit.lights[0].vec = glm::vec3(8, 10, 6);
     const RenderOptions opt = test::smallOptions(48, 256, 256);
 
-    for (const char* method : {"tsis", "hybrid"}) {
+    for (const char* method : {"tsis", "hybrid", "pyramid"}) {
         SCOPED_TRACE(method);
         const FrameResult first = test::renderWith(a, opt, method);
         const FrameResult reused = test::renderWith(moved, opt, method);
         EXPECT_EQ(test::statValue(reused.stats, "lighting_reused"), 1);
+        // pyramid: the node sums are kept too.
+        if (std::string(method) == "pyramid") {
+            EXPECT_EQ(reused.stats.stageMs("pyramid_build"), 0.0);
+        }
         const FrameResult other = test::renderWith(relit, opt, method);
         EXPECT_EQ(test::statValue(other.stats, "lighting_reused"), 0);
         EXPECT_NE(other.radiosity.pixels, reused.radiosity.pixels);
