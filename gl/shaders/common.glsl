@@ -42,12 +42,15 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 
 // Shadow-map visibility with a normal offset that grows at grazing angles (no
 // acne on curved translucent surfaces) and PCF: four bilinear-compared taps at
-// ±½ texel, a 3×3-texel tent for the price of four lookups.
+// ±½ texel, a 3×3-texel tent for the price of four lookups. The offset, ½ + sinθ
+// texels, measured against the ray-cast reference: 1 + 2 sinθ let light leak
+// past grazing detail (ChineseDragon-10kv, skin1 30 mm: 3.3% against 1.6%),
+// ¼ + ½ sinθ shows acne (7–13% on every scene).
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
     float sinT = sqrt(1.0 - cosT * cosT);
-    vec3 q = p + n * u_shadowTexelMm[i] * (1.0 + 2.0 * sinT);
+    vec3 q = p + n * u_shadowTexelMm[i] * (0.5 + 1.0 * sinT);
     vec4 c = u_lightViewProj[i] * vec4(q, 1.0);
     vec3 s = c.xyz / c.w * 0.5 + 0.5;
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
