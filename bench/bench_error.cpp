@@ -67,9 +67,9 @@ int run(const BenchArgs& a) {
         timestamp() + ".\nMachine: " + machine +
         ".\nRelative RMSE of radiance L against `--method reference` over its "
         "covered pixels, 512×512, atlas " +
-        std::to_string(RenderOptions{}.atlasResolution) + "², light maps " +
-        std::to_string(RenderOptions{}.lightResolution) +
-        "², default lights; frame time = the "
+        std::to_string(RenderOptions{}.atlasResolution) +
+        "², light maps at their default (1024² for these cases), default lights; "
+        "frame time = the "
         "whole frame (GL passes, hand-offs, kernels, composite), median of " +
         std::to_string(a.frames) +
         " frames after the frame measured for error. Plots: `error_<case>.png`.\n\n";

@@ -66,7 +66,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"atlas", true, false,
          "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
          "build"},
-        {"light-res", true, false, "R  shadow/light-view map resolution (default 1024)"},
+        {"light-res", true, false,
+         "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 diffusion "
+         "lengths 1/max σtr across, else 1024 (default 0)"},
         {"key", true, false, "K  tone-mapping key (default 0.18)"},
         {"no-specular", false, false, "turn off the Phong highlight"},
         {"no-reuse-lighting", false, false,
@@ -208,7 +210,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.atlasResolution = powerOfTwo("atlas-res", o.atlasResolution);
     if (o.atlasResolution > 4096)
         fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
-    o.lightResolution = args.getInt("light-res", o.lightResolution, 16, 8192);
+    o.lightResolution = args.getInt("light-res", o.lightResolution, 0, 8192);
     o.rpBound = args.getDouble("rp-bound", 0.1, 1e-9, 1e9);
     o.rpK = args.getDouble("rp-k", 1.5, 0.0, 1e6);
     o.rdPart = args.getString("rd-part", "full");

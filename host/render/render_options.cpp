@@ -21,8 +21,12 @@ void validateRenderOptions(const RenderOptions& o) {
     const int res = o.atlasResolution;
     if (res < 16 || res > 4096 || (res & (res - 1)))
         fail("--atlas-res ", res, " must be a power of two from 16 to 4096");
-    if (o.lightResolution < 16 || o.lightResolution > 8192)
-        fail("--light-res ", o.lightResolution, " is outside 16 to 8192");
+    if (o.lightResolution != 0 && (o.lightResolution < 16 || o.lightResolution > 8192))
+        fail("--light-res ", o.lightResolution, " is outside 16 to 8192 (0: automatic)");
+    if (!(o.pyramidEpsilon >= 0.0f && o.pyramidEpsilon <= 1.0f))
+        fail("--pyramid-epsilon ", o.pyramidEpsilon, " is outside 0 to 1");
+    if (o.pyramidStride < 0 || o.pyramidStride > 16)
+        fail("--pyramid-stride ", o.pyramidStride, " is outside 0 to 16 (0: automatic)");
     // The checks the methods make when they run (method_hybrid, method_mis, method_ltsm).
     const RdPart part = parseRdPart(o.rdPart);
     if (part != RdPart::Full && o.method == "hybrid")

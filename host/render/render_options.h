@@ -9,9 +9,11 @@ namespace tsis {
 struct RenderOptions {
     std::string method = "pyramid";  // the most accurate per ms measured (README)
     int width = 512, height = 512;
-    int atlasResolution = 512;   // flux/position atlas (power of two; bench/results/frame.md)
-    int lightResolution = 1024;  // shadow map and light-view flux map
-    int samples = 900;           // N, the shared importance samples (tsis, hybrid global part)
+    int atlasResolution = 512;  // flux/position atlas (power of two; bench/results/frame.md)
+    // Shadow map and light-view flux map; 0 = from the object's size in
+    // diffusion lengths (autoLightResolution in render/renderer.h)
+    int lightResolution = 0;
+    int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
     float key = 0.18f;  // Reinhard key
     bool specular = true;
@@ -31,7 +33,7 @@ struct RenderOptions {
     // pyramid: evaluate every s-th pixel, interpolate between; 0 = by ℓ and the
     // pixel's size (method_pyramid.h), 1 = every pixel
     int pyramidStride = 0;
-    double tsmRadius = 2.0;       // tsm: filter radius in 1/σtr of the widest channel
+    double tsmRadius = 2.0;  // tsm: filter radius in 1/σtr of the widest channel
     // Copy radiosity/radiance/position/normal/coverage/atlas to the host result.
     bool keepAovs = false;
     // Average this frame's radiosity with the frames before it while nothing

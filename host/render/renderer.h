@@ -84,6 +84,11 @@ class Renderer {
     std::vector<GrowingBuffer> lightCl_;
 };
 
+// The light-map resolution RenderOptions::lightResolution = 0 stands for:
+// 2048² when the object is more than 100 of its shortest diffusion lengths
+// 1/σtr across (bounding diameter), else 1024².
+int autoLightResolution(const Scene& scene);
+
 // FNV-1a over the mesh's geometry and UVs: decides when to re-upload.
 uint64_t meshHash(const Mesh& mesh);
 

@@ -45,5 +45,20 @@ TEST(Renderer, ReusedLightingGivesTheSameFrameAsFreshLighting) {
     }
 }
 
+// Light maps of 2048² only for objects many diffusion lengths across, where
+// the shadow edges stay sharp in B; the frame reports the one it used.
+TEST(Renderer, LightResolutionFollowsTheObjectsSizeInDiffusionLengths) {
+    const Light light{Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)};
+    Scene small = test::sphereScene("skin1", light);  // 10 mm box diagonal: ~8 of skin1's 1/σtr
+    EXPECT_EQ(autoLightResolution(small), 1024);
+    Scene large = test::sphereScene("ketchup", light);
+    normalizeMesh(large.mesh, 80.0);  // a 46 mm sphere: ~117 of ketchup's blue 1/σtr
+    EXPECT_EQ(autoLightResolution(large), 2048);
+    RenderOptions opt = test::smallOptions(16, 64);
+    opt.lightResolution = 0;
+    EXPECT_EQ(test::statValue(test::renderWith(small, opt, "pyramid").stats, "light_resolution"),
+              1024);
+}
+
 }  // namespace
 }  // namespace tsis
