@@ -131,12 +131,8 @@ kernel void tsis_flux_pyramid_gather(const __global float4* points, const __glob
     const int base = item * TSIS_LANE_WIDTH;
     if (base >= count) return;
     TSIS_LANES(TSIS_LOAD_ORDERED)
-    const floatW px = TSIS_VEC(q, x);
-    const floatW py = TSIS_VEC(q, y);
-    const floatW pz = TSIS_VEC(q, z);
-    floatW br = (floatW)(0.0f);
-    floatW bg = (floatW)(0.0f);
-    floatW bb = (floatW)(0.0f);
+    TSIS_LANES_XYZ
+    TSIS_LANES_SUMS
     int used = 0;
     /* Depth-first: each opened node pushes its children (at most 8), so the
      * stack never holds more than 7 per depth plus one. */

@@ -69,13 +69,8 @@ kernel void tsis_gather(const __global float4* points, const int count,
     const int base = get_global_id(0) * TSIS_GATHER_WIDTH;
     if (base >= count) return;
     TSIS_LANES(TSIS_LOAD_POINT)
-    const floatW px = TSIS_VEC(q, x);
-    const floatW py = TSIS_VEC(q, y);
-    const floatW pz = TSIS_VEC(q, z);
-
-    floatW br = (floatW)(0.0f);
-    floatW bg = (floatW)(0.0f);
-    floatW bb = (floatW)(0.0f);
+    TSIS_LANES_XYZ
+    TSIS_LANES_SUMS
     for (int i = 0; i < n; ++i) {
         const TsisSample s = samples[i];
 #if TSIS_GATHER_INTERLEAVED

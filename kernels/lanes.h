@@ -34,6 +34,9 @@
 /* The lanes' points from `points` starting at `base`; past `count` lanes
  * repeat the last point (computed, never stored). Needs base, count, points. */
 #define TSIS_LOAD_POINT(k) const float4 q##k = points[min(base + 0x##k, count - 1)];
+/* The lanes' coordinates px, py, pz from the loaded q0, q1, ..., and the sums br, bg, bb. */
+#define TSIS_LANES_XYZ const floatW px = TSIS_VEC(q, x); const floatW py = TSIS_VEC(q, y); const floatW pz = TSIS_VEC(q, z);
+#define TSIS_LANES_SUMS floatW br = (floatW)(0.0f); floatW bg = (floatW)(0.0f); floatW bb = (floatW)(0.0f);
 #define TSIS_STORE(k) if (base + 0x##k < count) out[base + 0x##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
 /* One (value, step) pair per lane and channel from the split table (profile.h):
  * OpenCL C has no gather load. Need split, size, idx. */
