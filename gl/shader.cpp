@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <vector>
 
+#include "tsis_shared.h"
 #include "util/embedded.h"
 #include "util/error.h"
 
@@ -27,6 +28,7 @@ void requireStatus(GLuint object, GLenum status, GetIv getIv, GetLog getLog,
 
 GLuint compile(GLenum stage, const std::string& file, const std::string& defines) {
     std::string src = "#version 450 core\n";
+    src += "#define MAX_LIGHTS " + std::to_string(TSIS_MAX_LIGHTS) + "\n";
     src += defines;
     src += embeddedText(embeddedShaders(), "common.glsl");
     src += "\n#line 1 1\n";  // messages: source string 1 = the stage's own file

@@ -136,8 +136,8 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
     /* xo in each light's map: texel coordinates and tau, the texel size at
      * xo's depth; z, the depth offset to the lit surface there, and the
      * sampler's mass beyond it. */
-    float3 o[TSIS_MIS_MAX_LIGHTS];
-    float2 zt[TSIS_MIS_MAX_LIGHTS];
+    float3 o[TSIS_MAX_LIGHTS];
+    float2 zt[TSIS_MAX_LIGHTS];
     const int per = mi.res * mi.res;
     for (int m = 0; m < mi.lights; ++m) {
         TsisLightMapInfo l = lights[m];

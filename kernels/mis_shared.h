@@ -6,8 +6,7 @@
 #include <cstdint>
 #endif
 
-/* The gather keeps every light's projection of xo in private memory. */
-#define TSIS_MIS_MAX_LIGHTS 8
+#include "tsis_shared.h" /* TSIS_MAX_LIGHTS: the gather keeps every light's projection */
 
 typedef struct {
     int lights;       /* light maps, back to back in the combined buffers */

@@ -49,6 +49,11 @@ typedef struct {
  * the descent's stack. */
 #define TSIS_PYRAMID_MAX_DEPTH 28
 
+/* The most lights a scene may have: the one definition the host
+ * (kMaxLights), the kernels and, through ShaderProgram (MAX_LIGHTS), the GLSL
+ * shaders read. */
+#define TSIS_MAX_LIGHTS 8
+
 /* Luminance weights (Rec. 709) used for importance: Y(Phi). */
 #define TSIS_LUMA_R 0.2126f
 #define TSIS_LUMA_G 0.7152f

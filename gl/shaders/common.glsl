@@ -1,6 +1,6 @@
 // Prepended (after #version) to every tsis shader stage.
 const float PI = 3.14159265358979;
-#define MAX_LIGHTS 8
+// MAX_LIGHTS: defined before this file by ShaderProgram (TSIS_MAX_LIGHTS).
 
 // Exact unpolarized Fresnel reflectance from air into a medium of relative
 // index eta (DESIGN §2: not Schlick).

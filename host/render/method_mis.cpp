@@ -15,7 +15,6 @@ namespace tsis {
 namespace {
 
 constexpr size_t kLocal = 64;
-static_assert(kMaxLights <= TSIS_MIS_MAX_LIGHTS, "the gather keeps every light's projection");
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 
 #include "mesh/mesh.h"
 #include "physics/material.h"
+#include "tsis_shared.h"
 
 namespace tsis {
 
@@ -33,7 +34,8 @@ struct Scene {
     Camera camera;
 };
 
-// The largest number of lights a frame takes (GL uniform arrays are sized by it).
-constexpr int kMaxLights = 8;
+// The largest number of lights a frame takes (GL uniform arrays and the mis
+// kernel's private arrays are sized by it): kernels/tsis_shared.h.
+constexpr int kMaxLights = TSIS_MAX_LIGHTS;
 
 }  // namespace tsis
