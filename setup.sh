@@ -75,7 +75,7 @@ build() {
 # ASan+UBSan build of our code (PoCL, LLVM and Mesa stay as Debian ships them;
 # what they leak is suppressed by library in tests/sanitize/). -O1 -g1: stacks
 # with lines at a fraction of -O0's run time. Usage: sanitize [TARGET…]
-SANITIZE_DIR=${TSIS_SANITIZE_DIR:-build-sanitize}
+SANITIZE_DIR=${TSIS_SANITIZE_BUILD_DIR:-build-sanitize}
 sanitize_build() {
   cmake -S . -B "$SANITIZE_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
