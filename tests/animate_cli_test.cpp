@@ -2,8 +2,10 @@
 // started without a shell (a fake ffmpeg first on the PATH records its argv).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "test_util.h"
 
@@ -93,6 +95,40 @@ TEST(Animate, WithoutFfmpegFramesOnly) {
     EXPECT_NE(r.err.find("ffmpeg not found"), std::string::npos) << r.err;
     EXPECT_EQ(fileCount(out), 2u);
 }
+
+// Memory over long runs: the stats' per-frame resident set may not creep. The
+// lights orbit, so every frame makes the light maps and the flux atlas again
+// and reads them back (the per-frame allocations that once grew RSS through
+// the allocator's caches). The first frames warm up (programs, atlas,
+// allocator); from frame 50 on, RSS may wander but not climb.
+class AnimateMemory : public testing::TestWithParam<std::string> {};
+
+TEST_P(AnimateMemory, ResidentSetStaysFlatOver500Frames) {
+#ifdef __SANITIZE_ADDRESS__
+    GTEST_SKIP() << "ASan's quarantine keeps freed memory resident by design";
+#endif
+    ScratchDir dir;
+    const std::string stats = dir.file("s.json");
+    RunResult r = runTsis(
+        "animate --orbit --frames 500 --width 32 --height 32 --atlas-res 256 "
+        "--light-res 256 --samples 64 --method " +
+        GetParam() + " -o " + dir.file("anim") + " --stats " + stats);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = readFile(stats);
+    std::vector<double> rss;
+    const std::regex field("\"rss_mb\": *([0-9.eE+-]+)");
+    for (std::sregex_iterator it(json.begin(), json.end(), field), end; it != end; ++it)
+        rss.push_back(std::stod((*it)[1]));
+    ASSERT_EQ(rss.size(), 500u);
+    const double warm = rss[50];
+    const double peak = *std::max_element(rss.begin() + 50, rss.end());
+    const double last = rss.back();
+    EXPECT_GT(warm, 0.0);
+    EXPECT_LT(peak - warm, 48.0) << "frame 50: " << warm << " MiB, peak after: " << peak;
+    EXPECT_LT(last - warm, 24.0) << "frame 50: " << warm << " MiB, last: " << last;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, AnimateMemory, testing::Values("pyramid", "tsis"));
 
 }  // namespace
 }  // namespace tsis::test

@@ -8,7 +8,7 @@
 //                   the camera and the default lights follow the size
 //   --materials L   the presets in L, in turn, one per frame
 // The scene options are those of `tsis render`. --stats FILE.json records every
-// frame's milliseconds and the steady rate (frames after the first).
+// frame's milliseconds and resident memory and the steady rate (frames after the first).
 #include "cli/animate.h"
 
 #include <algorithm>
@@ -27,6 +27,7 @@
 #include "mesh/mesh_io.h"
 #include "render/renderer.h"
 #include "util/error.h"
+#include "util/memory.h"
 #include "util/output_set.h"
 #include "util/process.h"
 #include "util/progress.h"
@@ -152,6 +153,8 @@ int runAnimate(const std::vector<std::string>& argv) {
         j.set("frame", f);
         j.set("ms", ms.back());
         j.set("render_ms", frame.stats.stageMs("total"));
+        // Follows memory over long runs (a test bounds its growth).
+        j.set("rss_mb", residentMegabytes());
         perFrame.push(j);
         progress.update(f + 1);
     }
