@@ -45,6 +45,16 @@ TEST(PLY, AsciiWithNormalsUVsAndUnknowns) {
     EXPECT_EQ(m.normals[4], glm::vec3(0, 0, 1));
 }
 
+// value's bytes appended to out in big- or little-endian order.
+template <typename T>
+void appendBinary(std::string& out, T value, bool bigEndian) {
+    unsigned char b[sizeof value];
+    std::memcpy(b, &value, sizeof value);
+    if (bigEndian != (std::endian::native == std::endian::big))
+        for (size_t i = 0; i < sizeof value / 2; ++i) std::swap(b[i], b[sizeof value - 1 - i]);
+    out.append(reinterpret_cast<const char*>(b), sizeof value);
+}
+
 // A tetrahedron in binary PLY, in the given byte order, with a double and a
 // list vertex property to skip, ushort list length and uint indices, u v
 // names, and the face element written before the vertex element.
@@ -57,13 +67,7 @@ std::string binaryTetra(bool big) {
                       "property list uchar int junk\n"
                       "property float y\nproperty float z\nproperty float u\nproperty float v\n"
                       "end_header\n";
-    auto put = [&](auto value) {
-        unsigned char b[sizeof value];
-        std::memcpy(b, &value, sizeof value);
-        if (big != (std::endian::native == std::endian::big))
-            for (size_t i = 0; i < sizeof value / 2; ++i) std::swap(b[i], b[sizeof value - 1 - i]);
-        out.append(reinterpret_cast<const char*>(b), sizeof value);
-    };
+    auto put = [&](auto value) { appendBinary(out, value, big); };
     const uint32_t faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     for (const auto& f : faces) {
         put(uint16_t{3});
@@ -193,13 +197,7 @@ TEST(PLY, TristripsBigEndianWithExtraProperties) {
         "property float y\nproperty float z\nproperty float confidence\n"
         "property float intensity\nproperty uchar red\n"
         "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
-    auto put = [&](auto value) {
-        unsigned char b[sizeof value];
-        std::memcpy(b, &value, sizeof value);
-        if (std::endian::native == std::endian::little)
-            for (size_t i = 0; i < sizeof value / 2; ++i) std::swap(b[i], b[sizeof value - 1 - i]);
-        out.append(reinterpret_cast<const char*>(b), sizeof value);
-    };
+    auto put = [&](auto value) { appendBinary(out, value, true); };
     // A 2x1 grid of quads as one strip of 4 triangles, then a triangle above
     // it after a restart.
     const float v[7][3] = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0},
