@@ -17,7 +17,7 @@ PACKAGES=(
   build-essential cmake pkg-config ca-certificates
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
   libosmesa6-dev libglm-dev libopenimageio-dev openimageio-tools
-  libcgal-dev libeigen3-dev libcgal-demo
+  libcgal-dev libeigen3-dev libcgal-demo libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}

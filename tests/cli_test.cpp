@@ -189,6 +189,24 @@ TEST(Cli, RendersStlFile) {
         << readFile(dir.file("s.json"));
 }
 
+// glTF 2.0: the seed files of the fuzzer (a textured quad, as .gltf with an
+// embedded buffer and as .glb) render, their UVs used as the atlas.
+TEST(Cli, RendersGltfAndGlbFiles) {
+    for (const char* file : {"quad.gltf", "quad.glb"}) {
+        ScratchDir dir;
+        RunResult r = runTsis("render " + kFast + "--mesh " + std::string(TSIS_SOURCE_DIR) +
+                              "/tests/fuzz/corpus/" + file + " -o " + dir.file("q.png") +
+                              " --stats " + dir.file("s.json"));
+        ASSERT_EQ(r.exitCode, 0) << file << ": " << r.err;
+        EXPECT_NE(readFile(dir.file("s.json")).find("\"triangles\": 2"), std::string::npos) << file;
+        // The file's UVs are the atlas: the whole unit square, no packed charts.
+        RunResult atlas = runTsis("atlas --mesh " + std::string(TSIS_SOURCE_DIR) +
+                                  "/tests/fuzz/corpus/" + file + " --json");
+        ASSERT_EQ(atlas.exitCode, 0) << atlas.err;
+        EXPECT_NE(atlas.out.find("\"coverage\": 1,"), std::string::npos) << atlas.out;
+    }
+}
+
 TEST(Cli, HelpAndInfoCommands) {
     RunResult help = runTsis("render --help");
     EXPECT_EQ(help.exitCode, 0);

@@ -46,11 +46,13 @@ Mesh loadByExtension(const std::string& path, const std::string& ext) {
     if (ext == ".off") return loadOFF(path);
     if (ext == ".obj") return loadOBJ(path);
     if (ext == ".stl") return loadSTL(path);
+    if (ext == ".gltf" || ext == ".glb") return loadGLTF(path);
     return loadPLY(path);
 }
 
 bool knownExtension(const std::string& ext) {
-    return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
+    return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".gltf" ||
+           ext == ".glb";
 }
 
 }  // namespace
@@ -67,6 +69,11 @@ Mesh loadPLY(const std::string& path) {
 Mesh loadSTL(const std::string& path) {
     return parseSTL(readFile(path), path);
 }
+Mesh loadGLTF(const std::string& path) {
+    // External buffers a .gltf names are read from its folder.
+    const std::string folder = fs::path(path).parent_path().string();
+    return parseGLTF(readFile(path), path, folder.empty() ? "." : folder);
+}
 
 Mesh loadMesh(const std::string& spec) {
     if (spec.empty()) fail("mesh: empty name (give a path, a data mesh name or builtin:NAME)");
@@ -74,7 +81,8 @@ Mesh loadMesh(const std::string& spec) {
     const std::string ext = lowerExtension(spec);
     if (knownExtension(ext)) return loadByExtension(spec, ext);
     if (spec.find('/') != std::string::npos)
-        fail("mesh '", spec, "': unknown format '", ext, "' (known: .off, .obj, .ply, .stl)");
+        fail("mesh '", spec, "': unknown format '", ext,
+             "' (known: .off, .obj, .ply, .stl, .gltf, .glb)");
 
     // A bare name: the data meshes, $TSIS_MESH_DIR first.
     std::vector<std::string> dirs;

@@ -1,4 +1,4 @@
-// Loading meshes from OFF, OBJ, PLY and STL files and the built-in procedural ones.
+// Loading meshes from OFF, OBJ, PLY, STL and glTF 2.0 files and the built-in procedural ones.
 // Every failure is a tsis::Error naming the file and the problem. A loaded mesh
 // has been checked and repaired (repair.h; one stderr note per repair); its
 // normals are the file's, if any: callers run normalizeMesh and ensureNormals.
@@ -10,7 +10,7 @@
 
 namespace tsis {
 
-// `spec` is a path (format from its extension, .off/.obj/.ply/.stl), "builtin:NAME",
+// `spec` is a path (format from its extension, .off/.obj/.ply/.stl/.gltf/.glb), "builtin:NAME",
 // or a bare name resolved under the unpacked data meshes (data/meshes/NAME.off).
 Mesh loadMesh(const std::string& spec);
 
@@ -18,11 +18,15 @@ Mesh loadOFF(const std::string& path);
 Mesh loadOBJ(const std::string& path);
 Mesh loadPLY(const std::string& path);
 Mesh loadSTL(const std::string& path);
+Mesh loadGLTF(const std::string& path);  // .gltf or .glb
 
 // Parsers from memory (used by the loaders and the fuzz targets).
 Mesh parseOFF(const std::string& text, const std::string& name);
 Mesh parseOBJ(const std::string& text, const std::string& name);
 Mesh parsePLY(const std::string& bytes, const std::string& name);
 Mesh parseSTL(const std::string& bytes, const std::string& name);
+// glTF 2.0, text or binary (.glb) by its first bytes; external buffers are read
+// from `folder`, or refused when it is empty.
+Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder = "");
 
 }  // namespace tsis

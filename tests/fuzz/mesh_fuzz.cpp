@@ -1,7 +1,8 @@
-// libFuzzer target: arbitrary bytes into the OFF, OBJ, PLY and STL parsers.
+// libFuzzer target: arbitrary bytes into the OFF, OBJ, PLY, STL and glTF parsers.
 // The first byte picks the parser so that seed files keep their own format:
 // 'p' → PLY, 's' → STL (ASCII "solid…", or binary with a header that starts
-// with 's'), an OFF keyword letter → OFF, anything else → OBJ. A tsis::Error
+// with 's'), '{' or "glTF" → glTF (JSON or .glb; external files never read),
+// an OFF keyword letter → OFF, anything else → OBJ. A tsis::Error
 // is the expected answer to bad input; any other exception, crash, leak,
 // sanitizer report, timeout or allocation past -rss_limit_mb is a finding.
 #include <cstddef>
@@ -22,6 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             mesh = tsis::parsePLY(bytes, "fuzz.ply");
         } else if (data[0] == 's') {
             mesh = tsis::parseSTL(bytes, "fuzz.stl");
+        } else if (data[0] == '{' || bytes.compare(0, 4, "glTF") == 0) {
+            mesh = tsis::parseGLTF(bytes, "fuzz.gltf");
         } else if (std::strchr("OCNS4n", data[0]) != nullptr) {
             mesh = tsis::parseOFF(bytes, "fuzz.off");
         } else {

@@ -1,0 +1,295 @@
+// glTF 2.0 (.gltf with embedded or external buffers, .glb), through Debian's
+// tinygltf. The default scene's nodes are walked with their transforms and
+// every triangle primitive becomes part of one mesh: POSITION, NORMAL and
+// TEXCOORD_0 (float, or normalized unsigned byte/short), indices of any
+// unsigned width or none. UVs are kept only when every primitive has them,
+// with v flipped (glTF's origin is the image's top left, the atlas' the
+// bottom left, as in OBJ); normals likewise. Images are never decoded. Every
+// accessor is bounds-checked here rather than trusting the file.
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "mesh/mesh_io.h"
+#include "mesh/parse_util.h"
+#include "mesh/repair.h"
+
+namespace tsis {
+
+namespace {
+
+using namespace meshparse;
+
+constexpr int kMaxNodeDepth = 64;  // deeper hierarchies are refused (and cycles)
+
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+               const unsigned char*, int, void*) {
+    return true;  // textures are not used
+}
+
+// Without a folder (parsing from memory), files a glTF names are not read.
+bool noFile(const std::string&, void*) {
+    return false;
+}
+std::string samePath(const std::string& path, void*) {
+    return path;
+}
+bool noRead(std::vector<unsigned char>*, std::string* err, const std::string& path, void*) {
+    if (err) *err = "external file '" + path + "' is not read when parsing from memory";
+    return false;
+}
+bool noWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+    return false;
+}
+
+// An accessor's elements as floats, `width` components each, bounds-checked.
+std::vector<float> readFloats(const tinygltf::Model& m, int index, int width, bool allowNormalized,
+                              const std::string& name, const char* what) {
+    if (index < 0 || index >= static_cast<int>(m.accessors.size()))
+        failIn(name, what, " accessor ", index, " does not exist");
+    const tinygltf::Accessor& a = m.accessors[static_cast<size_t>(index)];
+    if (a.sparse.isSparse) failIn(name, what, ": sparse accessors are not supported");
+    if (tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)) != width)
+        failIn(name, what, ": expected ", width, " components, the accessor has another type");
+    const int type = a.componentType;
+    const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool isUnorm = allowNormalized && a.normalized &&
+                         (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                          type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if (!isFloat && !isUnorm) failIn(name, what, ": component type ", type, " is not supported");
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m.bufferViews.size()))
+        failIn(name, what, ": no buffer view");
+    const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
+    if (v.buffer < 0 || v.buffer >= static_cast<int>(m.buffers.size()))
+        failIn(name, what, ": no buffer");
+    const std::vector<unsigned char>& data = m.buffers[static_cast<size_t>(v.buffer)].data;
+    const size_t component = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(type));
+    const size_t element = component * static_cast<size_t>(width);
+    const size_t stride = v.byteStride ? v.byteStride : element;
+    const unsigned long long begin = static_cast<unsigned long long>(v.byteOffset) + a.byteOffset;
+    if (stride < element || a.count > data.size() ||
+        (a.count > 0 &&
+         begin + static_cast<unsigned long long>(stride) * (a.count - 1) + element >
+             std::min<unsigned long long>(
+                 data.size(), static_cast<unsigned long long>(v.byteOffset) + v.byteLength)))
+        failIn(name, what, ": accessor ", index, " reaches past its buffer");
+    std::vector<float> out(a.count * static_cast<size_t>(width));
+    for (size_t i = 0; i < a.count; ++i)
+        for (int c = 0; c < width; ++c) {
+            const unsigned char* p = data.data() + begin + i * stride + c * component;
+            float f;
+            if (isFloat) {
+                std::memcpy(&f, p, sizeof f);
+            } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                f = static_cast<float>(*p) / 255.0f;
+            } else {
+                uint16_t u;
+                std::memcpy(&u, p, sizeof u);
+                f = static_cast<float>(u) / 65535.0f;
+            }
+            out[i * static_cast<size_t>(width) + static_cast<size_t>(c)] = f;
+        }
+    return out;
+}
+
+std::vector<uint32_t> readIndices(const tinygltf::Model& m, int index, const std::string& name) {
+    if (index < 0 || index >= static_cast<int>(m.accessors.size()))
+        failIn(name, "index accessor ", index, " does not exist");
+    const tinygltf::Accessor& a = m.accessors[static_cast<size_t>(index)];
+    if (a.sparse.isSparse || a.type != TINYGLTF_TYPE_SCALAR)
+        failIn(name, "indices: not a dense scalar accessor");
+    const int type = a.componentType;
+    if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        failIn(name, "indices: component type ", type, " is not an unsigned integer");
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m.bufferViews.size()))
+        failIn(name, "indices: no buffer view");
+    const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
+    if (v.buffer < 0 || v.buffer >= static_cast<int>(m.buffers.size()))
+        failIn(name, "indices: no buffer");
+    const std::vector<unsigned char>& data = m.buffers[static_cast<size_t>(v.buffer)].data;
+    const size_t size = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(type));
+    const size_t stride = v.byteStride ? v.byteStride : size;
+    const unsigned long long begin = static_cast<unsigned long long>(v.byteOffset) + a.byteOffset;
+    if (stride < size || a.count > data.size() ||
+        (a.count > 0 &&
+         begin + static_cast<unsigned long long>(stride) * (a.count - 1) + size >
+             std::min<unsigned long long>(
+                 data.size(), static_cast<unsigned long long>(v.byteOffset) + v.byteLength)))
+        failIn(name, "indices: accessor ", index, " reaches past its buffer");
+    std::vector<uint32_t> out(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = data.data() + begin + i * stride;
+        uint32_t value = 0;
+        if (size == 1) {
+            value = *p;
+        } else if (size == 2) {
+            uint16_t u;
+            std::memcpy(&u, p, sizeof u);
+            value = u;
+        } else {
+            std::memcpy(&value, p, sizeof value);
+        }
+        out[i] = value;
+    }
+    return out;
+}
+
+glm::mat4 localTransform(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) {
+        glm::mat4 m(1.0f);
+        for (int k = 0; k < 16; ++k) glm::value_ptr(m)[k] = static_cast<float>(n.matrix[size_t(k)]);
+        return m;  // column-major in both
+    }
+    glm::mat4 m(1.0f);
+    if (n.translation.size() == 3)
+        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (n.rotation.size() == 4)
+        m *= glm::mat4_cast(
+            glm::quat(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
+                      static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2])));
+    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+    return m;
+}
+
+struct Builder {
+    const tinygltf::Model& model;
+    const std::string& name;
+    Mesh mesh;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    bool allNormals = true, allUVs = true;
+    size_t skippedPrimitives = 0;
+
+    void node(int index, const glm::mat4& parent, int depth) {
+        if (index < 0 || index >= static_cast<int>(model.nodes.size()))
+            failIn(name, "node ", index, " does not exist");
+        if (depth > kMaxNodeDepth) failIn(name, "nodes nested deeper than ", kMaxNodeDepth);
+        const tinygltf::Node& n = model.nodes[static_cast<size_t>(index)];
+        const glm::mat4 world = parent * localTransform(n);
+        if (n.mesh >= 0) {
+            if (n.mesh >= static_cast<int>(model.meshes.size()))
+                failIn(name, "mesh ", n.mesh, " does not exist");
+            for (const tinygltf::Primitive& p :
+                 model.meshes[static_cast<size_t>(n.mesh)].primitives)
+                primitive(p, world);
+        }
+        for (int child : n.children) node(child, world, depth + 1);
+    }
+
+    void primitive(const tinygltf::Primitive& p, const glm::mat4& world) {
+        if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) {
+            ++skippedPrimitives;
+            return;
+        }
+        const auto at = [&](const char* key) {
+            const auto it = p.attributes.find(key);
+            return it == p.attributes.end() ? -1 : it->second;
+        };
+        if (at("POSITION") < 0) failIn(name, "a triangle primitive has no POSITION");
+        const std::vector<float> pos =
+            readFloats(model, at("POSITION"), 3, false, name, "POSITION");
+        const size_t count = pos.size() / 3;
+        const size_t base = mesh.positions.size();
+        if (base + count >= UINT32_MAX) failIn(name, "more than 2³² vertices");
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
+        for (size_t i = 0; i < count; ++i) {
+            const glm::vec4 q = world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0f);
+            for (int c = 0; c < 3; ++c) coordinate(q[c], name, base + i);
+            mesh.positions.emplace_back(q);
+        }
+        if (at("NORMAL") >= 0) {
+            const std::vector<float> nv = readFloats(model, at("NORMAL"), 3, false, name, "NORMAL");
+            if (nv.size() != pos.size()) failIn(name, "NORMAL and POSITION counts differ");
+            for (size_t i = 0; i < count; ++i) {
+                // Unit again after a scaling transform (zero stays zero: repaired later).
+                const glm::vec3 n =
+                    normalMatrix * glm::vec3(nv[3 * i], nv[3 * i + 1], nv[3 * i + 2]);
+                const float len = glm::length(n);
+                normals.push_back(len > 0 ? n / len : n);
+            }
+        } else {
+            allNormals = false;
+        }
+        if (at("TEXCOORD_0") >= 0) {
+            const std::vector<float> t =
+                readFloats(model, at("TEXCOORD_0"), 2, true, name, "TEXCOORD_0");
+            if (t.size() / 2 != count) failIn(name, "TEXCOORD_0 and POSITION counts differ");
+            for (size_t i = 0; i < count; ++i) uvs.emplace_back(t[2 * i], 1.0f - t[2 * i + 1]);
+        } else {
+            allUVs = false;
+        }
+        std::vector<uint32_t> idx;
+        if (p.indices >= 0) {
+            idx = readIndices(model, p.indices, name);
+        } else {
+            idx.resize(count);
+            for (size_t i = 0; i < count; ++i) idx[i] = static_cast<uint32_t>(i);
+        }
+        for (size_t k = 0; k + 2 < idx.size(); k += 3) {
+            for (int c = 0; c < 3; ++c)
+                if (idx[k + size_t(c)] >= count)
+                    failIn(name, "index ", idx[k + size_t(c)], " past the primitive's ", count,
+                           " vertices");
+            mesh.triangles.emplace_back(base + idx[k], base + idx[k + 1], base + idx[k + 2]);
+        }
+    }
+};
+
+}  // namespace
+
+Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder) {
+    if (bytes.empty()) failIn(name, "empty file");
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    if (folder.empty()) loader.SetFsCallbacks({noFile, samePath, noRead, noWrite, nullptr});
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    if (bytes.size() > UINT32_MAX) failIn(name, "larger than 4 GiB");
+    // tinygltf reports bad files through err, but may throw on some (its
+    // JSON parser, allocation): one line either way.
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(
+                          &model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                          static_cast<unsigned int>(bytes.size()), folder)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                 static_cast<unsigned int>(bytes.size()), folder);
+    } catch (const std::exception& e) {
+        err = e.what();
+    }
+    if (!ok) {
+        // tinygltf's messages may span lines: the first is the reason.
+        std::string first = err.substr(0, err.find('\n'));
+        failIn(name, "not a valid glTF 2.0 file (", first.empty() ? "no reason given" : first, ")");
+    }
+    Builder b{model, name, {}, {}, {}};
+    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (scene < static_cast<int>(model.scenes.size())) {
+        for (int n : model.scenes[static_cast<size_t>(scene)].nodes) b.node(n, glm::mat4(1.0f), 0);
+    } else {
+        // No scene: every mesh once, untransformed.
+        for (size_t m = 0; m < model.meshes.size(); ++m)
+            for (const tinygltf::Primitive& p : model.meshes[m].primitives)
+                b.primitive(p, glm::mat4(1.0f));
+    }
+    if (b.skippedPrimitives > 0)
+        note(name, std::to_string(b.skippedPrimitives) + " non-triangle " +
+                       plural(b.skippedPrimitives, "primitive", "primitives") + " skipped");
+    if (b.mesh.triangles.empty()) failIn(name, "no triangles");
+    if (b.allNormals) b.mesh.normals = std::move(b.normals);
+    if (b.allUVs) b.mesh.uvs = std::move(b.uvs);
+    repairMesh(b.mesh);
+    return b.mesh;
+}
+
+}  // namespace tsis

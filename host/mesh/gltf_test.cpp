@@ -1,0 +1,158 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh_io.h"
+#include "util/error.h"
+
+namespace tsis {
+namespace {
+
+// A unit quad (two triangles) in one buffer: positions, normals, UVs as
+// floats, then four ushort indices... written by the test itself.
+std::string quadBuffer() {
+    const float pos[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const float nrm[4][3] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+    std::string b;
+    b.append(reinterpret_cast<const char*>(pos), sizeof pos);  // 0, 48 bytes
+    b.append(reinterpret_cast<const char*>(nrm), sizeof nrm);  // 48, 48 bytes
+    b.append(reinterpret_cast<const char*>(uv), sizeof uv);    // 96, 32 bytes
+    b.append(reinterpret_cast<const char*>(idx), sizeof idx);  // 128, 12 bytes
+    return b;                                                  // 140 bytes
+}
+
+std::string base64(const std::string& in) {
+    static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < in.size(); i += 3) {
+        uint32_t v = static_cast<unsigned char>(in[i]) << 16;
+        if (i + 1 < in.size()) v |= static_cast<unsigned char>(in[i + 1]) << 8;
+        if (i + 2 < in.size()) v |= static_cast<unsigned char>(in[i + 2]);
+        out += k[(v >> 18) & 63];
+        out += k[(v >> 12) & 63];
+        out += i + 1 < in.size() ? k[(v >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? k[v & 63] : '=';
+    }
+    return out;
+}
+
+// The quad's glTF JSON; `buffer` is the buffer object ("uri" or none for .glb),
+// `indexCount` the index accessor's count (7 reaches past its view).
+std::string quadJson(const std::string& buffer, int indexCount = 6, int mode = 4) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+      "nodes": [{"children": [1], "translation": [0, 0, 5]}, {"mesh": 0, "scale": [2, 2, 2]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
+                                  "indices": 3, "mode": )" +
+           std::to_string(mode) + R"(}]}],
+      "buffers": [)" +
+           buffer + R"(],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                      {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                      {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                      {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+      "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+         "min": [0, 0, 0], "max": [1, 1, 0]},
+        {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5123, "count": )" +
+           std::to_string(indexCount) + R"(, "type": "SCALAR"}]})";
+}
+
+std::string embeddedGltf(int indexCount = 6, int mode = 4) {
+    return quadJson(R"({"byteLength": 140, "uri": "data:application/octet-stream;base64,)" +
+                        base64(quadBuffer()) + "\"}",
+                    indexCount, mode);
+}
+
+// A .glb: 12-byte header, the JSON chunk (padded with spaces), the BIN chunk.
+std::string glb() {
+    std::string json = quadJson(R"({"byteLength": 140})");
+    while (json.size() % 4) json += ' ';
+    std::string bin = quadBuffer();
+    while (bin.size() % 4) bin += '\0';
+    auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const uint32_t total =
+        12 + 8 + static_cast<uint32_t>(json.size()) + 8 + static_cast<uint32_t>(bin.size());
+    return "glTF" + u32(2) + u32(total) + u32(static_cast<uint32_t>(json.size())) +
+           u32(0x4E4F534A) + json + u32(static_cast<uint32_t>(bin.size())) + u32(0x004E4942) + bin;
+}
+
+void expectQuad(const Mesh& m) {
+    ASSERT_EQ(m.positions.size(), 4u);
+    ASSERT_EQ(m.triangles.size(), 2u);
+    // The child's scale, then the parent's translation.
+    EXPECT_EQ(m.positions[2], glm::vec3(2, 2, 5));
+    ASSERT_EQ(m.normals.size(), 4u);
+    EXPECT_NEAR(glm::length(m.normals[0] - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    ASSERT_EQ(m.uvs.size(), 4u);
+    // v flipped: glTF's (0, 0) is the image's top left.
+    EXPECT_EQ(m.uvs[0], glm::vec2(0, 1));
+    EXPECT_EQ(m.uvs[2], glm::vec2(1, 0));
+}
+
+TEST(GLTF, EmbeddedBufferWithTransformsNormalsAndUVs) {
+    expectQuad(parseGLTF(embeddedGltf(), "quad.gltf"));
+}
+
+TEST(GLTF, BinaryGlbThroughLoadMesh) {
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("tsis-gltf-" + std::to_string(getpid()) + ".glb");
+    std::ofstream(path, std::ios::binary) << glb();
+    const Mesh m = loadMesh(path.string());
+    std::filesystem::remove(path);
+    expectQuad(m);
+}
+
+TEST(GLTF, ExternalBufferReadFromTheFilesFolder) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("tsis-gltf-dir-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "quad.bin", std::ios::binary) << quadBuffer();
+    std::ofstream(dir / "quad.gltf") << quadJson(R"({"byteLength": 140, "uri": "quad.bin"})");
+    const Mesh m = loadMesh((dir / "quad.gltf").string());
+    // From memory, the same file may not reach the disk.
+    std::string text;
+    {
+        std::ifstream in(dir / "quad.gltf");
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    std::filesystem::remove_all(dir);
+    expectQuad(m);
+    EXPECT_THROW(parseGLTF(text, "mem.gltf"), Error);
+}
+
+std::string errorOf(const std::string& bytes) {
+    try {
+        parseGLTF(bytes, "bad.gltf");
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(GLTF, BadFilesAreOneLineErrors) {
+    const std::string truncated = glb().substr(0, 60);
+    for (const auto& [bytes, phrase] : std::vector<std::pair<std::string, std::string>>{
+             {"", "empty file"},
+             {"{not json", "not a valid glTF"},
+             {truncated, "not a valid glTF"},
+             {embeddedGltf(7), "past"},  // 7 ushort indices in a 12-byte view
+             {embeddedGltf(6, 1), "no triangles"}}) {
+        const std::string msg = errorOf(bytes);
+        EXPECT_NE(msg.find(phrase), std::string::npos) << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+        EXPECT_NE(msg.find("bad.gltf"), std::string::npos) << msg;
+    }
+}
+
+}  // namespace
+}  // namespace tsis
