@@ -49,13 +49,48 @@ bool noWrite(std::string*, const std::string&, const std::vector<unsigned char>&
     return false;
 }
 
-// An accessor's elements as floats, `width` components each, bounds-checked.
-std::vector<float> readFloats(const tinygltf::Model& m, int index, int width, bool allowNormalized,
-                              const std::string& name, const char* what) {
-    if (index < 0 || index >= static_cast<int>(m.accessors.size()))
-        failIn(name, what, " accessor ", index, " does not exist");
+// A dense accessor's elements in memory: element i starts at at(i); the
+// checks every reader needs (the accessor, its view and buffer exist, and the
+// last element ends inside the view and the buffer).
+struct Elements {
+    const unsigned char* first = nullptr;
+    size_t stride = 0, count = 0;
+    const unsigned char* at(size_t i) const { return first + i * stride; }
+};
+
+Elements elements(const tinygltf::Model& m, int index, size_t elementBytes, const std::string& name,
+                  const char* what) {
     const tinygltf::Accessor& a = m.accessors[static_cast<size_t>(index)];
     if (a.sparse.isSparse) failIn(name, what, ": sparse accessors are not supported");
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m.bufferViews.size()))
+        failIn(name, what, ": no buffer view");
+    const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
+    if (v.buffer < 0 || v.buffer >= static_cast<int>(m.buffers.size()))
+        failIn(name, what, ": no buffer");
+    const std::vector<unsigned char>& data = m.buffers[static_cast<size_t>(v.buffer)].data;
+    const size_t stride = v.byteStride ? v.byteStride : elementBytes;
+    const unsigned long long begin = static_cast<unsigned long long>(v.byteOffset) + a.byteOffset;
+    const unsigned long long end = std::min<unsigned long long>(
+        data.size(), static_cast<unsigned long long>(v.byteOffset) + v.byteLength);
+    if (stride < elementBytes || a.count > data.size() ||
+        (a.count > 0 &&
+         begin + static_cast<unsigned long long>(stride) * (a.count - 1) + elementBytes > end))
+        failIn(name, what, ": accessor ", index, " reaches past its buffer");
+    return {data.data() + begin, stride, a.count};
+}
+
+const tinygltf::Accessor& accessor(const tinygltf::Model& m, int index, const std::string& name,
+                                   const char* what) {
+    if (index < 0 || index >= static_cast<int>(m.accessors.size()))
+        failIn(name, what, ": accessor ", index, " does not exist");
+    return m.accessors[static_cast<size_t>(index)];
+}
+
+// An accessor's elements as floats, `width` components each (float, or with
+// allowNormalized normalized unsigned byte/short).
+std::vector<float> readFloats(const tinygltf::Model& m, int index, int width, bool allowNormalized,
+                              const std::string& name, const char* what) {
+    const tinygltf::Accessor& a = accessor(m, index, name, what);
     if (tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)) != width)
         failIn(name, what, ": expected ", width, " components, the accessor has another type");
     const int type = a.componentType;
@@ -64,26 +99,12 @@ std::vector<float> readFloats(const tinygltf::Model& m, int index, int width, bo
                          (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                           type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
     if (!isFloat && !isUnorm) failIn(name, what, ": component type ", type, " is not supported");
-    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m.bufferViews.size()))
-        failIn(name, what, ": no buffer view");
-    const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
-    if (v.buffer < 0 || v.buffer >= static_cast<int>(m.buffers.size()))
-        failIn(name, what, ": no buffer");
-    const std::vector<unsigned char>& data = m.buffers[static_cast<size_t>(v.buffer)].data;
     const size_t component = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(type));
-    const size_t element = component * static_cast<size_t>(width);
-    const size_t stride = v.byteStride ? v.byteStride : element;
-    const unsigned long long begin = static_cast<unsigned long long>(v.byteOffset) + a.byteOffset;
-    if (stride < element || a.count > data.size() ||
-        (a.count > 0 &&
-         begin + static_cast<unsigned long long>(stride) * (a.count - 1) + element >
-             std::min<unsigned long long>(
-                 data.size(), static_cast<unsigned long long>(v.byteOffset) + v.byteLength)))
-        failIn(name, what, ": accessor ", index, " reaches past its buffer");
-    std::vector<float> out(a.count * static_cast<size_t>(width));
-    for (size_t i = 0; i < a.count; ++i)
+    const Elements e = elements(m, index, component * static_cast<size_t>(width), name, what);
+    std::vector<float> out(e.count * static_cast<size_t>(width));
+    for (size_t i = 0; i < e.count; ++i)
         for (int c = 0; c < width; ++c) {
-            const unsigned char* p = data.data() + begin + i * stride + c * component;
+            const unsigned char* p = e.at(i) + c * component;
             float f;
             if (isFloat) {
                 std::memcpy(&f, p, sizeof f);
@@ -100,34 +121,18 @@ std::vector<float> readFloats(const tinygltf::Model& m, int index, int width, bo
 }
 
 std::vector<uint32_t> readIndices(const tinygltf::Model& m, int index, const std::string& name) {
-    if (index < 0 || index >= static_cast<int>(m.accessors.size()))
-        failIn(name, "index accessor ", index, " does not exist");
-    const tinygltf::Accessor& a = m.accessors[static_cast<size_t>(index)];
-    if (a.sparse.isSparse || a.type != TINYGLTF_TYPE_SCALAR)
-        failIn(name, "indices: not a dense scalar accessor");
+    const tinygltf::Accessor& a = accessor(m, index, name, "indices");
+    if (a.type != TINYGLTF_TYPE_SCALAR) failIn(name, "indices: not a scalar accessor");
     const int type = a.componentType;
     if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         failIn(name, "indices: component type ", type, " is not an unsigned integer");
-    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m.bufferViews.size()))
-        failIn(name, "indices: no buffer view");
-    const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
-    if (v.buffer < 0 || v.buffer >= static_cast<int>(m.buffers.size()))
-        failIn(name, "indices: no buffer");
-    const std::vector<unsigned char>& data = m.buffers[static_cast<size_t>(v.buffer)].data;
     const size_t size = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(type));
-    const size_t stride = v.byteStride ? v.byteStride : size;
-    const unsigned long long begin = static_cast<unsigned long long>(v.byteOffset) + a.byteOffset;
-    if (stride < size || a.count > data.size() ||
-        (a.count > 0 &&
-         begin + static_cast<unsigned long long>(stride) * (a.count - 1) + size >
-             std::min<unsigned long long>(
-                 data.size(), static_cast<unsigned long long>(v.byteOffset) + v.byteLength)))
-        failIn(name, "indices: accessor ", index, " reaches past its buffer");
-    std::vector<uint32_t> out(a.count);
-    for (size_t i = 0; i < a.count; ++i) {
-        const unsigned char* p = data.data() + begin + i * stride;
+    const Elements e = elements(m, index, size, name, "indices");
+    std::vector<uint32_t> out(e.count);
+    for (size_t i = 0; i < e.count; ++i) {
+        const unsigned char* p = e.at(i);
         uint32_t value = 0;
         if (size == 1) {
             value = *p;
