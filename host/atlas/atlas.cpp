@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <deque>
 #include <thread>
 
@@ -50,15 +50,18 @@ void validateInput(const Mesh& mesh, const AtlasOptions& opt) {
     if (opt.resolution < 16 || opt.resolution > 32768)
         fail("atlas: resolution ", opt.resolution, " is outside 16..32768");
     if (opt.gutterTexels < 0 || opt.gutterTexels > opt.resolution / 8)
-        fail("atlas: gutter of ", opt.gutterTexels, " texels does not suit resolution ", opt.resolution);
+        fail("atlas: gutter of ", opt.gutterTexels, " texels does not suit resolution ",
+             opt.resolution);
     for (const glm::vec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             fail(mesh.name, ": a vertex position is not finite");
     for (const glm::uvec3& t : mesh.triangles)
-        if (t.x >= mesh.positions.size() || t.y >= mesh.positions.size() || t.z >= mesh.positions.size())
+        if (t.x >= mesh.positions.size() || t.y >= mesh.positions.size() ||
+            t.z >= mesh.positions.size())
             fail(mesh.name, ": a triangle refers to a missing vertex");
     if (mesh.hasNormals() && mesh.normals.size() != mesh.positions.size())
-        fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(), " vertices");
+        fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(),
+             " vertices");
 }
 
 }  // namespace
@@ -85,7 +88,8 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         if (!debug) return;
         timespec ts;
         clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-        std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000, ts.tv_sec + 1e-9 * ts.tv_nsec);
+        std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000,
+                     ts.tv_sec + 1e-9 * ts.tv_nsec);
     };
     std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
     stage("segmented");
@@ -101,9 +105,9 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
 
     std::vector<PackChart> packIn;
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
-    const PackResult packed = packCharts(
-        packIn, opt.resolution, opt.gutterTexels,
-        opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
+    const PackResult packed =
+        packCharts(packIn, opt.resolution, opt.gutterTexels,
+                   opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
     stage("packed");
 
     // Output vertices: one per (chart, chart vertex), numbered in the order the
@@ -151,7 +155,8 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
                 park = glm::dvec2(out.uvs[size_t(firstCopy[tri[k]])]);
                 break;
             }
-        if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty()) park = glm::dvec2(out.uvs[0]);
+        if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty())
+            park = glm::dvec2(out.uvs[0]);
         for (int k = 0; k < 3; ++k) out.triangles[t][k] = addVertex(tri[k], park);
     }
     copySourceAttributes(mesh, source, out);

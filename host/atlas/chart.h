@@ -5,11 +5,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <string>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "mesh/mesh.h"
 
@@ -54,8 +53,8 @@ struct ChartOptions {
     double maxDistortion = 0.06;
     int threads = 0;
 };
-std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
-                              const ChartOptions& opt);
+std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
+                              const std::vector<int>& labels, const ChartOptions& opt);
 
 // Charts whose smallest bounding rectangle is more than maxAspect times longer
 // than wide cut in two across the middle of its long side (triangles by
