@@ -13,6 +13,7 @@
 #include "atlas/chart.h"
 #include "atlas/pack.h"
 #include "util/error.h"
+#include "util/progress.h"
 #include "util/timer.h"
 
 namespace tsis {
@@ -91,14 +92,19 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000,
                      ts.tv_sec + 1e-9 * ts.tv_nsec);
     };
+    // One progress line for the whole build: segmentation (CGAL, no progress of
+    // its own) to 40%, charts to 90%, packing and the output mesh to 100%.
+    Progress progress("atlas", 1000);
     std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
     stage("segmented");
+    progress.update(400);
     if (labels.empty()) labels = patchLabels(adj, std::max(1, opt.trianglesPerProxy));
     smoothLabels(mesh, adj, labels, std::max(1, opt.trianglesPerProxy / 10));
 
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;
     copt.threads = opt.threads;
+    copt.onProgress = [&](double f) { progress.update(400 + (long long)(500 * f)); };
     std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
     stage("charts parameterised");
     splitElongatedCharts(charts, kMaxChartAspect);
@@ -109,6 +115,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         packCharts(packIn, opt.resolution, opt.gutterTexels,
                    opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
     stage("packed");
+    progress.update(950);
 
     // Output vertices: one per (chart, chart vertex), numbered in the order the
     // triangles first use them; degenerate triangles get their own vertices
@@ -165,6 +172,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         stats->seconds = timer.ms() / 1000.0;
         stats->fromCache = false;
     }
+    progress.finish();
     if (sourceVertex) *sourceVertex = std::move(source);
     return out;
 }

@@ -52,6 +52,9 @@ struct Chart {
 struct ChartOptions {
     double maxDistortion = 0.06;
     int threads = 0;
+    // Called (under a lock) with the fraction of faces in finished charts; when
+    // empty, makeCharts reports on its own Progress line.
+    std::function<void(double)> onProgress;
 };
 std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
                               const std::vector<int>& labels, const ChartOptions& opt);

@@ -20,6 +20,7 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <thread>
 #include <unordered_map>
@@ -580,7 +581,8 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
     std::exception_ptr error;
     std::vector<Chart> charts;
     long long doneFaces = 0;
-    Progress progress("atlas charts", (long long)order.size());
+    std::optional<Progress> ownProgress;
+    if (!opt.onProgress) ownProgress.emplace("atlas charts", (long long)order.size());
 
     auto process = [&](FaceSet faces, std::vector<FaceSet>& more) -> bool {
         const Topology topo = analyse(mesh, adj, faces);
@@ -625,7 +627,10 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
         for (glm::dvec2& p : chart.uv) p *= k;
         std::lock_guard lock(mutex);
         doneFaces += (long long)faces.size();
-        progress.update(doneFaces);
+        if (opt.onProgress)
+            opt.onProgress(double(doneFaces) / double(std::max<size_t>(order.size(), 1)));
+        else
+            ownProgress->update(doneFaces);
         charts.push_back(std::move(chart));
         return true;
     };
@@ -662,7 +667,7 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
     worker();
     for (auto& t : pool) t.join();
     if (error) std::rethrow_exception(error);
-    progress.finish();
+    if (ownProgress) ownProgress->finish();
 
     std::sort(charts.begin(), charts.end(), [](const Chart& a, const Chart& b) {
         return a.mesh.faces.front() < b.mesh.faces.front();
