@@ -81,8 +81,14 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     const size_t usable = size_t(std::count(adj.usable.begin(), adj.usable.end(), 1));
     if (usable == 0) fail(mesh.name, ": every triangle is degenerate (no area)");
 
-    const int proxies =
-        std::max(opt.minProxies, int(usable / size_t(std::max(1, opt.trianglesPerProxy))));
+    const double resScale = std::max(1.0, double(opt.resolution) / 1024.0);
+    const size_t cap = size_t(std::max(1.0, opt.maxProxies * resScale * resScale));
+    const int proxies = std::max(
+        opt.minProxies, int(std::min(usable / size_t(std::max(1, opt.trianglesPerProxy)), cap)));
+    // Faces per chart that segmentation aims at: trianglesPerProxy unless the
+    // cap made charts bigger.
+    const int facesPerProxy =
+        std::max(std::max(1, opt.trianglesPerProxy), int(usable / size_t(std::max(1, proxies))));
     // TSIS_ATLAS_DEBUG=1: wall and process CPU seconds after each stage on stderr.
     const bool debug = std::getenv("TSIS_ATLAS_DEBUG") != nullptr;
     auto stage = [&](const char* name) {
@@ -98,8 +104,8 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
     stage("segmented");
     progress.update(400);
-    if (labels.empty()) labels = patchLabels(adj, std::max(1, opt.trianglesPerProxy));
-    smoothLabels(mesh, adj, labels, std::max(1, opt.trianglesPerProxy / 10));
+    if (labels.empty()) labels = patchLabels(adj, facesPerProxy);
+    smoothLabels(mesh, adj, labels, std::max(1, facesPerProxy / 10));
 
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;

@@ -33,9 +33,14 @@ namespace tsis {
 struct AtlasOptions {
     int resolution = 1024;  // texels per side the atlas is made for (texel centres at (i+½)/res)
     int gutterTexels = 2;   // empty texels at least between two charts at `resolution`
-    // Charts from VSA: max(minProxies, triangles / trianglesPerProxy).
+    // Charts from VSA: max(minProxies, min(triangles / trianglesPerProxy,
+    // maxProxies × max(1, (resolution / 1024)²))). The cap keeps big meshes to
+    // as many charts as the atlas holds with its gutters (the data meshes, up
+    // to bunny00's 377 proxies, are below it): at 208K triangles, 1040
+    // proxies made 1626 charts and a coverage of 0.45 at 1024².
     int trianglesPerProxy = 200;
     int minProxies = 50;
+    int maxProxies = 400;
     // A chart whose area-weighted RMS of log(A3D/AUV) (after uniform scaling) is
     // above this is split in two and each half parameterised again.
     double maxChartDistortion = 0.06;

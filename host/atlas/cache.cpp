@@ -75,6 +75,7 @@ std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt) {
         h.value(opt.gutterTexels);
         h.value(opt.trianglesPerProxy);
         h.value(opt.minProxies);
+        h.value(opt.maxProxies);
         h.value(opt.maxChartDistortion);
         const uint64_t nv = mesh.positions.size(), nt = mesh.triangles.size();
         h.value(nv);

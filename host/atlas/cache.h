@@ -22,7 +22,7 @@
 namespace tsis::atlas {
 
 // Bump when the builder's output changes for the same input.
-constexpr int kAtlasVersion = 3;
+constexpr int kAtlasVersion = 4;
 
 std::optional<std::filesystem::path> cacheDirectory();
 std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt);
