@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 #include "test_util.h"
 
@@ -221,6 +223,29 @@ TEST(Cli, HelpAndInfoCommands) {
     EXPECT_EQ(dip.exitCode, 0);
     EXPECT_NE(dip.out.find("\"total_reflectance\""), std::string::npos);
     EXPECT_NE(dip.out.find("\"rd\""), std::string::npos);
+}
+
+// Off a terminal, `tsis atlas` reports progress as whole lines on stderr
+// (interval shortened from 10 s; test_main turns progress off), percents rising
+// to 100; stdout is the JSON.
+TEST(Cli, AtlasProgressLinesWhenStderrIsNotATerminal) {
+    ScratchDir dir;
+    RunResult r =
+        runTsis("atlas --mesh armadillo --atlas-res 256 --json",
+                "TSIS_PROGRESS=1 TSIS_PROGRESS_INTERVAL=0.2 TSIS_CACHE_DIR=" + dir.path().string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"coverage\""), std::string::npos) << r.out;
+    std::istringstream in(r.err);
+    const std::regex line(R"(tsis: atlas (\d+)% \(\d+ s\))");
+    int lines = 0, last = -1;
+    for (std::string l; std::getline(in, l); ++lines) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_match(l, m, line)) << l;
+        EXPECT_GE(std::stoi(m[1]), last) << r.err;
+        last = std::stoi(m[1]);
+    }
+    EXPECT_GE(lines, 2) << r.err;
+    EXPECT_EQ(last, 100) << r.err;
 }
 
 }  // namespace

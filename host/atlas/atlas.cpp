@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <deque>
 #include <thread>
 
@@ -13,6 +13,7 @@
 #include "atlas/chart.h"
 #include "atlas/pack.h"
 #include "util/error.h"
+#include "util/progress.h"
 #include "util/timer.h"
 
 namespace tsis {
@@ -50,15 +51,18 @@ void validateInput(const Mesh& mesh, const AtlasOptions& opt) {
     if (opt.resolution < 16 || opt.resolution > 32768)
         fail("atlas: resolution ", opt.resolution, " is outside 16..32768");
     if (opt.gutterTexels < 0 || opt.gutterTexels > opt.resolution / 8)
-        fail("atlas: gutter of ", opt.gutterTexels, " texels does not suit resolution ", opt.resolution);
+        fail("atlas: gutter of ", opt.gutterTexels, " texels does not suit resolution ",
+             opt.resolution);
     for (const glm::vec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             fail(mesh.name, ": a vertex position is not finite");
     for (const glm::uvec3& t : mesh.triangles)
-        if (t.x >= mesh.positions.size() || t.y >= mesh.positions.size() || t.z >= mesh.positions.size())
+        if (t.x >= mesh.positions.size() || t.y >= mesh.positions.size() ||
+            t.z >= mesh.positions.size())
             fail(mesh.name, ": a triangle refers to a missing vertex");
     if (mesh.hasNormals() && mesh.normals.size() != mesh.positions.size())
-        fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(), " vertices");
+        fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(),
+             " vertices");
 }
 
 }  // namespace
@@ -77,34 +81,47 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     const size_t usable = size_t(std::count(adj.usable.begin(), adj.usable.end(), 1));
     if (usable == 0) fail(mesh.name, ": every triangle is degenerate (no area)");
 
-    const int proxies =
-        std::max(opt.minProxies, int(usable / size_t(std::max(1, opt.trianglesPerProxy))));
+    const double resScale = std::max(1.0, double(opt.resolution) / 1024.0);
+    const size_t cap = size_t(std::max(1.0, opt.maxProxies * resScale * resScale));
+    const int proxies = std::max(
+        opt.minProxies, int(std::min(usable / size_t(std::max(1, opt.trianglesPerProxy)), cap)));
+    // Faces per chart that segmentation aims at: trianglesPerProxy unless the
+    // cap made charts bigger.
+    const int facesPerProxy =
+        std::max(std::max(1, opt.trianglesPerProxy), int(usable / size_t(std::max(1, proxies))));
     // TSIS_ATLAS_DEBUG=1: wall and process CPU seconds after each stage on stderr.
     const bool debug = std::getenv("TSIS_ATLAS_DEBUG") != nullptr;
     auto stage = [&](const char* name) {
         if (!debug) return;
         timespec ts;
         clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-        std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000, ts.tv_sec + 1e-9 * ts.tv_nsec);
+        std::fprintf(stderr, "atlas %s: %.2f s (cpu %.2f s)\n", name, timer.ms() / 1000,
+                     ts.tv_sec + 1e-9 * ts.tv_nsec);
     };
+    // One progress line for the whole build: segmentation (CGAL, no progress of
+    // its own) to 40%, charts to 90%, packing and the output mesh to 100%.
+    Progress progress("atlas", 1000);
     std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
     stage("segmented");
-    if (labels.empty()) labels = patchLabels(adj, std::max(1, opt.trianglesPerProxy));
-    smoothLabels(mesh, adj, labels, std::max(1, opt.trianglesPerProxy / 10));
+    progress.update(400);
+    if (labels.empty()) labels = patchLabels(adj, facesPerProxy);
+    smoothLabels(mesh, adj, labels, std::max(1, facesPerProxy / 10));
 
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;
     copt.threads = opt.threads;
+    copt.onProgress = [&](double f) { progress.update(400 + (long long)(500 * f)); };
     std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
     stage("charts parameterised");
     splitElongatedCharts(charts, kMaxChartAspect);
 
     std::vector<PackChart> packIn;
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
-    const PackResult packed = packCharts(
-        packIn, opt.resolution, opt.gutterTexels,
-        opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
+    const PackResult packed =
+        packCharts(packIn, opt.resolution, opt.gutterTexels,
+                   opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
     stage("packed");
+    progress.update(950);
 
     // Output vertices: one per (chart, chart vertex), numbered in the order the
     // triangles first use them; degenerate triangles get their own vertices
@@ -151,7 +168,8 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
                 park = glm::dvec2(out.uvs[size_t(firstCopy[tri[k]])]);
                 break;
             }
-        if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty()) park = glm::dvec2(out.uvs[0]);
+        if (park == glm::dvec2(0.5 / opt.resolution) && !out.uvs.empty())
+            park = glm::dvec2(out.uvs[0]);
         for (int k = 0; k < 3; ++k) out.triangles[t][k] = addVertex(tri[k], park);
     }
     copySourceAttributes(mesh, source, out);
@@ -160,6 +178,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         stats->seconds = timer.ms() / 1000.0;
         stats->fromCache = false;
     }
+    progress.finish();
     if (sourceVertex) *sourceVertex = std::move(source);
     return out;
 }

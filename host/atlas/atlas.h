@@ -33,25 +33,30 @@ namespace tsis {
 struct AtlasOptions {
     int resolution = 1024;  // texels per side the atlas is made for (texel centres at (i+½)/res)
     int gutterTexels = 2;   // empty texels at least between two charts at `resolution`
-    // Charts from VSA: max(minProxies, triangles / trianglesPerProxy).
+    // Charts from VSA: max(minProxies, min(triangles / trianglesPerProxy,
+    // maxProxies × max(1, (resolution / 1024)²))). The cap keeps big meshes to
+    // as many charts as the atlas holds with its gutters (the data meshes, up
+    // to bunny00's 377 proxies, are below it): at 208K triangles, 1040
+    // proxies made 1626 charts and a coverage of 0.45 at 1024².
     int trianglesPerProxy = 200;
     int minProxies = 50;
+    int maxProxies = 400;
     // A chart whose area-weighted RMS of log(A3D/AUV) (after uniform scaling) is
     // above this is split in two and each half parameterised again.
     double maxChartDistortion = 0.06;
-    int threads = 0;        // chart-level worker threads; 0 = hardware concurrency
-    bool useCache = true;   // ensureAtlas: read and write the on-disk cache
+    int threads = 0;       // chart-level worker threads; 0 = hardware concurrency
+    bool useCache = true;  // ensureAtlas: read and write the on-disk cache
 };
 
 struct AtlasStats {
-    int charts = 0;          // connected pieces in UV space
-    double coverage = 0;     // fraction of texel centres covered at the resolution
-    double rWstd = 0;        // area-weighted stddev of r = (A3D/AUV)/(ΣA3D/ΣAUV)
+    int charts = 0;             // connected pieces in UV space
+    double coverage = 0;        // fraction of texel centres covered at the resolution
+    double rWstd = 0;           // area-weighted stddev of r = (A3D/AUV)/(ΣA3D/ΣAUV)
     double rP01 = 0, rP99 = 0;  // area-weighted 1st / 99th percentiles of r
     double rMin = 0, rMax = 0;
-    size_t flipped = 0;      // triangles oriented against their chart (or with zero UV area)
-    size_t overlaps = 0;     // triangles overlapping another in UV space
-    double seconds = 0;      // build (or cache load) wall time
+    size_t flipped = 0;   // triangles oriented against their chart (or with zero UV area)
+    size_t overlaps = 0;  // triangles overlapping another in UV space
+    double seconds = 0;   // build (or cache load) wall time
     bool fromCache = false;
 };
 
@@ -81,7 +86,9 @@ Json atlasStatsJson(const AtlasStats& stats);
 
 // The names the `tsis atlas` issue uses.
 using AtlasReport = AtlasStats;
-inline Json atlasReportJson(const AtlasReport& report) { return atlasStatsJson(report); }
+inline Json atlasReportJson(const AtlasReport& report) {
+    return atlasStatsJson(report);
+}
 
 // A (2·res)×res PNG: charts in colour on the left, a heat map of log2 r on the
 // right (blue r < 1, white r = 1, red r > 1; saturated at r = 2^∓½ ≈ 0.71 and 1.41).

@@ -25,7 +25,9 @@ struct Hash64 {  // FNV-1a
         for (size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 0x100000001b3ull;
     }
     template <typename T>
-    void value(const T& v) { add(&v, sizeof v); }
+    void value(const T& v) {
+        add(&v, sizeof v);
+    }
 };
 
 // MurmurHash3's finaliser: spreads every input bit over the key half.
@@ -48,14 +50,19 @@ struct Header {
     uint64_t flipped, overlaps;
 };
 
-void append(std::string& out, const void* p, size_t n) { out.append(static_cast<const char*>(p), n); }
+void append(std::string& out, const void* p, size_t n) {
+    out.append(static_cast<const char*>(p), n);
+}
 
 }  // namespace
 
 std::optional<std::filesystem::path> cacheDirectory() {
-    if (const char* d = std::getenv("TSIS_CACHE_DIR"); d && *d) return std::filesystem::path(d) / "atlas";
-    if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "tsis" / "atlas";
-    if (const char* d = std::getenv("HOME"); d && *d) return std::filesystem::path(d) / ".cache" / "tsis" / "atlas";
+    if (const char* d = std::getenv("TSIS_CACHE_DIR"); d && *d)
+        return std::filesystem::path(d) / "atlas";
+    if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
+        return std::filesystem::path(d) / "tsis" / "atlas";
+    if (const char* d = std::getenv("HOME"); d && *d)
+        return std::filesystem::path(d) / ".cache" / "tsis" / "atlas";
     return std::nullopt;
 }
 
@@ -68,6 +75,7 @@ std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt) {
         h.value(opt.gutterTexels);
         h.value(opt.trianglesPerProxy);
         h.value(opt.minProxies);
+        h.value(opt.maxProxies);
         h.value(opt.maxChartDistortion);
         const uint64_t nv = mesh.positions.size(), nt = mesh.triangles.size();
         h.value(nv);
@@ -81,7 +89,8 @@ std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt) {
     return key;
 }
 
-void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceVertex, Mesh& atlas) {
+void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceVertex,
+                          Mesh& atlas) {
     atlas.positions.resize(sourceVertex.size());
     for (size_t v = 0; v < sourceVertex.size(); ++v)
         atlas.positions[v] = mesh.positions[sourceVertex[v]];
@@ -92,15 +101,18 @@ void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceV
     }
 }
 
-std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh, AtlasStats* stats) {
+std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh,
+                                    AtlasStats* stats) {
     std::ifstream in(file, std::ios::binary);
     if (!in) return std::nullopt;
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.size() < sizeof(Header) + sizeof(uint64_t)) return std::nullopt;
     Header h;
     std::memcpy(&h, bytes.data(), sizeof h);
-    if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.version != uint32_t(kAtlasVersion)) return std::nullopt;
-    if (h.inVertices != mesh.positions.size() || h.triangles != mesh.triangles.size()) return std::nullopt;
+    if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.version != uint32_t(kAtlasVersion))
+        return std::nullopt;
+    if (h.inVertices != mesh.positions.size() || h.triangles != mesh.triangles.size())
+        return std::nullopt;
     if (h.outVertices > (uint64_t(1) << 32)) return std::nullopt;
     const size_t body = size_t(h.outVertices) * (sizeof(uint32_t) + 2 * sizeof(float)) +
                         size_t(h.triangles) * 3 * sizeof(uint32_t);
@@ -149,9 +161,11 @@ std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mes
     return out;
 }
 
-bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas, const std::vector<uint32_t>& sourceVertex,
-                      size_t inputVertices, const AtlasStats& stats) {
-    if (sourceVertex.size() != atlas.positions.size() || atlas.uvs.size() != atlas.positions.size()) return false;
+bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas,
+                      const std::vector<uint32_t>& sourceVertex, size_t inputVertices,
+                      const AtlasStats& stats) {
+    if (sourceVertex.size() != atlas.positions.size() || atlas.uvs.size() != atlas.positions.size())
+        return false;
     Header h;
     std::memset(&h, 0, sizeof h);
     std::memcpy(h.magic, kMagic, sizeof kMagic);

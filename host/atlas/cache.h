@@ -22,15 +22,17 @@
 namespace tsis::atlas {
 
 // Bump when the builder's output changes for the same input.
-constexpr int kAtlasVersion = 3;
+constexpr int kAtlasVersion = 4;
 
 std::optional<std::filesystem::path> cacheDirectory();
 std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt);
 
-std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh, AtlasStats* stats);
+std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh,
+                                    AtlasStats* stats);
 // Writes atomically; returns false (and leaves nothing behind) on failure.
 bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas,
-                      const std::vector<uint32_t>& sourceVertex, size_t inputVertices, const AtlasStats& stats);
+                      const std::vector<uint32_t>& sourceVertex, size_t inputVertices,
+                      const AtlasStats& stats);
 
 // Fills the atlas' positions (and normals, when the mesh has them) from the
 // input vertex of each of its vertices.

@@ -5,11 +5,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <string>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <vector>
 
 #include "mesh/mesh.h"
 
@@ -53,9 +52,12 @@ struct Chart {
 struct ChartOptions {
     double maxDistortion = 0.06;
     int threads = 0;
+    // Called (under a lock) with the fraction of faces in finished charts; when
+    // empty, makeCharts reports on its own Progress line.
+    std::function<void(double)> onProgress;
 };
-std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
-                              const ChartOptions& opt);
+std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
+                              const std::vector<int>& labels, const ChartOptions& opt);
 
 // Charts whose smallest bounding rectangle is more than maxAspect times longer
 // than wide cut in two across the middle of its long side (triangles by

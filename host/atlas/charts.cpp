@@ -15,16 +15,16 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <thread>
 #include <unordered_map>
 #include <unordered_set>
-
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
 #include "atlas/chart.h"
 #include "atlas/pack.h"
@@ -35,9 +35,13 @@ namespace tsis::atlas {
 
 namespace {
 
-glm::dvec3 pos(const Mesh& m, uint32_t v) { return glm::dvec3(m.positions[v]); }
+glm::dvec3 pos(const Mesh& m, uint32_t v) {
+    return glm::dvec3(m.positions[v]);
+}
 
-double area3(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); }
+double area3(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
 
 double signedArea2(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
@@ -81,7 +85,8 @@ bool onSegment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {  // p collinear with 
 }  // namespace
 
 bool segmentsIntersect(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
-    const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
+              o4 = orient(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0) return true;
     if (o1 == 0 && onSegment(a, b, c)) return true;
     if (o2 == 0 && onSegment(a, b, d)) return true;
@@ -102,11 +107,14 @@ std::vector<size_t> intersectingSegments(const std::vector<Segment>& segs) {
     // A uniform grid with about one cell per segment, cells no smaller than the
     // mean segment length.
     const glm::dvec2 ext = glm::max(hi - lo, glm::dvec2(1e-300));
-    double cell = std::max(total / double(segs.size()), std::sqrt(ext.x * ext.y / double(segs.size())));
+    double cell =
+        std::max(total / double(segs.size()), std::sqrt(ext.x * ext.y / double(segs.size())));
     cell = std::max(cell, std::max(ext.x, ext.y) / 4096.0);
     const int nx = std::max(1, int(ext.x / cell) + 1), ny = std::max(1, int(ext.y / cell) + 1);
     std::vector<std::vector<uint32_t>> grid(size_t(nx) * size_t(ny));
-    auto cellOf = [&](double v, double l, int n) { return std::clamp(int((v - l) / cell), 0, n - 1); };
+    auto cellOf = [&](double v, double l, int n) {
+        return std::clamp(int((v - l) / cell), 0, n - 1);
+    };
     for (size_t i = 0; i < segs.size(); ++i) {
         const glm::dvec2 a = glm::min(segs[i].a, segs[i].b), b = glm::max(segs[i].a, segs[i].b);
         for (int y = cellOf(a.y, lo.y, ny); y <= cellOf(b.y, lo.y, ny); ++y)
@@ -193,13 +201,18 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
             for (int e = 0; e < 3; ++e) {
                 const int g = adj.across[f][e];
                 if (g < 0 || labels[g] < 0) continue;
-                if (labels[g] == labels[f]) ++same;
-                else nl[k++] = labels[g];
+                if (labels[g] == labels[f])
+                    ++same;
+                else
+                    nl[k++] = labels[g];
             }
             int pick = labels[f];
-            if (k >= 2 && nl[0] == nl[1]) pick = nl[0];
-            else if (k == 3 && (nl[0] == nl[2] || nl[1] == nl[2])) pick = nl[2];
-            else if (same == 0 && k > 0) pick = *std::min_element(nl, nl + k);
+            if (k >= 2 && nl[0] == nl[1])
+                pick = nl[0];
+            else if (k == 3 && (nl[0] == nl[2] || nl[1] == nl[2]))
+                pick = nl[2];
+            else if (same == 0 && k > 0)
+                pick = *std::min_element(nl, nl + k);
             next[f] = pick;
             changed += pick != labels[f];
         }
@@ -240,9 +253,12 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
                         ++own;
                         continue;
                     }
-                    auto it = std::find_if(votes.begin(), votes.end(), [&](auto& p) { return p.first == l; });
-                    if (it == votes.end()) votes.emplace_back(l, 1);
-                    else ++it->second;
+                    auto it = std::find_if(votes.begin(), votes.end(),
+                                           [&](auto& p) { return p.first == l; });
+                    if (it == votes.end())
+                        votes.emplace_back(l, 1);
+                    else
+                        ++it->second;
                 }
             }
             for (auto [l, c] : votes)
@@ -275,9 +291,12 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
                 const int g = adj.across[f][e];
                 if (g < 0 || labels[g] < 0 || labels[g] == labels[f]) continue;
                 auto& list = border[r];
-                auto it = std::find_if(list.begin(), list.end(), [&](auto& p) { return p.first == labels[g]; });
-                if (it == list.end()) list.emplace_back(labels[g], 1);
-                else ++it->second;
+                auto it = std::find_if(list.begin(), list.end(),
+                                       [&](auto& p) { return p.first == labels[g]; });
+                if (it == list.end())
+                    list.emplace_back(labels[g], 1);
+                else
+                    ++it->second;
             }
         }
         if (border.empty()) break;
@@ -285,7 +304,8 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
         for (auto& [r, list] : border) {
             auto best = list.front();
             for (auto p : list)
-                if (p.second > best.second || (p.second == best.second && p.first < best.first)) best = p;
+                if (p.second > best.second || (p.second == best.second && p.first < best.first))
+                    best = p;
             target[r] = best.first;
         }
         for (size_t f = 0; f < n; ++f) {
@@ -322,12 +342,12 @@ namespace {
 using FaceSet = std::vector<int>;
 
 struct Topology {
-    std::vector<int> corner;                  // corner (3i+k) -> chart vertex
-    std::vector<std::array<char, 3>> glued;   // edge glued to a neighbour in the set
-    std::vector<std::array<int, 3>> across;   // neighbour's local index or -1
+    std::vector<int> corner;                 // corner (3i+k) -> chart vertex
+    std::vector<std::array<char, 3>> glued;  // edge glued to a neighbour in the set
+    std::vector<std::array<int, 3>> across;  // neighbour's local index or -1
     int vertices = 0;
     int components = 0;
-    std::vector<int> component;               // per local face
+    std::vector<int> component;  // per local face
     int euler = 0, loops = 0;
     bool pinched = false;
     std::vector<std::vector<int>> loopFaces;  // local faces along each border loop
@@ -352,7 +372,8 @@ Topology analyse(const Mesh& mesh, const Adjacency& adj, const FaceSet& faces) {
             if (j < 0) continue;
             const uint32_t a = mesh.triangles[f][e], b = mesh.triangles[f][(e + 1) % 3];
             int eg = 0;
-            while (eg < 3 && !(mesh.triangles[g][eg] == b && mesh.triangles[g][(eg + 1) % 3] == a)) ++eg;
+            while (eg < 3 && !(mesh.triangles[g][eg] == b && mesh.triangles[g][(eg + 1) % 3] == a))
+                ++eg;
             TSIS_CHECK_LT(eg, 3);
             topo.glued[i][e] = 1;
             topo.across[i][e] = j;
@@ -384,7 +405,8 @@ Topology analyse(const Mesh& mesh, const Adjacency& adj, const FaceSet& faces) {
     std::vector<int> outBorder(size_t(topo.vertices), -1);  // chart vertex -> half-edge 3i+e
     for (int i = 0; i < n; ++i)
         for (int e = 0; e < 3; ++e) {
-            const uint64_t a = uint64_t(topo.corner[3 * i + e]), b = uint64_t(topo.corner[3 * i + (e + 1) % 3]);
+            const uint64_t a = uint64_t(topo.corner[3 * i + e]),
+                           b = uint64_t(topo.corner[3 * i + (e + 1) % 3]);
             if (a == b || !seen.insert((a << 32) | b).second) topo.pinched = true;
             if (!topo.glued[i][e]) {
                 ++border;
@@ -395,7 +417,8 @@ Topology analyse(const Mesh& mesh, const Adjacency& adj, const FaceSet& faces) {
     for (int i = 0; i < n; ++i)
         for (int e = 0; e < 3; ++e) {
             if (topo.glued[i][e]) continue;
-            const uint64_t a = uint64_t(topo.corner[3 * i + e]), b = uint64_t(topo.corner[3 * i + (e + 1) % 3]);
+            const uint64_t a = uint64_t(topo.corner[3 * i + e]),
+                           b = uint64_t(topo.corner[3 * i + (e + 1) % 3]);
             if (seen.count((b << 32) | a)) topo.pinched = true;
         }
     topo.euler = topo.vertices - (3 * n + border) / 2 + n;
@@ -422,8 +445,8 @@ Topology analyse(const Mesh& mesh, const Adjacency& adj, const FaceSet& faces) {
 
 // Dijkstra over glued face adjacency with centroid distances, from `seeds`;
 // returns distance and the index of the nearest seed per local face.
-void geodesic(const std::vector<glm::dvec3>& centroid, const Topology& topo, const std::vector<int>& seeds,
-              std::vector<double>& dist, std::vector<int>& owner) {
+void geodesic(const std::vector<glm::dvec3>& centroid, const Topology& topo,
+              const std::vector<int>& seeds, std::vector<double>& dist, std::vector<int>& owner) {
     const size_t n = centroid.size();
     dist.assign(n, std::numeric_limits<double>::infinity());
     owner.assign(n, -1);
@@ -461,7 +484,8 @@ int farthest(const std::vector<double>& dist, const std::vector<int>& among) {
 // Splits a connected piece in two at the geodesic Voronoi boundary of two far
 // faces. With several border loops both seeds lie on the longest loop, so a
 // tube is cut along its length (two disks) rather than across (two tubes).
-std::pair<FaceSet, FaceSet> splitInTwo(const Mesh& mesh, const FaceSet& faces, const Topology& topo) {
+std::pair<FaceSet, FaceSet> splitInTwo(const Mesh& mesh, const FaceSet& faces,
+                                       const Topology& topo) {
     const size_t n = faces.size();
     std::vector<glm::dvec3> centroid(n);
     for (size_t i = 0; i < n; ++i) {
@@ -485,7 +509,8 @@ std::pair<FaceSet, FaceSet> splitInTwo(const Mesh& mesh, const FaceSet& faces, c
     if (b == a) b = (a + 1) % int(n);
     geodesic(centroid, topo, {a, b}, dist, owner);
     std::pair<FaceSet, FaceSet> halves;
-    for (size_t i = 0; i < n; ++i) (owner[i] == 1 ? halves.second : halves.first).push_back(faces[i]);
+    for (size_t i = 0; i < n; ++i)
+        (owner[i] == 1 ? halves.second : halves.first).push_back(faces[i]);
     TSIS_CHECK(!halves.first.empty() && !halves.second.empty());
     return halves;
 }
@@ -511,7 +536,8 @@ ChartMesh chartMesh(const Mesh& mesh, const FaceSet& faces, const Topology& topo
 // Validation of a parameterised disk: finite, every triangle positively
 // oriented, a border that does not cross itself (together: an injective map),
 // distortion under the limit.
-bool acceptable(const ChartMesh& cm, const Topology& topo, std::vector<glm::dvec2>& uv, double maxDistortion) {
+bool acceptable(const ChartMesh& cm, const Topology& topo, std::vector<glm::dvec2>& uv,
+                double maxDistortion) {
     double signedSum = 0;
     for (const Tri& t : cm.triangles) signedSum += signedArea2(uv[t[0]], uv[t[1]], uv[t[2]]);
     if (!std::isfinite(signedSum)) return false;
@@ -531,13 +557,14 @@ bool acceptable(const ChartMesh& cm, const Topology& topo, std::vector<glm::dvec
 
 }  // namespace
 
-std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std::vector<int>& labels,
-                              const ChartOptions& opt) {
+std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
+                              const std::vector<int>& labels, const ChartOptions& opt) {
     // Initial pieces: faces grouped by label.
     std::vector<int> order;
     for (size_t f = 0; f < labels.size(); ++f)
         if (labels[f] >= 0) order.push_back(int(f));
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return labels[a] < labels[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return labels[a] < labels[b]; });
     std::deque<FaceSet> queue;
     for (size_t i = 0; i < order.size();) {
         size_t j = i;
@@ -554,7 +581,8 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std:
     std::exception_ptr error;
     std::vector<Chart> charts;
     long long doneFaces = 0;
-    Progress progress("atlas charts", (long long)order.size());
+    std::optional<Progress> ownProgress;
+    if (!opt.onProgress) ownProgress.emplace("atlas charts", (long long)order.size());
 
     auto process = [&](FaceSet faces, std::vector<FaceSet>& more) -> bool {
         const Topology topo = analyse(mesh, adj, faces);
@@ -591,14 +619,18 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std:
         // Same area in UV as in 3D: one density for every chart before packing.
         double s3 = 0, suv = 0;
         for (const Tri& t : chart.mesh.triangles) {
-            s3 += area3(chart.mesh.positions[t[0]], chart.mesh.positions[t[1]], chart.mesh.positions[t[2]]);
+            s3 += area3(chart.mesh.positions[t[0]], chart.mesh.positions[t[1]],
+                        chart.mesh.positions[t[2]]);
             suv += signedArea2(chart.uv[t[0]], chart.uv[t[1]], chart.uv[t[2]]);
         }
         const double k = std::sqrt(s3 / suv);
         for (glm::dvec2& p : chart.uv) p *= k;
         std::lock_guard lock(mutex);
         doneFaces += (long long)faces.size();
-        progress.update(doneFaces);
+        if (opt.onProgress)
+            opt.onProgress(double(doneFaces) / double(std::max<size_t>(order.size(), 1)));
+        else
+            ownProgress->update(doneFaces);
         charts.push_back(std::move(chart));
         return true;
     };
@@ -635,10 +667,11 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj, const std:
     worker();
     for (auto& t : pool) t.join();
     if (error) std::rethrow_exception(error);
-    progress.finish();
+    if (ownProgress) ownProgress->finish();
 
-    std::sort(charts.begin(), charts.end(),
-              [](const Chart& a, const Chart& b) { return a.mesh.faces.front() < b.mesh.faces.front(); });
+    std::sort(charts.begin(), charts.end(), [](const Chart& a, const Chart& b) {
+        return a.mesh.faces.front() < b.mesh.faces.front();
+    });
     return charts;
 }
 
@@ -686,7 +719,8 @@ void appendPieces(const Chart& c, const std::vector<uint32_t>& tris, std::vector
 
 void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect) {
     std::vector<Chart> done;
-    std::deque<Chart> todo(std::make_move_iterator(charts.begin()), std::make_move_iterator(charts.end()));
+    std::deque<Chart> todo(std::make_move_iterator(charts.begin()),
+                           std::make_move_iterator(charts.end()));
     while (!todo.empty()) {
         Chart c = std::move(todo.front());
         todo.pop_front();
@@ -710,7 +744,8 @@ void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect) {
         std::vector<uint32_t> half[2];
         for (size_t t = 0; t < c.mesh.triangles.size(); ++t) {
             const Tri& tri = c.mesh.triangles[t];
-            half[(along[tri[0]] + along[tri[1]] + along[tri[2]]) / 3 < mid ? 0 : 1].push_back(uint32_t(t));
+            half[(along[tri[0]] + along[tri[1]] + along[tri[2]]) / 3 < mid ? 0 : 1].push_back(
+                uint32_t(t));
         }
         if (half[0].empty() || half[1].empty()) {
             done.push_back(std::move(c));

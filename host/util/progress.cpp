@@ -2,30 +2,64 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 namespace tsis {
 
-bool Progress::enabled() {
+Progress::Mode Progress::mode() {
     const char* env = std::getenv("TSIS_PROGRESS");
-    if (env && std::strcmp(env, "0") == 0) return false;
-    return ::isatty(STDERR_FILENO) == 1;
+    if (env && std::strcmp(env, "0") == 0) return Mode::Off;
+    return ::isatty(STDERR_FILENO) == 1 ? Mode::Terminal : Mode::Lines;
+}
+
+bool Progress::enabled() {
+    return mode() != Mode::Off;
+}
+
+double Progress::lineInterval() {
+    if (const char* env = std::getenv("TSIS_PROGRESS_INTERVAL"); env && *env) {
+        char* end = nullptr;
+        const double s = std::strtod(env, &end);
+        if (end && *end == '\0' && std::isfinite(s) && s > 0) return s;
+    }
+    return 10.0;
 }
 
 Progress::Progress(std::string label, long long total)
-    : label_(std::move(label)), total_(total), active_(enabled()) {
+    : label_(std::move(label)), total_(total), mode_(mode()) {
     start_ = last_ = std::chrono::steady_clock::now();
-    if (active_) update(0);
+    if (mode_ == Mode::Terminal) update(0);
+    if (mode_ == Mode::Lines) ticker_ = std::thread([this] { tick(); });
 }
 
 Progress::~Progress() {
     finish();
 }
 
+void Progress::printLine(long long done) {
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double frac = total_ > 0 ? std::clamp(double(done) / double(total_), 0.0, 1.0) : 1.0;
+    std::fprintf(stderr, "tsis: %s %d%% (%.0f s)\n", label_.c_str(), int(100.0 * frac), secs);
+    std::fflush(stderr);
+    printed_ = true;
+}
+
+void Progress::tick() {
+    const auto interval = std::chrono::duration<double>(lineInterval());
+    std::unique_lock lock(mutex_);
+    while (!stop_.wait_for(lock, interval, [&] { return finished_.load(); }))
+        printLine(done_.load());
+}
+
 void Progress::update(long long done) {
-    if (!active_ || finished_) return;
+    done_.store(done);
+    if (mode_ != Mode::Terminal || finished_) return;
+    std::lock_guard lock(mutex_);
     auto now = std::chrono::steady_clock::now();
     if (done != 0 && done < total_ && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
@@ -36,10 +70,21 @@ void Progress::update(long long done) {
 }
 
 void Progress::finish() {
-    if (!active_ || finished_) return;
-    update(total_);
-    finished_ = true;
-    std::fprintf(stderr, "\n");
+    if (mode_ == Mode::Off || finished_) return;
+    if (mode_ == Mode::Terminal) {
+        update(total_);
+        finished_ = true;
+        std::fprintf(stderr, "\n");
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        finished_ = true;
+    }
+    stop_.notify_all();
+    if (ticker_.joinable()) ticker_.join();
+    std::lock_guard lock(mutex_);
+    if (printed_) printLine(total_);
 }
 
 }  // namespace tsis

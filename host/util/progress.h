@@ -1,9 +1,18 @@
-// Progress for long work: a single updating line on a terminal (stderr), and
-// nothing at all when stderr is not a terminal (CI, pipes, files).
+// Progress for long work, on stderr. On a terminal: a single updating line.
+// Otherwise (CI, pipes, files): once the work has run for an interval (10 s,
+// or TSIS_PROGRESS_INTERVAL seconds), one line per interval from a timer
+// thread, so a stage that calls update() rarely still shows it is alive, and a
+// last line at finish(); work shorter than the interval prints nothing. Lines
+// read `tsis: LABEL P% (T s)`, P an integer percent, T elapsed seconds.
+// TSIS_PROGRESS=0 turns both off.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace tsis {
 
@@ -11,17 +20,30 @@ class Progress {
   public:
     Progress(std::string label, long long total);
     ~Progress();
-    void update(long long done);  // cheap; redraws at most ~10 times a second
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+    void update(long long done);  // cheap; thread-safe
     void finish();
 
-    static bool enabled();  // stderr is a terminal and TSIS_PROGRESS != 0
+    enum class Mode { Off, Terminal, Lines };
+    static Mode mode();            // from TSIS_PROGRESS and whether stderr is a terminal
+    static bool enabled();         // mode() != Off
+    static double lineInterval();  // seconds between lines in Lines mode
 
   private:
+    void printLine(long long done);
+    void tick();
+
     std::string label_;
     long long total_;
-    bool active_;
-    bool finished_ = false;
+    Mode mode_;
+    std::atomic<long long> done_{0};
+    std::atomic<bool> finished_{false};
+    bool printed_ = false;  // Lines mode: a line went out (guarded by mutex_)
     std::chrono::steady_clock::time_point start_, last_;
+    std::mutex mutex_;
+    std::condition_variable stop_;
+    std::thread ticker_;
 };
 
 }  // namespace tsis

@@ -1,0 +1,85 @@
+#include "util/progress.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <regex>
+#include <sstream>
+#include <thread>
+
+namespace tsis {
+namespace {
+
+// Sets an environment variable for one scope.
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old, had_ = true;
+        ::setenv(name, value, 1);
+    }
+    ~ScopedEnv() {
+        if (had_)
+            ::setenv(name_, old_.c_str(), 1);
+        else
+            ::unsetenv(name_);
+    }
+
+  private:
+    const char* name_;
+    std::string old_;
+    bool had_ = false;
+};
+
+TEST(Progress, LinesWhenStderrIsNotATerminal) {
+    ScopedEnv interval("TSIS_PROGRESS_INTERVAL", "0.05");
+    ScopedEnv on("TSIS_PROGRESS", "1");
+    testing::internal::CaptureStderr();  // stderr becomes a file
+    {
+        Progress p("atlas", 200);
+        p.update(84);
+        std::this_thread::sleep_for(std::chrono::milliseconds(400));
+        p.update(150);
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    }
+    const std::string err = testing::internal::GetCapturedStderr();
+    std::istringstream in(err);
+    const std::regex line(R"(tsis: atlas (\d+)% \(\d+ s\))");
+    int lines = 0, last = -1;
+    for (std::string l; std::getline(in, l); ++lines) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_match(l, m, line)) << l;
+        const int pct = std::stoi(m[1]);
+        EXPECT_GE(pct, last);
+        last = pct;
+    }
+    EXPECT_GE(lines, 2) << err;  // one at least from each sleep, and the last
+    EXPECT_EQ(last, 100) << err;
+    EXPECT_NE(err.find("tsis: atlas 42%"), std::string::npos) << err;
+}
+
+TEST(Progress, ShortWorkPrintsNothing) {
+    ScopedEnv interval("TSIS_PROGRESS_INTERVAL", "10");
+    ScopedEnv on("TSIS_PROGRESS", "1");
+    testing::internal::CaptureStderr();
+    {
+        Progress p("atlas", 10);
+        p.update(5);
+        p.finish();
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
+TEST(Progress, OffPrintsNothing) {
+    ScopedEnv interval("TSIS_PROGRESS_INTERVAL", "0.01");
+    ScopedEnv off("TSIS_PROGRESS", "0");
+    testing::internal::CaptureStderr();
+    {
+        Progress p("atlas", 10);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
+}  // namespace
+}  // namespace tsis
