@@ -188,7 +188,7 @@ int runAtlas(const std::vector<std::string>& argv) {
         {"mesh", true, false, "M  mesh file, builtin:NAME or a data mesh name (required)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"atlas", true, false, "MODE  auto (default), file or build"},
-        {"atlas-res", true, false, "R  resolution the atlas is made for (default 1024)"},
+        {"atlas-res", true, false, "R  resolution the atlas is made for (default 512, as tsis render)"},
         {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
         {"json", false, false, "print the statistics as JSON"},
     };
