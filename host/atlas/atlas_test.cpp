@@ -5,21 +5,23 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <map>
-#include <optional>
-#include <sstream>
-#include <numeric>
-
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <sstream>
 
 #include "atlas/atlas_test_util.h"
 #include "atlas/cache.h"
 #include "atlas/chart.h"
 #include "util/error.h"
+#include "util/scoped_env_test_util.h"
 
 namespace tsis {
 namespace {
+
+using test::ScopedEnv;
 
 // Every output triangle keeps its input corners (same positions, normals
 // copied) and has UVs inside the 1-texel margin.
@@ -70,7 +72,8 @@ double minChartGap(const Mesh& m, int resolution) {
     }
     std::map<std::pair<uint32_t, uint32_t>, int> count;
     for (const auto& t : m.triangles)
-        for (int e = 0; e < 3; ++e) ++count[{std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])}];
+        for (int e = 0; e < 3; ++e)
+            ++count[{std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])}];
     struct Seg {
         glm::dvec2 a, b;
         uint32_t chart;
@@ -83,7 +86,8 @@ double minChartGap(const Mesh& m, int resolution) {
     // Grid of 4-texel cells; only neighbouring cells can hold pairs closer than 4.
     std::map<std::pair<int, int>, std::vector<size_t>> grid;
     for (size_t i = 0; i < segs.size(); ++i) {
-        const glm::dvec2 lo = glm::min(segs[i].a, segs[i].b) / 4.0, hi = glm::max(segs[i].a, segs[i].b) / 4.0;
+        const glm::dvec2 lo = glm::min(segs[i].a, segs[i].b) / 4.0,
+                         hi = glm::max(segs[i].a, segs[i].b) / 4.0;
         for (int y = int(lo.y); y <= int(hi.y); ++y)
             for (int x = int(lo.x); x <= int(hi.x); ++x) grid[{x, y}].push_back(i);
     }
@@ -97,28 +101,13 @@ double minChartGap(const Mesh& m, int resolution) {
                     for (size_t j : it->second) {
                         const Seg &s = segs[i], &t = segs[j];
                         if (s.chart == t.chart) continue;
-                        best = std::min({best, pointSegment(s.a, t.a, t.b), pointSegment(s.b, t.a, t.b),
-                                         pointSegment(t.a, s.a, s.b), pointSegment(t.b, s.a, s.b)});
+                        best = std::min({best, pointSegment(s.a, t.a, t.b),
+                                         pointSegment(s.b, t.a, t.b), pointSegment(t.a, s.a, s.b),
+                                         pointSegment(t.b, s.a, s.b)});
                     }
             }
     return best;
 }
-
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const std::string& value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        ::setenv(name, value.c_str(), 1);
-    }
-    ~ScopedEnv() {
-        if (old_) ::setenv(name_, old_->c_str(), 1);
-        else ::unsetenv(name_);
-    }
-
-  private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 std::filesystem::path scratchDir(const std::string& tag) {
     const auto dir = std::filesystem::temp_directory_path() /
@@ -142,8 +131,8 @@ AtlasStats checkAtlas(const Mesh& in, const AtlasOptions& opt) {
     EXPECT_EQ(fine.overlaps, 0u);
     EXPECT_EQ(fine.flipped, 0u);
     EXPECT_GE(minChartGap(out, opt.resolution), double(opt.gutterTexels) - 1e-3);
-    std::printf("  %s: %d charts, coverage %.3f, r_wstd %.4f, r p1-p99 %.3f-%.3f, %.2f s\n", in.name.c_str(),
-                st.charts, st.coverage, st.rWstd, st.rP01, st.rP99, st.seconds);
+    std::printf("  %s: %d charts, coverage %.3f, r_wstd %.4f, r p1-p99 %.3f-%.3f, %.2f s\n",
+                in.name.c_str(), st.charts, st.coverage, st.rWstd, st.rP01, st.rP99, st.seconds);
     return st;
 }
 
@@ -200,7 +189,8 @@ TEST(Atlas, ElongatedChartsAreCutWithUVsKept) {
     EXPECT_EQ(charts.size(), 5u);
     EXPECT_EQ(faces.size(), 24u + 4u);
     std::sort(faces.begin(), faces.end());
-    EXPECT_EQ(std::adjacent_find(faces.begin(), faces.end()), faces.end()) << "a face in two pieces";
+    EXPECT_EQ(std::adjacent_find(faces.begin(), faces.end()), faces.end())
+        << "a face in two pieces";
 }
 
 TEST(Atlas, ClosedSphereAndTube) {
@@ -220,10 +210,10 @@ TEST(Atlas, GutterOfFourTexels) {
 TEST(Atlas, DegenerateAndNonManifoldTrianglesStillGetUVs) {
     Mesh m = test::sphereMesh(8, 16);
     const unsigned n = unsigned(m.positions.size());
-    m.triangles.emplace_back(0, 0, 1);          // repeated index
-    m.triangles.emplace_back(1, 2, 1);          // repeated index
-    m.triangles.emplace_back(0, 1, 2);          // third face on an edge (non-manifold)
-    m.positions.emplace_back(5, 5, 5);          // an isolated zero-area triangle
+    m.triangles.emplace_back(0, 0, 1);  // repeated index
+    m.triangles.emplace_back(1, 2, 1);  // repeated index
+    m.triangles.emplace_back(0, 1, 2);  // third face on an edge (non-manifold)
+    m.positions.emplace_back(5, 5, 5);  // an isolated zero-area triangle
     m.normals.emplace_back(0, 1, 0);
     m.triangles.emplace_back(n, n, n);
     AtlasStats st;
@@ -282,8 +272,8 @@ TEST(Atlas, JsonKeys) {
     AtlasStats st;
     st.charts = 3;
     const std::string j = atlasStatsJson(st).dump();
-    for (const char* key : {"charts", "coverage", "r_wstd", "r_p01", "r_p99", "r_min", "r_max", "flipped",
-                            "overlaps", "seconds"})
+    for (const char* key : {"charts", "coverage", "r_wstd", "r_p01", "r_p99", "r_min", "r_max",
+                            "flipped", "overlaps", "seconds"})
         EXPECT_NE(j.find(std::string("\"") + key + "\""), std::string::npos) << key;
 }
 
@@ -364,7 +354,8 @@ TEST(AtlasPolicy, Modes) {
     EXPECT_EQ(ensureAtlas(built, "file", opt).uvs, built.uvs);
     // Invalid UVs (everything folded onto one triangle): auto rebuilds, file fails.
     Mesh folded = built;
-    for (size_t v = 0; v < folded.uvs.size(); ++v) folded.uvs[v] = glm::vec2(0.1f + 0.3f * float(v % 3), 0.2f + 0.3f * float(v % 2));
+    for (size_t v = 0; v < folded.uvs.size(); ++v)
+        folded.uvs[v] = glm::vec2(0.1f + 0.3f * float(v % 3), 0.2f + 0.3f * float(v % 2));
     const Mesh rebuilt = ensureAtlas(folded, "auto", opt);
     EXPECT_EQ(measureAtlas(rebuilt, 512).overlaps, 0u);
     EXPECT_THROW(ensureAtlas(folded, "file", opt), Error);
@@ -389,21 +380,26 @@ TEST(AtlasReport, DISABLED_DataMeshes) {
     std::string names = "cow head elephant ChineseDragon-10kv armadillo bunny00";
     if (const char* e = std::getenv("TSIS_ATLAS_MESHES")) names = e;
     std::istringstream list(names);
-    std::printf("| mesh | triangles | charts | coverage | r_wstd | r p1–p99 | r min–max | flips | overlaps | seconds |\n");
+    std::printf(
+        "| mesh | triangles | charts | coverage | r_wstd | r p1–p99 | r min–max | flips | overlaps "
+        "| seconds |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     for (std::string name; list >> name;) {
         const std::string path = test::cgalMesh(name);
         if (path.empty()) GTEST_SKIP() << test::kCgalTarball << " is not installed";
         const Mesh mesh = test::readOFF(path);
         AtlasOptions opt;
-        if (const char* e = std::getenv("TSIS_ATLAS_MAXDIST")) opt.maxChartDistortion = std::atof(e);
+        if (const char* e = std::getenv("TSIS_ATLAS_MAXDIST"))
+            opt.maxChartDistortion = std::atof(e);
         if (const char* e = std::getenv("TSIS_ATLAS_TPP")) opt.trianglesPerProxy = std::atoi(e);
         AtlasStats st;
         const Mesh out = buildAtlas(mesh, opt, &st);
         const AtlasStats fine = measureAtlas(out, 2048);
-        std::printf("| %s | %zu | %d | %.3f | %.4f | %.3f–%.3f | %.3f–%.3f | %zu | %zu (%zu at 2048²) | %.2f |\n",
-                    name.c_str(), mesh.triangles.size(), st.charts, st.coverage, st.rWstd, st.rP01, st.rP99,
-                    st.rMin, st.rMax, st.flipped, st.overlaps, fine.overlaps, st.seconds);
+        std::printf(
+            "| %s | %zu | %d | %.3f | %.4f | %.3f–%.3f | %.3f–%.3f | %zu | %zu (%zu at 2048²) | "
+            "%.2f |\n",
+            name.c_str(), mesh.triangles.size(), st.charts, st.coverage, st.rWstd, st.rP01, st.rP99,
+            st.rMin, st.rMax, st.flipped, st.overlaps, fine.overlaps, st.seconds);
         std::fflush(stdout);
         if (const char* dir = std::getenv("TSIS_ATLAS_PNG_DIR"))
             writeAtlasPng(std::string(dir) + "/" + name + ".png", out, 1024);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cl/cl_runtime.h"
+#include "util/scoped_env_test_util.h"
 
 namespace tsis::test {
 
@@ -42,30 +43,6 @@ class ClTest : public ::testing::Test {
         if (count > 0) rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, count * sizeof(T), v.data());
         return v;
     }
-};
-
-// Sets an environment variable for one scope and restores it afterwards.
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        if (value)
-            ::setenv(name, value, 1);
-        else
-            ::unsetenv(name);
-    }
-    ~ScopedEnv() {
-        if (old_)
-            ::setenv(name_.c_str(), old_->c_str(), 1);
-        else
-            ::unsetenv(name_.c_str());
-    }
-    ScopedEnv(const ScopedEnv&) = delete;
-    ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-  private:
-    std::string name_;
-    std::optional<std::string> old_;
 };
 
 }  // namespace tsis::test

@@ -8,9 +8,12 @@
 
 #include "mesh/mesh_test_util.h"
 #include "mesh/repair.h"
+#include "util/scoped_env_test_util.h"
 
 namespace tsis {
 namespace {
+
+using test::ScopedEnv;
 
 using test::errorOf;
 using ::testing::HasSubstr;
@@ -21,26 +24,6 @@ const char* kTriPLY =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
     "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
     "0 0 0\n3 0 0\n0 3 0\n3 0 1 2\n";
-
-// Sets an environment variable for one scope.
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const std::string& value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old, had_ = true;
-        ::setenv(name, value.c_str(), 1);
-    }
-    ~ScopedEnv() {
-        if (had_)
-            ::setenv(name_, old_.c_str(), 1);
-        else
-            ::unsetenv(name_);
-    }
-
-  private:
-    const char* name_;
-    std::string old_;
-    bool had_ = false;
-};
 
 TEST(LoadMesh, ByExtensionAnyCase) {
     test::ScratchDir dir;

@@ -8,28 +8,12 @@
 #include <sstream>
 #include <thread>
 
+#include "util/scoped_env_test_util.h"
+
 namespace tsis {
 namespace {
 
-// Sets an environment variable for one scope.
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old, had_ = true;
-        ::setenv(name, value, 1);
-    }
-    ~ScopedEnv() {
-        if (had_)
-            ::setenv(name_, old_.c_str(), 1);
-        else
-            ::unsetenv(name_);
-    }
-
-  private:
-    const char* name_;
-    std::string old_;
-    bool had_ = false;
-};
+using test::ScopedEnv;
 
 TEST(Progress, LinesWhenStderrIsNotATerminal) {
     ScopedEnv interval("TSIS_PROGRESS_INTERVAL", "0.05");
