@@ -71,17 +71,6 @@ double relativeRmse(const FrameResult& frame, const ReferenceImage& ref) {
         .metrics.relRmse;
 }
 
-double statValue(const FrameStats& stats, const std::string& key) {
-    for (const auto& [k, v] : stats.values)
-        if (k == key) {
-            const std::string text = v.dump(0);
-            char* end = nullptr;
-            const double d = std::strtod(text.c_str(), &end);
-            return end != text.c_str() ? d : std::nan("");
-        }
-    return std::nan("");
-}
-
 double loadAverage() {
     std::ifstream in("/proc/loadavg");
     double l = -1;

@@ -8,7 +8,7 @@
 
 #include "render/render_options.h"
 #include "render/renderer.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis::bench {
 
@@ -42,8 +42,6 @@ struct ReferenceImage {
 ReferenceImage renderReference(Renderer& renderer, BenchCase c);
 double relativeRmse(const FrameResult& frame, const ReferenceImage& ref);
 
-// A numeric value of FrameStats::values ("covered_pixels", "rd_evaluations"); NaN when absent.
-double statValue(const FrameStats& stats, const std::string& key);
 
 // The 1-minute load average (/proc/loadavg), and a one-line description of the
 // machine: CPU model, cores, OpenCL device.

@@ -22,8 +22,10 @@
 namespace tsis::bench {
 namespace {
 
-const char* kTransfers[] = {"gl_to_cl_atlas",      "gl_to_cl_points", "gl_to_cl_gbuffer",
-                            "gl_to_cl_light_maps", "lss_upload",      "cl_to_gl"};
+const char* kTransfers[] = {"gl_to_cl_flux_atlas",   "gl_to_cl_position_atlas",
+                            "gl_to_cl_normal_atlas", "gl_to_cl_points",
+                            "gl_to_cl_gbuffer",      "gl_to_cl_light_maps",
+                            "lss_upload",            "read_radiosity"};
 
 long long stageBytes(const FrameStats& f, const std::string& name) {
     for (const FrameStats::Stage& s : f.stages)
@@ -181,7 +183,7 @@ int run(const BenchArgs& a) {
     text += "The position atlas (16 MB) crosses only when the mesh or the atlas resolution "
             "changes (the warm-up frame), not in these frames; the camera points cross packed "
             "(covered pixels only, " +
-            fmt(statValue(f.stats, "covered_pixels"), 0) +
+            fmt(f.stats.number("covered_pixels"), 0) +
             " here), and so does the radiosity back.\n\n";
     text += "## The flux atlas in other encodings (" + std::to_string(res) + "², " +
             std::to_string(nonEmpty) + " non-empty texels = " +

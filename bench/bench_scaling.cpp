@@ -13,7 +13,7 @@
 namespace tsis::bench {
 namespace {
 
-const std::vector<std::string> kPre = {"gl_flux_atlas", "gl_to_cl_atlas", "cdf", "sample"};
+const std::vector<std::string> kPre = {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "cdf", "sample"};
 
 int run(const BenchArgs& a) {
     std::vector<std::string> meshes = {"head",      "elephant", "cow",       "fandisk",  "lion-head",
@@ -51,7 +51,7 @@ int run(const BenchArgs& a) {
         Summary pre = summarize(stageSums(fs, kPre));
         Summary cdf = summarize(stageSums(fs, {"cdf"}));
         Summary frame = summarize(stageSums(fs, {"total"}));
-        const double covered = statValue(fs.back(), "covered_pixels");
+        const double covered = fs.back().number("covered_pixels");
         const double nsPerEval = 1e6 * g.median / (covered * c.options.samples);
         const std::string tris = std::to_string(c.scene.mesh.triangles.size());
         csv.add({sweep, mesh, tris, std::to_string(c.options.width),

@@ -1,7 +1,7 @@
 // Tables 4.1–4.4 of the thesis on this machine: preprocessing ms and
 // integration fps against N for each model, for tsis, lss and hybrid.
 // One Renderer for everything; medians of repeated frames with min/max.
-//   tsis:   preprocessing = gl_flux_atlas + gl_to_cl_atlas + cdf + sample; integration = gather
+//   tsis:   preprocessing = gl_flux_atlas + gl_to_cl_flux_atlas + gl_to_cl_position_atlas + cdf + sample; integration = gather
 //   hybrid: the same for its global part + gl_to_cl_light_maps; integration = global_gather + local_ltsm
 //   lss:    preprocessing = gl_gbuffer + gl_to_cl_gbuffer + lss_prepare + lss_upload;
 //           integration = lss_gather (N = samples per pixel)
@@ -21,10 +21,10 @@ struct MethodStages {
 };
 
 const MethodStages kMethods[] = {
-    {"tsis", {"gl_flux_atlas", "gl_to_cl_atlas", "cdf", "sample"}, {"gather"}},
+    {"tsis", {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "cdf", "sample"}, {"gather"}},
     {"lss", {"gl_gbuffer", "gl_to_cl_gbuffer", "lss_prepare", "lss_upload"}, {"lss_gather"}},
     {"hybrid",
-     {"gl_flux_atlas", "gl_to_cl_atlas", "gl_to_cl_light_maps", "global_cdf", "global_sample"},
+     {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "gl_to_cl_light_maps", "global_cdf", "global_sample"},
      {"global_gather", "local_ltsm"}},
 };
 
@@ -73,7 +73,7 @@ int run(const BenchArgs& a) {
                 Summary total = summarize(stageSums(fs, {"total"}));
                 const std::string tris = std::to_string(c.scene.mesh.triangles.size());
                 triangles[mesh] = tris;
-                const double covered = statValue(fs.back(), "covered_pixels");
+                const double covered = fs.back().number("covered_pixels");
                 csv.add({m.method, mesh, tris, fmt(covered, 0), std::to_string(n), fmt(pre.median),
                          fmt(pre.min), fmt(pre.max), fmt(integ.median), fmt(integ.min),
                          fmt(integ.max), fmt(1000.0 / integ.median, 1), fmt(total.median, 1),

@@ -33,7 +33,7 @@ extra=${EXTRA:-}
 # "ms" but the renderer's (upload, GL passes, hand-offs, composite) and "total".
 method_ms() {
     awk '/"ms": *\{/ { on = 1; next } on && /\}/ { on = 0 }
-         on { gsub(/[",:]/, " "); if ($1 !~ /^(upload_mesh|gl_.*|cl_to_gl|composite|total)$/) t += $2 }
+         on { gsub(/[",:]/, " "); if ($1 !~ /^(upload_mesh|gl_.*|read_radiosity|composite|total)$/) t += $2 }
          END { print t + 0 }' "$1"
 }
 

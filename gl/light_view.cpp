@@ -1,52 +1,18 @@
 #include "gl/light_view.h"
 
-#include <cmath>
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <string>
-
+#include "scene/projection.h"
 #include "util/error.h"
 
 namespace tsis {
 
-namespace {
-
-glm::vec3 anyPerpendicularUp(const glm::vec3& dir) {
-    return std::abs(dir.y) < 0.99f * glm::length(dir) ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-}
-
-}  // namespace
-
 LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
     LightView lv;
     lv.light = light;
-    const glm::vec3 centre(0.0f);
-    const float margin = 1.05f;
-    if (light.type == Light::Type::Point) {
-        float d = glm::length(light.vec - centre);
-        if (!(d > radius * margin))
-            fail("point light at (", light.vec.x, ",", light.vec.y, ",", light.vec.z,
-                 ") is inside the object's bounding sphere (radius ", radius * margin,
-                 " mm); place it farther out");
-        float half = std::asin(std::min(1.0f, radius * margin / d));
-        glm::mat4 view = glm::lookAt(light.vec, centre, anyPerpendicularUp(centre - light.vec));
-        float nearP = std::max(d - radius * margin, d * 1e-3f);
-        glm::mat4 proj = glm::perspective(2.0f * half, 1.0f, nearP, d + radius * margin);
-        lv.viewProj = proj * view;
-        lv.tanHalf = std::tan(half);
-        lv.texelMm = 2.0f * d * lv.tanHalf / static_cast<float>(resolution);
-    } else {
-        float len = glm::length(light.vec);
-        if (!(len > 0)) fail("directional light has a zero direction");
-        glm::vec3 dir = light.vec / len;
-        float r = radius * margin;
-        glm::vec3 eye = centre - dir * (2.0f * r);
-        glm::mat4 view = glm::lookAt(eye, centre, anyPerpendicularUp(dir));
-        glm::mat4 proj = glm::ortho(-r, r, -r, r, r, 3.0f * r);
-        lv.viewProj = proj * view;
-        lv.texelMm = 2.0f * r / static_cast<float>(resolution);
-        lv.texelAreaMm = lv.texelMm * lv.texelMm;
-    }
+    const LightProjection lp = lightProjection(light, radius, resolution);
+    lv.viewProj = lp.viewProj;
+    lv.tanHalf = lp.tanHalf;
+    lv.texelAreaMm = lp.texelAreaMm;
+    lv.texelMm = lp.texelMm;
     lv.target = std::make_unique<RenderTarget>(
         resolution, resolution,
         maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);

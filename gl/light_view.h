@@ -8,7 +8,7 @@
 
 #include "gl/render_target.h"
 #include "gl/shader.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis {
 
@@ -21,7 +21,7 @@ struct LightView {
     std::unique_ptr<RenderTarget> target;  // flux, position; depth = shadow map
 };
 
-// Projections that fit the object's bounding sphere (centre 0, radius R).
+// The light's projection (scene/projection.h) with its render target.
 // maps: the target also has the flux and position maps (the light-view
 // methods read them); without, it is depth only. Throws tsis::Error for a
 // point light inside that sphere or a zero direction.

@@ -12,7 +12,7 @@
 #include "gl/light_view.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis {
 

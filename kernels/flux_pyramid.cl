@@ -38,7 +38,7 @@
 #include "lanes.h"
 
 static inline float tsis_node_weight(const TsisFluxNode n, const int by_area) {
-    return by_area ? n.area : TSIS_LUMA_R * n.fr + TSIS_LUMA_G * n.fg + TSIS_LUMA_B * n.fb;
+    return by_area ? n.area : TSIS_LUMINANCE(n.fr, n.fg, n.fb);
 }
 
 /* The nodes [begin, end) of one depth, the deeper ones already made. A leaf
@@ -79,7 +79,7 @@ kernel void tsis_flux_tree_update(const __global float4* flux, const __global fl
         n.fb += c[k].fb;
         n.area += c[k].area;
     }
-    const int by_area = !(TSIS_LUMA_R * n.fr + TSIS_LUMA_G * n.fg + TSIS_LUMA_B * n.fb > 0.0f);
+    const int by_area = !(TSIS_LUMINANCE(n.fr, n.fg, n.fb) > 0.0f);
     float3 p = (float3)(0.0f);
     float wsum = 0.0f;
     for (int k = 0; k < t.y; ++k) {

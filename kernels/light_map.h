@@ -58,7 +58,7 @@ static inline float3 tsis_light_bilinear(const TsisLightMapInfo* l, const __glob
         const int t = tsis_light_texel(l, fx + (float)(k & 1) + 0.5f, fy + (float)(k >> 1) + 0.5f);
         if (t < 0 || w <= 0.0f) continue;
         const float4 f = flux[t];
-        const float y_lum = w * (TSIS_LUMA_R * f.x + TSIS_LUMA_G * f.y + TSIS_LUMA_B * f.z);
+        const float y_lum = w * TSIS_LUMINANCE(f.x, f.y, f.z);
         phi += w * f.xyz;
         p += (float4)(y_lum * position[t].xyz, y_lum);
     }

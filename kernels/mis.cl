@@ -118,7 +118,7 @@ kernel void tsis_mis_prepare(const __global TsisSample* samples, const TsisMisIn
         e += irr.xyz;
         seen[m * mi.n_tex + i] = (float4)(tc, irr.w, 0.0f);
     }
-    tex_density[i] = mi.tex_scale * (TSIS_LUMA_R * e.x + TSIS_LUMA_G * e.y + TSIS_LUMA_B * e.z);
+    tex_density[i] = mi.tex_scale * TSIS_LUMINANCE(e.x, e.y, e.z);
 }
 
 /* One output point per work-item. */
@@ -210,7 +210,7 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
                 pd += mis_q(q, mi, length(tc - o[m].xy) * o[m].z, zt[m].x, zt[m].y) * o[m].z *
                       o[m].z * irr.w;
             }
-            const float pt = mi.tex_scale * (TSIS_LUMA_R * e.x + TSIS_LUMA_G * e.y + TSIS_LUMA_B * e.z);
+            const float pt = mi.tex_scale * TSIS_LUMINANCE(e.x, e.y, e.z);
             pd *= (float)mi.n_dist;
             const float c = pt + pd > 0.0f ? pt / (pt + pd) : 1.0f;
             const float3 d = xo - x;

@@ -10,7 +10,7 @@ kernel void tsis_luminance(const __global float4* flux, const int count, __globa
     const int i = get_global_id(0);
     if (i >= count) return;
     const float4 f = flux[i];
-    const float y = TSIS_LUMA_R * f.x + TSIS_LUMA_G * f.y + TSIS_LUMA_B * f.z;
+    const float y = TSIS_LUMINANCE(f.x, f.y, f.z);
     level0[i] = fmax(y, 0.0f); /* fmax(NaN, 0) = 0 */
 }
 

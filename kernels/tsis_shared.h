@@ -58,6 +58,7 @@ typedef struct {
 #define TSIS_LUMA_R 0.2126f
 #define TSIS_LUMA_G 0.7152f
 #define TSIS_LUMA_B 0.0722f
+#define TSIS_LUMINANCE(r, g, b) (TSIS_LUMA_R * (r) + TSIS_LUMA_G * (g) + TSIS_LUMA_B * (b))
 
 /* One tap of tsm's fixed filter pattern, in units of the filter radius R:
  * offset (x, y), the footprint it stands for (area / R^2) and its ring (the

@@ -19,7 +19,7 @@ kernel void tsis_tsm_level0(const __global float4* flux, const __global float4* 
     const int i = get_global_id(0);
     if (i >= count) return;
     const float4 f = flux[i];
-    const float y = TSIS_LUMA_R * f.x + TSIS_LUMA_G * f.y + TSIS_LUMA_B * f.z;
+    const float y = TSIS_LUMINANCE(f.x, f.y, f.z);
     F[i] = (float4)(f.xyz, 0.0f);
     P[i] = (float4)(y * position[i].xyz, y);
 }

@@ -28,7 +28,7 @@ TEST(Cli, RendersPngAovsAndStats) {
     std::string stats = readFile(dir.file("s.json"));
     for (const char* key :
          {"\"gl_flux_atlas\"", "\"gl_geometry_atlas\"", "\"gl_light_view\"", "\"gl_gbuffer\"",
-          "\"gl_to_cl_atlas\"", "\"cl_to_gl\"", "\"cdf\"", "\"sample\"", "\"gather\"",
+          "\"gl_to_cl_flux_atlas\"", "\"read_radiosity\"", "\"cdf\"", "\"sample\"", "\"gather\"",
           "\"composite\"", "\"total\"", "\"rd_evaluations\"", "\"device\"", "\"samples\""})
         EXPECT_NE(stats.find(key), std::string::npos) << key;
     EXPECT_EQ(fileCount(dir.path()), 3u) << "no temporary files left";

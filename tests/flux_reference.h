@@ -6,7 +6,7 @@
 
 #include "mesh/mesh.h"
 #include "physics/fresnel.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis::test {
 

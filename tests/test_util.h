@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis::test {
 

@@ -60,16 +60,7 @@ double pointSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 // Smallest distance in texels between UV border edges of different charts
 // (charts: triangles connected through shared vertices).
 double minChartGap(const Mesh& m, int resolution) {
-    std::vector<uint32_t> parent(m.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const auto& t : m.triangles) {
-        const uint32_t a = find(t.x), b = find(t.y), c = find(t.z), s = std::min({a, b, c});
-        parent[a] = parent[b] = parent[c] = s;
-    }
+    UnionFind charts = atlas::uvCharts(m);
     std::map<std::pair<uint32_t, uint32_t>, int> count;
     for (const auto& t : m.triangles)
         for (int e = 0; e < 3; ++e)
@@ -82,7 +73,7 @@ double minChartGap(const Mesh& m, int resolution) {
     for (const auto& [e, c] : count)
         if (c == 1)
             segs.push_back({glm::dvec2(m.uvs[e.first]) * double(resolution),
-                            glm::dvec2(m.uvs[e.second]) * double(resolution), find(e.first)});
+                            glm::dvec2(m.uvs[e.second]) * double(resolution), charts.find(e.first)});
     // Grid of 4-texel cells; only neighbouring cells can hold pairs closer than 4.
     std::map<std::pair<int, int>, std::vector<size_t>> grid;
     for (size_t i = 0; i < segs.size(); ++i) {

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "util/cache_dir.h"
 #include "util/output_file.h"
 #include "util/timer.h"
 
@@ -56,14 +57,10 @@ void append(std::string& out, const void* p, size_t n) {
 
 }  // namespace
 
-std::optional<std::filesystem::path> cacheDirectory() {
-    if (const char* d = std::getenv("TSIS_CACHE_DIR"); d && *d)
-        return std::filesystem::path(d) / "atlas";
-    if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
-        return std::filesystem::path(d) / "tsis" / "atlas";
-    if (const char* d = std::getenv("HOME"); d && *d)
-        return std::filesystem::path(d) / ".cache" / "tsis" / "atlas";
-    return std::nullopt;
+std::optional<std::filesystem::path> atlasCacheDirectory() {
+    const std::string root = tsis::cacheDirectory();
+    if (root.empty()) return std::nullopt;
+    return std::filesystem::path(root) / "atlas";
 }
 
 std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt) {
@@ -208,7 +205,7 @@ bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas,
 
 Mesh buildAtlasCached(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats) {
     const Timer timer;
-    const auto dir = opt.useCache ? cacheDirectory() : std::nullopt;
+    const auto dir = opt.useCache ? atlasCacheDirectory() : std::nullopt;
     std::filesystem::path file;
     if (dir) {
         file = *dir / (cacheKey(mesh, opt) + ".atlas");

@@ -24,7 +24,8 @@ namespace tsis::atlas {
 // Bump when the builder's output changes for the same input.
 constexpr int kAtlasVersion = 4;
 
-std::optional<std::filesystem::path> cacheDirectory();
+// Under cacheDirectory() (util/cache_dir.h): "atlas".
+std::optional<std::filesystem::path> atlasCacheDirectory();
 std::string cacheKey(const Mesh& mesh, const AtlasOptions& opt);
 
 std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh,

@@ -11,10 +11,15 @@
 #include <vector>
 
 #include "mesh/mesh.h"
+#include "util/union_find.h"
 
 namespace tsis::atlas {
 
 using Tri = std::array<int, 3>;
+
+// The mesh's UV charts: its vertices joined when a triangle shares them (a
+// chart's id is its root, the smallest vertex index in it).
+UnionFind uvCharts(const Mesh& mesh);
 
 // Face adjacency of a triangle soup. Edge e of face f runs from corner e to
 // corner (e+1)%3. Two faces are neighbours across an edge only when exactly two

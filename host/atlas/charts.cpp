@@ -47,20 +47,6 @@ double signedArea2(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
-
 // Exact sign of the 2D orientation determinant: a double evaluation with an
 // error filter, then quad precision, which holds the products of coordinate
 // differences of floats exactly.
@@ -680,23 +666,15 @@ namespace {
 // The triangles `tris` of chart `c` as charts, one per piece connected through
 // shared vertices (same UVs, local vertices renumbered).
 void appendPieces(const Chart& c, const std::vector<uint32_t>& tris, std::vector<Chart>& out) {
-    std::vector<uint32_t> parent(c.uv.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
+    UnionFind sets(c.uv.size());
     for (uint32_t t : tris) {
         const Tri& tri = c.mesh.triangles[t];
-        for (int k = 1; k < 3; ++k) {
-            const uint32_t a = find(uint32_t(tri[0])), b = find(uint32_t(tri[k]));
-            parent[std::max(a, b)] = std::min(a, b);
-        }
+        for (int k = 1; k < 3; ++k) sets.unite(uint32_t(tri[0]), uint32_t(tri[k]));
     }
     std::unordered_map<uint32_t, size_t> pieceOf;  // root -> index in out
     std::vector<int> local(c.uv.size(), -1);
     for (uint32_t t : tris) {
-        const uint32_t root = find(uint32_t(c.mesh.triangles[t][0]));
+        const uint32_t root = sets.find(uint32_t(c.mesh.triangles[t][0]));
         auto [it, added] = pieceOf.emplace(root, out.size());
         if (added) out.emplace_back();
         Chart& p = out[it->second];
@@ -756,6 +734,15 @@ void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect) {
         for (Chart& p : pieces) todo.push_back(std::move(p));
     }
     charts = std::move(done);
+}
+
+UnionFind uvCharts(const Mesh& mesh) {
+    UnionFind sets(mesh.positions.size());
+    for (const glm::uvec3& t : mesh.triangles) {
+        sets.unite(t.x, t.y);
+        sets.unite(t.x, t.z);
+    }
+    return sets;
 }
 
 }  // namespace tsis::atlas

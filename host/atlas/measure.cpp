@@ -62,22 +62,12 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
 
     // UV charts: triangles connected through shared vertices; a chart's
     // orientation is the sign of its total signed UV area.
-    std::vector<uint32_t> parent(mesh.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const glm::uvec3& tr : mesh.triangles) {
-        const uint32_t a = find(tr.x), b = find(tr.y), c = find(tr.z);
-        const uint32_t m = std::min({a, b, c});
-        parent[a] = parent[b] = parent[c] = m;
-    }
+    UnionFind charts = atlas::uvCharts(mesh);
     std::vector<double> chartSign(mesh.positions.size(), 0);
     std::vector<char> isRoot(mesh.positions.size(), 0);
     for (size_t t = 0; t < n; ++t) {
         if (a3[t] <= tiny3) continue;
-        const uint32_t r = find(mesh.triangles[t].x);
+        const uint32_t r = charts.find(mesh.triangles[t].x);
         chartSign[r] += auv[t];
         isRoot[r] = 1;
     }
@@ -88,7 +78,7 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
     double sum3 = 0, sumUV = 0;
     for (size_t t = 0; t < n; ++t) {
         if (a3[t] <= tiny3) continue;
-        const double s = chartSign[find(mesh.triangles[t].x)] < 0 ? -1 : 1;
+        const double s = chartSign[charts.find(mesh.triangles[t].x)] < 0 ? -1 : 1;
         if (!(auv[t] * s > 0)) {
             ++st.flipped;
             continue;

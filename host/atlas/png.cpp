@@ -1,6 +1,4 @@
 // The atlas picture of `tsis atlas -o FILE.png`.
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,6 +7,7 @@
 
 #include "atlas/atlas.h"
 #include "atlas/chart.h"
+#include "image/image_io.h"
 #include "util/error.h"
 #include "util/output_file.h"
 
@@ -42,16 +41,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
     const size_t n = mesh.triangles.size();
 
     // Chart id per triangle (connected through shared vertices) and r.
-    std::vector<uint32_t> parent(mesh.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const glm::uvec3& t : mesh.triangles) {
-        const uint32_t a = find(t.x), b = find(t.y), c = find(t.z), m = std::min({a, b, c});
-        parent[a] = parent[b] = parent[c] = m;
-    }
+    UnionFind charts = atlas::uvCharts(mesh);
     std::vector<double> ratio(n, 0);
     double s3 = 0, suv = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -73,7 +63,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
         for (int i = 0; i < 3; ++i) p[i] = uint8_t(std::lround(std::clamp(c[i], 0.0f, 1.0f) * 255));
     };
     atlas::rasterTriangles(mesh, resolution, [&](size_t t, int x, int y) {
-        const uint32_t chart = find(mesh.triangles[t].x);
+        const uint32_t chart = charts.find(mesh.triangles[t].x);
         const float h = float((chart * 2654435761u) % 1000u) / 1000.0f;
         put(x, y, hsv(h, 0.55f, 0.95f));
         const double r = ratio[t] / k;
@@ -81,12 +71,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
     });
 
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        auto out = OIIO::ImageOutput::create(tmp.string());
-        if (!out) fail(path, ": cannot write images of this type (", OIIO::geterror(), ")");
-        const OIIO::ImageSpec spec(W, H, 3, OIIO::TypeDesc::UINT8);
-        if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) ||
-            !out->close())
-            fail(path, ": ", out->geterror());
+        writeImage8(tmp.string(), W, H, 3, pixels);
     });
 }
 

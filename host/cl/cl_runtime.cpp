@@ -107,6 +107,7 @@ ClRuntime::ClRuntime(const std::string& selector) {
     context_ = cl::Context(device_);
     queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
     cacheDir_ = ProgramCache::defaultDir();
+    sources_ = embeddedKernels();
 }
 
 std::vector<std::string> ClRuntime::availableDevices() {
@@ -137,13 +138,18 @@ cl::Kernel ClRuntime::kernel(const std::string& file, const std::string& name,
     }
 }
 
+void ClRuntime::addKernelFiles(const std::vector<EmbeddedFile>& files) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    sources_.insert(sources_.end(), files.begin(), files.end());
+}
+
 ClRuntime::ProgramStats ClRuntime::programStats() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return stats_;
 }
 
 cl::Program ClRuntime::build(const std::string& file, const std::string& options) {
-    const std::string source = embeddedSource(embeddedKernels(), file);
+    const std::string source = embeddedSource(sources_, file);
     const cl::Platform platform(device_.getInfo<CL_DEVICE_PLATFORM>());
     const std::string platformId =
         platform.getInfo<CL_PLATFORM_NAME>() + "|" + platform.getInfo<CL_PLATFORM_VERSION>();

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "util/embedded.h"
+
 namespace tsis {
 
 class ClRuntime {
@@ -35,6 +37,10 @@ class ClRuntime {
     cl::Kernel kernel(const std::string& file, const std::string& name,
                       const std::string& options = "");
 
+    // More files program() may build from (a benchmark's own kernels), besides
+    // the embedded kernels/ files.
+    void addKernelFiles(const std::vector<EmbeddedFile>& files);
+
     // Where program() got its programs from (for tests and --stats).
     struct ProgramStats {
         int compiled = 0;       // from source (cache miss or unusable cache file)
@@ -56,6 +62,7 @@ class ClRuntime {
     cl::CommandQueue queue_;
     std::string name_;
     std::string cacheDir_;  // read once, at construction
+    std::vector<EmbeddedFile> sources_;  // embeddedKernels() + addKernelFiles()
 
     mutable std::mutex mutex_;
     std::map<std::pair<std::string, std::string>, cl::Program> programs_;  // nodes never move

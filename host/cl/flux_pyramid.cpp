@@ -14,7 +14,6 @@
 namespace tsis {
 namespace {
 
-constexpr size_t kLocal = 64;       // build kernels
 constexpr size_t kLocalGather = 4;  // as the lane gather (cl/gather.cpp)
 
 }  // namespace
@@ -112,7 +111,7 @@ void FluxPyramid::build(const cl::Buffer& flux, const cl::Buffer& position,
         const int begin = depthBegin_[d], end = depthBegin_[d + 1];
         setKernelArgs(update_, flux, position, normal, topologyBuffer_, begin, end, nodes_);
         buildEvents_.emplace_back();
-        enqueue1D(q, update_, size_t(end - begin), kLocal, &buildEvents_.back());
+        enqueue1D(q, update_, size_t(end - begin), kLocalSize, &buildEvents_.back());
     }
 }
 

@@ -137,7 +137,7 @@ TEST_F(FluxPyramidTest, NodesSumTheirTexelsAndBoundThemInRadius) {
             const cl_float4& f = atlas.flux[size_t(t)];
             flux += glm::dvec3(f.s[0], f.s[1], f.s[2]);
             area += atlas.normal[size_t(t)].s[3];
-            const double y709 = TSIS_LUMA_R * f.s[0] + TSIS_LUMA_G * f.s[1] + TSIS_LUMA_B * f.s[2];
+            const double y709 = TSIS_LUMINANCE(f.s[0], f.s[1], f.s[2]);
             weighted += y709 * atlas.at(size_t(t));
             weight += y709;
         }

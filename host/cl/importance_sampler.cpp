@@ -11,7 +11,6 @@ namespace {
 
 // One fixed work-group size for every launch: PoCL compiles a kernel again for
 // each new local size, and the global sizes here vary with res and n.
-constexpr size_t kLocal = 64;
 
 size_t bufferBytes(const cl::Buffer& b) {
     return b.getInfo<CL_MEM_SIZE>();
@@ -64,13 +63,13 @@ void ImportanceSampler::buildPyramid(const cl::Buffer& flux, int res) {
 
     const int count = res * res;
     setKernelArgs(luminance_, flux, count, pyramid_);
-    enqueue1D(q, luminance_, size_t(count), kLocal, &pyramidEvents_[0]);
+    enqueue1D(q, luminance_, size_t(count), kLocalSize, &pyramidEvents_[0]);
     // In-order queue: each level sees the one below it finished.
     for (int k = 1; k <= levels; ++k) {
         const int dstRes = res >> k;
         setKernelArgs(reduce_, pyramid_, static_cast<cl_int>(levelOffset(res, k - 1)),
                       static_cast<cl_int>(levelOffset(res, k)), dstRes);
-        enqueue1D(q, reduce_, size_t(dstRes) * dstRes, kLocal, &pyramidEvents_[k]);
+        enqueue1D(q, reduce_, size_t(dstRes) * dstRes, kLocalSize, &pyramidEvents_[k]);
     }
 }
 
@@ -100,7 +99,7 @@ void ImportanceSampler::drawWithOffset(const cl::Buffer& flux, const cl::Buffer&
     TSIS_CHECK_GE(bufferBytes(samples), size_t(n) * sizeof(TsisSample));
     setKernelArgs(draw_, pyramid_, flux, position,
                   static_cast<cl_int>(std::countr_zero(static_cast<unsigned>(res))), n, xi, samples);
-    enqueue1D(cl_.queue(), draw_, size_t(n), kLocal, &drawEvent_);
+    enqueue1D(cl_.queue(), draw_, size_t(n), kLocalSize, &drawEvent_);
 }
 
 double ImportanceSampler::lastPyramidMs() const {

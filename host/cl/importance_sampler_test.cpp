@@ -14,8 +14,7 @@ namespace {
 using test::ClTest;
 
 double luma(const cl_float4& f) {
-    return std::max(0.0, TSIS_LUMA_R * double(f.s[0]) + TSIS_LUMA_G * double(f.s[1]) +
-                             TSIS_LUMA_B * double(f.s[2]));
+    return std::max(0.0, TSIS_LUMINANCE(double(f.s[0]), double(f.s[1]), double(f.s[2])));
 }
 
 // Random flux; about `zeroFraction` of the texels black.

@@ -21,6 +21,10 @@ constexpr size_t roundUp(size_t n, size_t m) {
     return (n + m - 1) / m * m;
 }
 
+// The work-group size of the 1D kernels: one for all, because PoCL compiles
+// a kernel again for each new local size.
+constexpr size_t kLocalSize = 64;
+
 // k over n work-items in groups of `local`.
 inline void enqueue1D(cl::CommandQueue& q, const cl::Kernel& k, size_t n, size_t local,
                       cl::Event* event) {

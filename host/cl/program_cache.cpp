@@ -9,6 +9,9 @@
 #include <fstream>
 #include <random>
 
+#include "util/cache_dir.h"
+#include "util/hash.h"
+
 namespace tsis {
 namespace {
 
@@ -17,31 +20,11 @@ namespace {
 // before the driver sees the bytes.
 constexpr char kMagic[8] = {'T', 'S', 'I', 'S', 'C', 'L', 'B', '1'};
 
-uint64_t fnv1a(const unsigned char* p, size_t n, uint64_t h) {
-    for (size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
-constexpr uint64_t kFnvBasis = 0xcbf29ce484222325ull;
-
-std::string envOr(const char* name) {
-    const char* v = std::getenv(name);
-    return v ? std::string(v) : std::string();
-}
-
 }  // namespace
 
 ProgramCache::ProgramCache(std::string dir) : dir_(std::move(dir)) {}
 
-std::string ProgramCache::defaultDir() {
-    if (std::string d = envOr("TSIS_CACHE_DIR"); !d.empty()) return d;
-    if (std::string d = envOr("XDG_CACHE_HOME"); !d.empty()) return d + "/tsis";
-    if (std::string d = envOr("HOME"); !d.empty()) return d + "/.cache/tsis";
-    return {};
-}
+std::string ProgramCache::defaultDir() { return cacheDirectory(); }
 
 std::string ProgramCache::key(const std::vector<std::string_view>& parts) {
     // Two independent 64-bit FNV-1a streams: 128 bits against accidental collisions.

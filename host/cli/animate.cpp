@@ -93,7 +93,7 @@ int runAnimate(const std::vector<std::string>& argv) {
     if (!out) fail("tsis animate needs -o DIR");
     // Every option first, then every output, then the mesh, GL and CL.
     const int frames = args.getInt("frames", 30, 1, 100000);
-    const double size0 = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    const double size0 = sizeMmFromArgs(args);
     const double size1 = args.getDouble("size-to", size0, 1e-3, 1e5);
     const int videoFps = args.getInt("fps", 15, 1, 240);
     std::vector<std::string> materials;

@@ -200,7 +200,7 @@ int runAtlas(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
     auto meshSpec = args.value("mesh");
     if (!meshSpec) fail("tsis atlas needs --mesh");
-    const double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    const double size = sizeMmFromArgs(args);
     const std::string mode = atlasMode(args);
     AtlasOptions ao = atlasOptionsFromArgs(args);
     OutputSet outputs;

@@ -1,6 +1,7 @@
 #include "cli/scene_options.h"
 
 #include <cmath>
+#include <sstream>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -8,18 +9,32 @@
 #include "mesh/mesh_io.h"
 #include "mesh/uv_check.h"
 #include "physics/material.h"
-#include "render/profiles.h"
 #include "util/error.h"
 
 namespace tsis {
 
+namespace {
+
+// " (default V)" with V as the user types it.
+template <typename T>
+std::string byDefault(const T& value) {
+    std::ostringstream s;
+    s << " (default " << value << ")";
+    return s.str();
+}
+
+}  // namespace
+
 const std::vector<OptionSpec>& sceneOptionSpecs() {
+    const SceneDefaults sd;
+    const RenderOptions d;
     static const std::vector<OptionSpec> specs = {
         {"mesh", true, false,
-         "M  mesh file (.off/.obj/.ply/.stl), builtin:NAME or a data mesh name (default "
-         "builtin:default)"},
-        {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
-        {"material", true, false, "NAME  preset material (default skin1; see tsis materials)"},
+         "M  mesh file (.off/.obj/.ply/.stl/.gltf/.glb), builtin:NAME or a data mesh name" +
+             byDefault(sd.mesh)},
+        {"size-mm", true, false, "S  bounding-box diagonal in mm" + byDefault(sd.sizeMm)},
+        {"material", true, false,
+         "NAME  preset material (see tsis materials)" + byDefault(sd.material)},
         {"sigma-s", true, false, "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
         {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
         {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
@@ -29,47 +44,55 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
         {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
         {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
-        {"fov", true, false, "DEG  vertical field of view (default 35)"},
-        {"width", true, false, "W  image width (default 512)"},
-        {"height", true, false, "H  image height (default 512)"},
+        {"fov", true, false, "DEG  vertical field of view" + byDefault(sd.fovDegrees)},
+        {"width", true, false, "W  image width" + byDefault(d.width)},
+        {"height", true, false, "H  image height" + byDefault(d.height)},
         {"method", true, false,
-         "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see "
-         "README"},
-        {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
-        {"seed", true, false, "S  random seed (default 1)"},
+         "NAME  pyramid, tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see README" +
+             byDefault(d.method)},
+        {"samples", true, false,
+         "N  importance samples; lss: samples per pixel" + byDefault(d.samples)},
+        {"seed", true, false, "S  random seed" + byDefault(d.seed)},
         {"spacing", true, false,
          "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = 1/max "
          "σt', the smallest mean free path"},
         {"epsilon", true, false,
-         "E  hierarchical: use an octree node whole when its area/distance^2 < E (default 0.05)"},
+         "E  hierarchical: use an octree node whole when its area/distance^2 < E" +
+             byDefault(d.epsilon)},
         {"pyramid-epsilon", true, false,
-         "E  pyramid: use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E ≤ 1 "
-         "(default 0.05)"},
+         "E  pyramid: use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E ≤ 1" +
+             byDefault(d.pyramidEpsilon)},
         {"pyramid-stride", true, false,
          "S  pyramid: evaluate every S-th pixel and interpolate where the cell is one surface; "
-         "0 = from the mean free path and the pixel size (default), 1 = every pixel"},
+         "0 = from the mean free path and the pixel size, 1 = every pixel" +
+             byDefault(d.pyramidStride)},
         {"rp-bound", true, false,
-         "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B (default 0.1)"},
+         "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B" + byDefault(d.rpBound)},
         {"rp-k", true, false,
-         "K  hybrid: slope of the local/global weights around Rp, 1/mm (default 1.5)"},
+         "K  hybrid: slope of the local/global weights around Rp, 1/mm" + byDefault(d.rpK)},
         {"rd-part", true, false,
-         "P  tsis, ltsm: integrate Rd (full, default), Rd·Wl (local) or Rd·Wg (global)"},
-        {"ltsm-rings", true, false, "L  ltsm, hybrid: rings of the light-view filter (default 4)"},
+         "P  tsis, ltsm: integrate Rd (full), Rd·Wl (local) or Rd·Wg (global)" +
+             byDefault(rdPartName(d.rdPart))},
+        {"ltsm-rings", true, false,
+         "L  ltsm, hybrid: rings of the light-view filter" + byDefault(d.ltsmRings)},
         {"ltsm-per-ring", true, false,
-         "C  ltsm, hybrid: samples per ring (default 4; L×C+1 in all)"},
+         "C  ltsm, hybrid: samples per ring (L×C+1 in all)" + byDefault(d.ltsmPerRing)},
         {"mis-distance", true, false,
-         "M  mis: distance-driven samples per pixel and light (default 16)"},
+         "M  mis: distance-driven samples per pixel and light" + byDefault(d.misDistanceSamples)},
         {"tsm-radius", true, false,
-         "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding radius "
-         "(default 2)"},
-        {"atlas-res", true, false, "R  atlas resolution, a power of two (default 512)"},
+         "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding "
+         "radius" +
+             byDefault(d.tsmRadius)},
+        {"atlas-res", true, false,
+         "R  atlas resolution, a power of two" + byDefault(d.atlasResolution)},
         {"atlas", true, false,
-         "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
-         "build"},
+         "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or build" +
+             byDefault(sd.atlasMode)},
         {"light-res", true, false,
          "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 diffusion "
-         "lengths 1/max σtr across, else 1024 (default 0)"},
-        {"key", true, false, "K  tone-mapping key (default 0.18)"},
+         "lengths 1/max σtr across, else 1024" +
+             byDefault(d.lightResolution)},
+        {"key", true, false, "K  tone-mapping key" + byDefault(d.key)},
         {"no-specular", false, false, "turn off the Phong highlight"},
         {"no-reuse-lighting", false, false,
          "make the light maps and flux atlas every frame, even when the lighting did not change"},
@@ -78,8 +101,12 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
     return specs;
 }
 
+double sizeMmFromArgs(const Args& args) {
+    return args.getDouble("size-mm", SceneDefaults().sizeMm, 1e-3, 1e5);
+}
+
 Material materialFromArgs(const Args& args) {
-    Material m = presetMaterial(args.getString("material", "skin1"));
+    Material m = presetMaterial(args.getString("material", SceneDefaults().material));
     bool custom = false;
     if (auto v = args.value("sigma-s")) {
         m.sigmaSPrime = parseVec3("--sigma-s", *v);
@@ -143,7 +170,7 @@ Camera defaultCamera(double sizeMm, float fovYDegrees) {
 }
 
 std::string atlasMode(const Args& args) {
-    std::string mode = args.getString("atlas", "auto");
+    std::string mode = args.getString("atlas", SceneDefaults().atlasMode);
     if (mode != "auto" && mode != "file" && mode != "build")
         fail("--atlas '", mode, "': expected auto, file or build");
     return mode;
@@ -157,7 +184,7 @@ AtlasOptions atlasOptionsFromArgs(const Args& args) {
 
 Scene parseScene(const Args& args) {
     Scene scene;
-    const double size = args.getDouble("size-mm", 10.0, 1e-3, 1e5);
+    const double size = sizeMmFromArgs(args);
     scene.material = materialFromArgs(args);
     atlasMode(args);
     atlasOptionsFromArgs(args);
@@ -165,7 +192,7 @@ Scene parseScene(const Args& args) {
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     if (scene.lights.empty()) scene.lights = defaultLights(size);
-    float fov = static_cast<float>(args.getDouble("fov", 35.0, 1.0, 170.0));
+    float fov = static_cast<float>(args.getDouble("fov", SceneDefaults().fovDegrees, 1.0, 170.0));
     scene.camera = defaultCamera(size, fov);
     if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
     if (auto v = args.value("target")) scene.camera.target = glm::vec3(parseVec3("--target", *v));
@@ -178,8 +205,8 @@ Scene parseScene(const Args& args) {
 }
 
 void loadSceneMesh(Scene& scene, const Args& args) {
-    scene.mesh = loadMesh(args.getString("mesh", "builtin:default"));
-    normalizeMesh(scene.mesh, args.getDouble("size-mm", 10.0, 1e-3, 1e5));
+    scene.mesh = loadMesh(args.getString("mesh", SceneDefaults().mesh));
+    normalizeMesh(scene.mesh, sizeMmFromArgs(args));
     ensureNormals(scene.mesh);
     scene.mesh = ensureAtlas(scene.mesh, atlasMode(args), atlasOptionsFromArgs(args));
 }
@@ -193,11 +220,11 @@ Scene sceneFromArgs(const Args& args) {
 RenderOptions renderOptionsFromArgs(const Args& args) {
     RenderOptions o;
     o.method = args.getString("method", o.method);
-    o.width = args.getInt("width", 512, 1, 8192);
-    o.height = args.getInt("height", 512, 1, 8192);
-    o.samples = args.getInt("samples", 900, 1, 1 << 22);
-    o.seed = static_cast<uint32_t>(args.getInt("seed", 1, 0, 0xffffffffll >> 1));
-    o.spacingMm = args.getDouble("spacing", 0.0, 1e-4, 1e4);
+    o.width = args.getInt("width", o.width, 1, 8192);
+    o.height = args.getInt("height", o.height, 1, 8192);
+    o.samples = args.getInt("samples", o.samples, 1, 1 << 22);
+    o.seed = static_cast<uint32_t>(args.getInt("seed", o.seed, 0, 0xffffffffll >> 1));
+    o.spacingMm = args.getDouble("spacing", o.spacingMm, 1e-4, 1e4);
     o.epsilon = static_cast<float>(args.getDouble("epsilon", o.epsilon, 0.0, 1e3));
     o.pyramidEpsilon =
         static_cast<float>(args.getDouble("pyramid-epsilon", o.pyramidEpsilon, 0.0, 1.0));
@@ -211,15 +238,14 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     if (o.atlasResolution > 4096)
         fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
     o.lightResolution = args.getInt("light-res", o.lightResolution, 0, 8192);
-    o.rpBound = args.getDouble("rp-bound", 0.1, 1e-9, 1e9);
-    o.rpK = args.getDouble("rp-k", 1.5, 0.0, 1e6);
-    o.rdPart = args.getString("rd-part", "full");
-    parseRdPart(o.rdPart);
-    o.ltsmRings = args.getInt("ltsm-rings", 4, 0, 64);
-    o.ltsmPerRing = args.getInt("ltsm-per-ring", 4, 1, 256);
-    o.misDistanceSamples = args.getInt("mis-distance", 16, 0, 1 << 16);
-    o.tsmRadius = args.getDouble("tsm-radius", 2.0, 1e-3, 1e3);
-    o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
+    o.rpBound = args.getDouble("rp-bound", o.rpBound, 1e-9, 1e9);
+    o.rpK = args.getDouble("rp-k", o.rpK, 0.0, 1e6);
+    o.rdPart = parseRdPart(args.getString("rd-part", rdPartName(o.rdPart)));
+    o.ltsmRings = args.getInt("ltsm-rings", o.ltsmRings, 0, 64);
+    o.ltsmPerRing = args.getInt("ltsm-per-ring", o.ltsmPerRing, 1, 256);
+    o.misDistanceSamples = args.getInt("mis-distance", o.misDistanceSamples, 0, 1 << 16);
+    o.tsmRadius = args.getDouble("tsm-radius", o.tsmRadius, 1e-3, 1e3);
+    o.key = static_cast<float>(args.getDouble("key", o.key, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     o.reuseLighting = !args.flag("no-reuse-lighting");
     validateRenderOptions(o);

@@ -7,14 +7,27 @@
 #include "atlas/atlas.h"
 #include "cli/args.h"
 #include "render/render_options.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis {
+
+// What a scene is when its options are not given (RenderOptions holds the
+// render's own defaults); the help text prints them from here.
+struct SceneDefaults {
+    std::string mesh = "builtin:default";
+    double sizeMm = 10;
+    std::string material = "skin1";
+    float fovDegrees = 35;
+    std::string atlasMode = "auto";
+};
 
 // Options every command that renders shares (render, compare-style tools, bench).
 const std::vector<OptionSpec>& sceneOptionSpecs();
 
-// Material from --material (default marble) with --sigma-s/--sigma-a/--eta overrides.
+// --size-mm, checked.
+double sizeMmFromArgs(const Args& args);
+
+// Material from --material (SceneDefaults::material) with --sigma-s/--sigma-a/--eta overrides.
 Material materialFromArgs(const Args& args);
 
 // "point:X,Y,Z:R,G,B" or "dir:X,Y,Z:R,G,B".

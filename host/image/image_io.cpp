@@ -69,9 +69,5 @@ ImageF readImageF(const std::string& path) {
     return img;
 }
 
-float srgbEncode(float v) {
-    v = std::clamp(v, 0.0f, 1.0f);
-    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
 
 }  // namespace tsis

@@ -1,5 +1,5 @@
 // Image files through OpenImageIO. Buffers are top row first (row 0 = top,
-// DESIGN §2); callers holding GL read-backs (bottom row first) flip them.
+// DESIGN §2); callers holding GL read-backs (bottom row first) reorder them.
 // Writers write the file they are given; a run's outputs reach their names
 // through util/output_set.h (temporary, then all renamed together).
 #pragma once
@@ -31,17 +31,5 @@ void writeImage8(const std::string& path, int width, int height, int channels,
                  const std::vector<uint8_t>& pixels);
 
 ImageF readImageF(const std::string& path);
-
-// Reorders rows so that row 0 becomes the last (GL read-backs → images).
-template <typename T>
-void flipRows(std::vector<T>& data, int width, int height, int channels) {
-    size_t row = static_cast<size_t>(width) * channels;
-    for (int y = 0; y < height / 2; ++y)
-        for (size_t i = 0; i < row; ++i)
-            std::swap(data[y * row + i], data[(height - 1 - y) * row + i]);
-}
-
-// sRGB encoding of a linear value in [0, 1] (IEC 61966-2-1).
-float srgbEncode(float linear);
 
 }  // namespace tsis

@@ -15,7 +15,7 @@ namespace {
 constexpr int kMaxDepth = 32;
 
 float luminance(const glm::vec3& c) {
-    return TSIS_LUMA_R * c.x + TSIS_LUMA_G * c.y + TSIS_LUMA_B * c.z;
+    return TSIS_LUMINANCE(c.x, c.y, c.z);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "render/frame_stats.h"
 
+#include <cmath>
+
 namespace tsis {
 
 void FrameStats::addStage(const std::string& name, double ms, long long bytes) {
@@ -25,6 +27,12 @@ double FrameStats::stageMs(const std::string& name) const {
     for (const Stage& s : stages)
         if (s.name == name) return s.ms;
     return 0;
+}
+
+double FrameStats::number(const std::string& key) const {
+    for (const auto& [k, v] : values)
+        if (k == key) return v.isNumber() ? v.number() : std::nan("");
+    return std::nan("");
 }
 
 void FrameStats::totalRdEvaluations() {

@@ -22,6 +22,8 @@ struct FrameStats {
     void addStage(const std::string& name, double ms, long long bytes = -1);
     void set(const std::string& key, Json value);
     double stageMs(const std::string& name) const;  // 0 when absent
+    // A number set with set(); NaN when absent or not a number.
+    double number(const std::string& key) const;
     // A method made of parts (the hybrid's global_ and local_) reports each
     // part's "<prefix>rd_evaluations"; their sum becomes "rd_evaluations".
     void totalRdEvaluations();

@@ -12,36 +12,45 @@ HierarchicalMethod::HierarchicalMethod(ClRuntime& cl) : cl_(cl) {}
 void HierarchicalMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const double spacing = ctx.options->spacingMm > 0 ? ctx.options->spacingMm
                                                       : smallestMeanFreePath(ctx.scene->material);
-    graph.addPass({"hierarchical_build", {}, {"hierarchical_tree"}, [this, &ctx, spacing] {
-                       build(ctx, spacing);
-                   }});
+    const auto tree = graph.create<Marker>("hierarchical_tree");
     graph.addPass(
-        {"hierarchical_eval", {"hierarchical_tree", "points_cl"}, {"radiosity_cl"}, [this, &ctx] {
-             evaluate(ctx);
-         }});
+        "hierarchical_build", [&](FrameGraph::Builder& b) { b.write(tree); },
+        [this, &ctx, spacing](FrameGraph::Resources& res) { build(ctx, spacing, res.stats()); });
+    graph.addPass(
+        "hierarchical_eval",
+        [&](FrameGraph::Builder& b) {
+            b.read(tree);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            evaluate(ctx, points, ctx.radiosityBuffer(res, points.count), res.stats());
+        });
 }
 
-void HierarchicalMethod::build(FrameContext& ctx, double spacing) {
+void HierarchicalMethod::build(const FrameContext& ctx, double spacing, FrameStats& stats) {
     // Candidates at half the spacing so the thinned set covers the surface evenly.
     const bool rebuilt = candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical");
     if (rebuilt) tree_ = FluxOctree(poissonThin(candidates_.points(), spacing));
-    ctx.stats->set("hierarchical_spacing_mm", spacing);
-    ctx.stats->set("hierarchical_candidates", static_cast<double>(candidates_.points().size()));
-    ctx.stats->set("hierarchical_points", static_cast<double>(tree_.sampleCount()));
-    ctx.stats->set("hierarchical_nodes", static_cast<double>(tree_.nodeCount()));
-    ctx.stats->set("hierarchical_cached", !rebuilt);
+    stats.set("hierarchical_spacing_mm", spacing);
+    stats.set("hierarchical_candidates", static_cast<double>(candidates_.points().size()));
+    stats.set("hierarchical_points", static_cast<double>(tree_.sampleCount()));
+    stats.set("hierarchical_nodes", static_cast<double>(tree_.nodeCount()));
+    stats.set("hierarchical_cached", !rebuilt);
 }
 
-void HierarchicalMethod::evaluate(FrameContext& ctx) {
-    rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001);
+void HierarchicalMethod::evaluate(const FrameContext& ctx, const SurfacePoints& points,
+                                  cl::Buffer& radiosity, FrameStats& stats) {
+    rd_.update(ctx.scene->material, ctx.maxDistance());
     const float epsilon = ctx.options->epsilon;
-    const size_t count = static_cast<size_t>(ctx.pointCount);
+    const size_t count = static_cast<size_t>(points.count);
     std::vector<float> out(count * 4, 0.0f);
     std::atomic<long long> evaluations{0};
     parallelFor(count, 256, [&](size_t begin, size_t end) {
         long long evals = 0;
         for (size_t j = begin; j < end; ++j) {
-            const float* p = &ctx.pointsHost[j * 4];
+            const float* p = &points.host[j * 4];
             const glm::vec3 b = tree_.radiosity({p[0], p[1], p[2]}, epsilon, rd_.table(), &evals);
             out[j * 4] = b.x;
             out[j * 4 + 1] = b.y;
@@ -50,10 +59,10 @@ void HierarchicalMethod::evaluate(FrameContext& ctx) {
         evaluations += evals;
     });
     if (count > 0)
-        cl_.queue().enqueueWriteBuffer(ctx.radiosity, CL_TRUE, 0, out.size() * sizeof(float),
+        cl_.queue().enqueueWriteBuffer(radiosity, CL_TRUE, 0, out.size() * sizeof(float),
                                        out.data());
-    ctx.stats->set("hierarchical_epsilon", epsilon);
-    ctx.stats->set("rd_evaluations", static_cast<double>(evaluations.load()));
+    stats.set("hierarchical_epsilon", epsilon);
+    stats.set("rd_evaluations", static_cast<double>(evaluations.load()));
 }
 
 }  // namespace tsis

@@ -11,7 +11,7 @@
 // Samples and tree are rebuilt only when the mesh, lights, η or s change.
 #pragma once
 
-#include "render/dipole_table.h"
+#include "render/profile_table_cache.h"
 #include "render/flux_octree.h"
 #include "render/method.h"
 #include "render/surface_points.h"
@@ -25,13 +25,14 @@ class HierarchicalMethod : public Method {
     void addPasses(FrameGraph& graph, FrameContext& ctx) override;
 
   private:
-    void build(FrameContext& ctx, double spacing);
-    void evaluate(FrameContext& ctx);
+    void build(const FrameContext& ctx, double spacing, FrameStats& stats);
+    void evaluate(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity,
+                  FrameStats& stats);
 
     ClRuntime& cl_;
     SurfaceSampleCache candidates_;
     FluxOctree tree_;
-    DipoleTable rd_;
+    ProfileTableCache rd_;
 };
 
 }  // namespace tsis

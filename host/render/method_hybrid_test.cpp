@@ -13,11 +13,11 @@ namespace {
 TEST(Hybrid, LocalPlusGlobalIsFull) {
     const Scene scene = test::torusScene("skimmilk", 20.0);
     RenderOptions opt = test::smallOptions(40, 256, 400);
-    opt.rdPart = "full";
+    opt.rdPart = RdPart::Full;
     const FrameResult full = test::renderWith(scene, opt, "tsis");
-    opt.rdPart = "local";
+    opt.rdPart = RdPart::Local;
     const FrameResult local = test::renderWith(scene, opt, "tsis");
-    opt.rdPart = "global";
+    opt.rdPart = RdPart::Global;
     const FrameResult global = test::renderWith(scene, opt, "tsis");
     double maxFull = 0, maxDiff = 0, localSum = 0, globalSum = 0;
     for (size_t i = 0; i < full.radiosity.pixels.size(); ++i) {

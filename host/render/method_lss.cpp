@@ -3,7 +3,7 @@
 // Per covered pixel xo, --samples = M samples on the image plane:
 //   * radius r_k (mm) by importance of Rd on the plane: u_k = (k + ξ)/M through
 //     the inverse CDF of the equal mixture of the channels' Rd_c(r)·2πr
-//     (radiusTable, up to the object's diameter);
+//     (RadialImportance::inverseTable, up to the object's diameter);
 //   * direction k of a golden-angle spiral, rotated by φ;
 //   * (ξ, φ) hashed from (pixel, --seed): deterministic for a seed, decorrelated
 //     between pixels;
@@ -26,12 +26,6 @@
 #include "util/timer.h"
 
 namespace tsis {
-namespace {
-
-constexpr size_t kLocal = 64;  // fixed: each new local size compiles again under PoCL
-
-}  // namespace
-
 LssMethod::LssMethod(ClRuntime& cl, int lanes)
     : cl_(cl),
       prepare_(cl.kernel("lss.cl", "tsis_lss_prepare")),
@@ -54,26 +48,14 @@ TsisCamera LssMethod::camera(const Camera& c, int height) {
     return cam;
 }
 
-std::vector<float> LssMethod::radiusTable(const RadialImportance& rd, int entries) {
-    TSIS_CHECK_GE(entries, 1);
-    std::vector<float> radii(static_cast<size_t>(entries) + 1);
-    for (int k = 0; k <= entries; ++k)
-        radii[static_cast<size_t>(k)] =
-            static_cast<float>(rd.inverse(static_cast<double>(k) / entries));
-    return radii;
-}
-
 void LssMethod::updateTables(FrameContext& ctx) {
-    // Two surface points are at most the bounding sphere's diameter apart.
-    const double rMax = 2.0 * ctx.boundingRadius * 1.001;
+    const double rMax = ctx.maxDistance();
     Timer t;
     if (table_.update(ctx.scene->material, rMax)) {
-        const ProfileTable& table = table_.table();
-        rd_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                         table.rgba.size() * sizeof(float), const_cast<float*>(table.rgba.data()));
         const Dipole dipole(ctx.scene->material);
-        std::vector<float> radii = radiusTable(
-            RadialImportance([&dipole](double r) { return dipole.Rd(r); }, rMax), kRadiusEntries);
+        std::vector<float> radii =
+            RadialImportance([&dipole](double r) { return dipole.Rd(r); }, rMax)
+                .inverseTable(kRadiusEntries);
         radii_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                             radii.size() * sizeof(float), radii.data());
         ctx.stats->addStage("lss_tables", t.ms());
@@ -94,55 +76,61 @@ void LssMethod::updateTables(FrameContext& ctx) {
 }
 
 void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    graph.addPass({"lss_prepare",
-                   {"gbuffer_cl"},
-                   {"lss_surface"},
-                   [this, &ctx] {
-                       updateTables(ctx);
-                       const size_t pixels = static_cast<size_t>(ctx.width) * ctx.height;
-                       if (surfaceCapacity_ < pixels) {
-                           pos_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
-                           ea_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
-                           surfaceCapacity_ = pixels;
-                       }
-                       setKernelArgs(prepare_, ctx.gbufferPosition, ctx.gbufferNormal,
-                                     ctx.gbufferIrradiance, static_cast<cl_int>(pixels),
-                                     camera(ctx.scene->camera, ctx.height), pos_, ea_);
-                       cl::Event e;
-                       enqueue1D(cl_.queue(), prepare_, pixels, kLocal, &e);
-                       ctx.stats->addStage("lss_prepare", eventMilliseconds(e));
-                   },
-                   true});
+    const auto surface = graph.create<Marker>("lss_surface");
     graph.addPass(
-        {"lss_gather",
-         {"lss_surface", "points_cl"},
-         {"radiosity_cl"},
-         [this, &ctx] {
-             const int count = ctx.pointCount;
-             const int m = ctx.options->samples;
-             ctx.stats->set("rd_evaluations", static_cast<double>(count) * m);
-             if (count == 0) {
-                 ctx.stats->addStage("lss_gather", 0.0);
-                 return;
-             }
-             Timer t;
-             const size_t bytes = static_cast<size_t>(count) * sizeof(cl_int);
-             if (pixelsCapacity_ < bytes) {
-                 pixels_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY, bytes);
-                 pixelsCapacity_ = bytes;
-             }
-             cl_.queue().enqueueWriteBuffer(pixels_, CL_TRUE, 0, bytes, ctx.pointPixel.data());
-             ctx.stats->addStage("lss_upload", t.ms(), static_cast<long long>(bytes));
-             setKernelArgs(gather_, pixels_, static_cast<cl_int>(count), pos_, ea_,
-                           static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
-                           static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries), rd_,
-                           table_.table().info, camera(ctx.scene->camera, ctx.height),
-                           static_cast<cl_uint>(frameSeed(ctx)), ctx.radiosity);
-             cl::Event e;
-             enqueue1D(cl_.queue(), gather_, static_cast<size_t>(count), kLocal, &e);
-             ctx.stats->addStage("lss_gather", eventMilliseconds(e));
-         },
-         true});
+        "lss_prepare",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.gbuffer);
+            b.write(surface);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            updateTables(ctx);
+            const size_t pixels = static_cast<size_t>(ctx.width) * ctx.height;
+            if (surfaceCapacity_ < pixels) {
+                pos_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
+                ea_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
+                surfaceCapacity_ = pixels;
+            }
+            const CameraBuffersCl& g = res.read(ctx.gbuffer);
+            setKernelArgs(prepare_, g.position, g.normal, g.irradiance,
+                          static_cast<cl_int>(pixels), camera(ctx.scene->camera, ctx.height), pos_,
+                          ea_);
+            cl::Event e;
+            enqueue1D(cl_.queue(), prepare_, pixels, kLocalSize, &e);
+            res.setDeviceMs(eventMilliseconds(e));
+        });
+    graph.addPass(
+        "lss_gather",
+        [&](FrameGraph::Builder& b) {
+            b.read(surface);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            cl::Buffer& out = ctx.radiosityBuffer(res, points.count);
+            const int count = points.count;
+            const int m = ctx.options->samples;
+            res.stats().set("rd_evaluations", static_cast<double>(count) * m);
+            if (count == 0) return;
+            Timer t;
+            const size_t bytes = static_cast<size_t>(count) * sizeof(cl_int);
+            if (pixelsCapacity_ < bytes) {
+                pixels_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY, bytes);
+                pixelsCapacity_ = bytes;
+            }
+            cl_.queue().enqueueWriteBuffer(pixels_, CL_TRUE, 0, bytes, points.pixel.data());
+            res.stats().addStage("lss_upload", t.ms(), static_cast<long long>(bytes));
+            setKernelArgs(gather_, pixels_, static_cast<cl_int>(count), pos_, ea_,
+                          static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
+                          static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries),
+                          table_.device(cl_.context()), table_.table().info,
+                          camera(ctx.scene->camera, ctx.height), static_cast<cl_uint>(frameSeed(ctx)),
+                          out);
+            cl::Event e;
+            enqueue1D(cl_.queue(), gather_, static_cast<size_t>(count), kLocalSize, &e);
+            res.setDeviceMs(eventMilliseconds(e));
+        });
 }
 
 }  // namespace tsis

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "render/dipole_table.h"
+#include "render/profile_table_cache.h"
 #include "render/method.h"
 #include "render/radial_importance.h"
 #include "tsis_shared.h"
@@ -15,7 +15,7 @@ namespace tsis {
 
 class LssMethod : public Method {
   public:
-    // Intervals of the sampled radius' inverse CDF (radiusTable).
+    // Intervals of the sampled radius' inverse CDF (RadialImportance::inverseTable).
     static constexpr int kRadiusEntries = 4096;
     // |n·view| below this counts as this in a pixel's surface area 1/|n·view|:
     // a pixel seen at more than ~78° is a sliver whose E and position are
@@ -33,23 +33,22 @@ class LssMethod : public Method {
     // The camera as the kernels read it.
     static TsisCamera camera(const Camera& camera, int height);
 
-    // r_k = inverse(k / entries), k = 0 … entries, of Rd's radial distribution
-    // (the mean over channels of each one's normalised Rd·2πr, so every channel
+    // The radii: RadialImportance::inverseTable(kRadiusEntries) of Rd (the
+    // mean over channels of each one's normalised Rd·2πr, so every channel
     // gets a third of the samples and Rd_c / p ≤ 3·∫Rd_c in all of them). The
     // kernel draws r by linear interpolation in u, whose density per mm² of
     // the plane is exactly p(r) = 1 / (entries·(r_{k+1} − r_k)·2πr) in cell k,
     // and weights by that: unbiased at any table size.
-    static std::vector<float> radiusTable(const RadialImportance& rd, int entries);
 
   private:
     void updateTables(FrameContext& ctx);
 
     ClRuntime& cl_;
     cl::Kernel prepare_, gather_;
-    cl::Buffer pos_, ea_, pixels_, dirs_, radii_, rd_;
+    cl::Buffer pos_, ea_, pixels_, dirs_, radii_;
     size_t surfaceCapacity_ = 0, pixelsCapacity_ = 0;
     int dirsCount_ = 0;
-    DipoleTable table_;
+    ProfileTableCache table_;
 };
 
 }  // namespace tsis

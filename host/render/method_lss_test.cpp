@@ -12,7 +12,7 @@ namespace {
 TEST(Lss, RadiusTableRisesFromZeroToRMax) {
     const Dipole dipole(presetMaterial("marble"));
     const RadialImportance rd([&](double r) { return dipole.Rd(r); }, 12.0);
-    const std::vector<float> radii = LssMethod::radiusTable(rd, 64);
+    const std::vector<float> radii = rd.inverseTable(64);
     ASSERT_EQ(radii.size(), 65u);
     EXPECT_EQ(radii.front(), 0.0f);
     EXPECT_FLOAT_EQ(radii.back(), 12.0f);

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "physics/profile_table.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 #include "render/profiles.h"
 #include "render/ring_pattern.h"
 
@@ -24,12 +24,11 @@ class LtsmMethod : public Method {
     const char* name() const override { return "ltsm"; }
     void addPasses(FrameGraph& graph, FrameContext& ctx) override;
 
-    // Adds the filter pass for `profile`: writes `output` into `out`, or adds
-    // to what `out` holds when `accumulate` (after the passes that write
-    // `reads`). Stats: <prefix>ltsm (ms), <prefix>rd_evaluations.
+    // Adds the filter pass for `profile`: writes ctx.radiosity, or adds to
+    // what it holds when `accumulate`. Stats: <prefix>ltsm (ms),
+    // <prefix>rd_evaluations.
     void addLocalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
-                        cl::Buffer& out, const std::vector<std::string>& reads,
-                        const std::string& output, const std::string& statPrefix, bool accumulate);
+                        const std::string& statPrefix, bool accumulate);
 
     const RingPattern& pattern() const { return pattern_; }
 
@@ -39,11 +38,9 @@ class LtsmMethod : public Method {
     ClRuntime& cl_;
     cl::Kernel kernel_;
     std::vector<cl::Event> events_;
-    ProfileTable tableHost_;
-    cl::Buffer table_;
+    ProfileTableCache table_;
     RingPattern pattern_;
     cl::Buffer patternBuffer_;
-    std::string key_;
 };
 
 }  // namespace tsis

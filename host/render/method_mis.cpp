@@ -5,18 +5,13 @@
 
 #include "cl/launch.h"
 #include "render/light_map_info.h"
+#include "render/method_tsis.h"
 #include "render/profiles.h"
 #include "render/radial_importance.h"
 #include "util/error.h"
 #include "util/timer.h"
 
 namespace tsis {
-
-namespace {
-
-constexpr size_t kLocal = 64;
-
-}  // namespace
 
 MisMethod::MisMethod(ClRuntime& cl)
     : cl_(cl),
@@ -27,23 +22,13 @@ MisMethod::MisMethod(ClRuntime& cl)
 
 void MisMethod::prepareTables(FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    if (parseRdPart(o.rdPart) != RdPart::Full)
-        fail("--rd-part applies to tsis and ltsm; mis integrates the full Rd");
     const KeyedProfile rd = dipoleProfile(ctx.scene->material, RdPart::Full, o.rpBound, o.rpK);
-    const double rMax = 2.0 * ctx.boundingRadius * 1.001;
-    const std::string key = rd.key + " rmax " + std::to_string(rMax);
-    if (key == tableKey_) return;
+    const double rMax = ctx.maxDistance();
     Timer t;
-    tableHost_ = ProfileTable::build(rd.f, rMax);
-    table_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                        tableHost_.rgba.size() * sizeof(float), tableHost_.rgba.data());
+    if (!table_.update(rd, rMax)) return;
     // Radii at equal steps of the importance's cdf: a draw picks a segment
     // uniformly and a radius linearly inside it.
-    const RadialImportance importance(rd.f, rMax);
-    std::vector<float> radii(kSegments + 1);
-    for (int k = 0; k <= kSegments; ++k)
-        radii[static_cast<size_t>(k)] =
-            static_cast<float>(importance.inverse(double(k) / kSegments));
+    const std::vector<float> radii = RadialImportance(rd.f, rMax).inverseTable(kSegments);
     // That sampler's density per mm² of plane, at the centres of uniform bins.
     std::vector<float> q(kQBins, 0.0f);
     size_t seg = 0;
@@ -56,21 +41,20 @@ void MisMethod::prepareTables(FrameContext& ctx) {
                 static_cast<float>(1.0 / (kSegments * dr * 2.0 * std::numbers::pi * r));
     }
     radii_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                        radii.size() * sizeof(float), radii.data());
+                        radii.size() * sizeof(float), const_cast<float*>(radii.data()));
     q_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                     q.size() * sizeof(float), q.data());
     info_.segments = kSegments;
     info_.q_size = kQBins;
     info_.q_inv_step = static_cast<float>(kQBins / rMax);
-    tableKey_ = key;
     ctx.stats->addStage("mis_tables", t.ms());
 }
 
 // The lights' maps back to back (one buffer each, so one kernel sees all of
 // them) and their texels' irradiance and area.
-void MisMethod::prepareMaps(FrameContext& ctx) {
-    const size_t lights = ctx.lightFlux.size();
-    TSIS_CHECK_EQ(lights, ctx.lights->size());
+void MisMethod::prepareMaps(const FrameContext& ctx, const LightMapsCl& maps) {
+    const size_t lights = maps.flux.size();
+    TSIS_CHECK_EQ(lights, maps.views->size());
     const int res = ctx.lightResolution;
     const size_t per = static_cast<size_t>(res) * res * sizeof(cl_float4);
     if (mapBytes_ < per * lights) {
@@ -80,7 +64,7 @@ void MisMethod::prepareMaps(FrameContext& ctx) {
         irradiance_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, mapBytes_);
     }
     std::vector<TsisLightMapInfo> infos;
-    for (size_t l = 0; l < lights; ++l) infos.push_back(lightMapInfo((*ctx.lights)[l], res));
+    for (size_t l = 0; l < lights; ++l) infos.push_back(lightMapInfo((*maps.views)[l], res));
     lightInfos_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                              infos.size() * sizeof(TsisLightMapInfo), infos.data());
     info_.lights = static_cast<int>(lights);
@@ -89,17 +73,17 @@ void MisMethod::prepareMaps(FrameContext& ctx) {
     mapEvents_.clear();
     for (size_t l = 0; l < lights; ++l) {
         mapEvents_.emplace_back();
-        q.enqueueCopyBuffer(ctx.lightFlux[l], flux_, 0, l * per, per, nullptr, &mapEvents_.back());
+        q.enqueueCopyBuffer(maps.flux[l], flux_, 0, l * per, per, nullptr, &mapEvents_.back());
         mapEvents_.emplace_back();
-        q.enqueueCopyBuffer(ctx.lightPosition[l], position_, 0, l * per, per, nullptr,
+        q.enqueueCopyBuffer(maps.position[l], position_, 0, l * per, per, nullptr,
                             &mapEvents_.back());
     }
     setKernelArgs(texels_, flux_, position_, info_, irradiance_);
     mapEvents_.emplace_back();
-    enqueue1D(q, texels_, lights * static_cast<size_t>(res) * res, kLocal, &mapEvents_.back());
+    enqueue1D(q, texels_, lights * static_cast<size_t>(res) * res, kLocalSize, &mapEvents_.back());
 }
 
-void MisMethod::gather(FrameContext& ctx) {
+void MisMethod::gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& out) {
     const int n = ctx.options->samples;
     cl::CommandQueue& q = cl_.queue();
     gatherEvents_.clear();
@@ -111,12 +95,13 @@ void MisMethod::gather(FrameContext& ctx) {
     info_.seed = frameSeed(ctx);
     setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_, texDensity_);
     gatherEvents_.emplace_back();
-    enqueue1D(q, prepare_, static_cast<size_t>(n), kLocal, &gatherEvents_.back());
-    if (ctx.pointCount == 0) return;
-    setKernelArgs(gather_, ctx.points, ctx.pointCount, info_, samples_, seen_, texDensity_, lightInfos_,
-                  flux_, position_, irradiance_, radii_, q_, table_, tableHost_.info, ctx.radiosity);
+    enqueue1D(q, prepare_, static_cast<size_t>(n), kLocalSize, &gatherEvents_.back());
+    if (points.count == 0) return;
+    setKernelArgs(gather_, points.xyz, points.count, info_, samples_, seen_, texDensity_,
+                  lightInfos_, flux_, position_, irradiance_, radii_, q_,
+                  table_.device(cl_.context()), table_.table().info, out);
     gatherEvents_.emplace_back();
-    enqueue1D(q, gather_, static_cast<size_t>(ctx.pointCount), kLocal, &gatherEvents_.back());
+    enqueue1D(q, gather_, static_cast<size_t>(points.count), kLocalSize, &gatherEvents_.back());
 }
 
 void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
@@ -131,43 +116,36 @@ void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
         samplesCapacity_ = n;
         seenLights_ = lights;
     }
-    graph.addPass({"mis_cdf",
-                   {"flux_atlas_cl"},
-                   {"mis_pyramid"},
-                   [this, &ctx] {
-                       sampler_.buildPyramid(ctx.fluxAtlas, ctx.atlasResolution);
-                       ctx.stats->addStage("mis_cdf", sampler_.lastPyramidMs());
-                   },
-                   true});
-    graph.addPass({"mis_sample",
-                   {"mis_pyramid", "flux_atlas_cl", "position_atlas_cl"},
-                   {"mis_samples"},
-                   [this, &ctx, n] {
-                       sampler_.draw(ctx.fluxAtlas, ctx.positionAtlas, ctx.atlasResolution, n,
-                                     ctx.options->seed, samples_, ctx.sampleSet);
-                       ctx.stats->addStage("mis_sample", sampler_.lastDrawMs());
-                   },
-                   true});
-    graph.addPass({"mis_light_maps",
-                   {"light_maps_cl"},
-                   {"mis_maps"},
-                   [this, &ctx] {
-                       prepareMaps(ctx);
-                       ctx.stats->addStage("mis_light_maps", eventMilliseconds(mapEvents_));
-                   },
-                   true});
-    graph.addPass({"mis_gather",
-                   {"mis_samples", "mis_maps", "points_cl"},
-                   {"radiosity_cl"},
-                   [this, &ctx, n] {
-                       gather(ctx);
-                       ctx.stats->addStage("mis_gather", eventMilliseconds(gatherEvents_));
-                       const double perPoint =
-                           n + static_cast<double>(ctx.options->misDistanceSamples) *
-                                   static_cast<double>(ctx.lights->size());
-                       ctx.stats->set("rd_evaluations", ctx.pointCount * perPoint);
-                   },
-                   true});
+    const auto pyramid = graph.create<Marker>("mis_pyramid");
+    const auto samples = graph.create<Marker>("mis_samples");
+    const auto maps = graph.create<Marker>("mis_maps");
+    addImportancePasses(graph, ctx, sampler_, samples_, "mis_", pyramid, samples);
+    graph.addPass(
+        "mis_light_maps",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.lightMaps);
+            b.write(maps);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            prepareMaps(ctx, res.read(ctx.lightMaps));
+            res.setDeviceMs(eventMilliseconds(mapEvents_));
+        });
+    graph.addPass(
+        "mis_gather",
+        [&](FrameGraph::Builder& b) {
+            b.read(samples);
+            b.read(maps);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx, n](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            gather(ctx, points, ctx.radiosityBuffer(res, points.count));
+            res.setDeviceMs(eventMilliseconds(gatherEvents_));
+            const double perPoint = n + static_cast<double>(ctx.options->misDistanceSamples) *
+                                            static_cast<double>(ctx.scene->lights.size());
+            res.stats().set("rd_evaluations", points.count * perPoint);
+        });
 }
 
 }  // namespace tsis

@@ -29,8 +29,8 @@
 
 #include "cl/importance_sampler.h"
 #include "mis_shared.h"
-#include "physics/profile_table.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 
 namespace tsis {
 
@@ -45,16 +45,15 @@ class MisMethod : public Method {
 
   private:
     void prepareTables(FrameContext& ctx);
-    void prepareMaps(FrameContext& ctx);
-    void gather(FrameContext& ctx);
+    void prepareMaps(const FrameContext& ctx, const LightMapsCl& maps);
+    void gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& out);
 
     ClRuntime& cl_;
     ImportanceSampler sampler_;
     cl::Kernel texels_, prepare_, gather_;
     TsisMisInfo info_{};
-    std::string tableKey_;
-    ProfileTable tableHost_;
-    cl::Buffer table_, radii_, q_;
+    ProfileTableCache table_;
+    cl::Buffer radii_, q_;
     cl::Buffer samples_, seen_, texDensity_;
     int samplesCapacity_ = 0;
     size_t seenLights_ = 0;

@@ -31,48 +31,65 @@ int PyramidMethod::autoStride(const Camera& camera, int height, double ell) {
 }
 
 void PyramidMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    graph.addPass({"pyramid_build",
-                   {"flux_atlas_cl", "position_atlas_cl", "normal_atlas_cl"},
-                   {"flux_pyramid"},
-                   [this, &ctx] { build(ctx); },
-                   true});
-    graph.addPass({"pyramid_gather",
-                   {"flux_pyramid", "points_cl"},
-                   {"radiosity_cl"},
-                   [this, &ctx] { gather(ctx); },
-                   true});
+    const auto pyramid = graph.create<Marker>("flux_pyramid");
+    graph.addPass(
+        "pyramid_build",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.fluxAtlas);
+            b.read(ctx.positionAtlas);
+            b.read(ctx.normalAtlas);
+            b.write(pyramid);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            res.setDeviceMs(build(ctx, res.read(ctx.fluxAtlas), res.read(ctx.positionAtlas),
+                                  res.read(ctx.normalAtlas), res.stats()));
+        });
+    graph.addPass(
+        "pyramid_gather",
+        [&](FrameGraph::Builder& b) {
+            b.read(pyramid);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            res.setDeviceMs(
+                gather(ctx, points, ctx.radiosityBuffer(res, points.count), res.stats()));
+        });
 }
 
-void PyramidMethod::build(FrameContext& ctx) {
+double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const AtlasCl& position,
+                            const AtlasCl& normal, FrameStats& stats) {
     // The leaves' order depends on the positions only: again when the mesh or
     // the atlas resolution changed.
-    if (ctx.geometryVersion != leavesVersion_) {
+    if (position.version != leavesVersion_) {
         Timer t;
         const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
         std::vector<float> positions(texels * 4);
-        cl_.queue().enqueueReadBuffer(ctx.positionAtlas, CL_TRUE, 0,
+        cl_.queue().enqueueReadBuffer(position.buffer, CL_TRUE, 0,
                                       positions.size() * sizeof(float), positions.data());
         pyramid_.setLeaves(positions);
-        leavesVersion_ = ctx.geometryVersion;
-        ctx.stats->addStage("pyramid_order", t.ms());
+        leavesVersion_ = position.version;
+        stats.addStage("pyramid_order", t.ms());
     }
     // The sums change only with the flux (a camera-only frame keeps them).
     const bool current =
-        ctx.fluxKey != 0 && ctx.fluxKey == builtFluxKey_ && leavesVersion_ == builtLeavesVersion_;
+        flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
-        pyramid_.build(ctx.fluxAtlas, ctx.positionAtlas, ctx.normalAtlas);
-        builtFluxKey_ = ctx.fluxKey;
+        pyramid_.build(flux.buffer, position.buffer, normal.buffer);
+        builtFluxVersion_ = flux.version;
         builtLeavesVersion_ = leavesVersion_;
     }
-    ctx.stats->addStage("pyramid_build", current ? 0.0 : pyramid_.lastBuildMs());
-    ctx.stats->set("pyramid_leaves", static_cast<double>(pyramid_.leafTexels().size()));
-    ctx.stats->set("pyramid_nodes", static_cast<double>(pyramid_.topology().size()));
-    ctx.stats->set("pyramid_depth", pyramid_.depth());
+    stats.set("pyramid_rebuilt", current ? 0.0 : 1.0);
+    stats.set("pyramid_leaves", static_cast<double>(pyramid_.leafTexels().size()));
+    stats.set("pyramid_nodes", static_cast<double>(pyramid_.topology().size()));
+    stats.set("pyramid_depth", pyramid_.depth());
+    return current ? 0.0 : pyramid_.lastBuildMs();
 }
 
-void PyramidMethod::gather(FrameContext& ctx) {
-    // Any two surface points are at most the bounding sphere's diameter apart.
-    rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001);
+double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
+                             cl::Buffer& radiosity, FrameStats& stats) {
+    rd_.update(ctx.scene->material, ctx.maxDistance());
     const RenderOptions& o = *ctx.options;
     const double ell = smallestMeanFreePath(ctx.scene->material);
     const int stride =
@@ -81,7 +98,7 @@ void PyramidMethod::gather(FrameContext& ctx) {
     // surface, where B changes faster across the cell than the grid assumes.
     const double cellDiagonal = std::sqrt(2.0) * stride * pixelMm(ctx.scene->camera, ctx.height);
     const SparsePixels plan =
-        planSparsePixels(ctx.pointPixel, ctx.pointsHost, ctx.width, ctx.height, stride,
+        planSparsePixels(points.pixel, points.host, ctx.width, ctx.height, stride,
                          static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal)));
     const std::vector<int>& order = plan.evaluate;
     if (!order.empty()) {
@@ -92,25 +109,25 @@ void PyramidMethod::gather(FrameContext& ctx) {
         cl_.queue().enqueueWriteBuffer(order_, CL_FALSE, 0, order.size() * sizeof(int),
                                        order.data());
     }
-    pyramid_.gather(ctx.points, order_, static_cast<int>(order.size()), o.pyramidEpsilon,
+    pyramid_.gather(points.xyz, order_, static_cast<int>(order.size()), o.pyramidEpsilon,
                     static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
-                    ctx.radiosity);
-    double ms = pyramid_.lastGatherMs();
+                    radiosity);
+    const double ms = pyramid_.lastGatherMs();
     if (!plan.interpolate.empty()) {
         Timer t;
-        std::vector<float> rgba(static_cast<size_t>(ctx.pointCount) * 4);
+        std::vector<float> rgba(static_cast<size_t>(points.count) * 4);
         const size_t bytes = rgba.size() * sizeof(float);
-        cl_.queue().enqueueReadBuffer(ctx.radiosity, CL_TRUE, 0, bytes, rgba.data());
+        cl_.queue().enqueueReadBuffer(radiosity, CL_TRUE, 0, bytes, rgba.data());
         interpolateSparsePixels(plan, rgba);
-        cl_.queue().enqueueWriteBuffer(ctx.radiosity, CL_TRUE, 0, bytes, rgba.data());
-        ctx.stats->addStage("pyramid_interpolate", t.ms());
+        cl_.queue().enqueueWriteBuffer(radiosity, CL_TRUE, 0, bytes, rgba.data());
+        stats.addStage("pyramid_interpolate", t.ms());
     }
-    ctx.stats->addStage("pyramid_gather", ms);
-    ctx.stats->set("pyramid_epsilon", o.pyramidEpsilon);
-    ctx.stats->set("pyramid_stride", stride);
-    ctx.stats->set("pyramid_evaluated_pixels", static_cast<double>(order.size()));
-    ctx.stats->set("pyramid_interpolated_pixels", static_cast<double>(plan.interpolate.size()));
-    ctx.stats->set("rd_evaluations", static_cast<double>(pyramid_.lastEvaluations()));
+    stats.set("pyramid_epsilon", o.pyramidEpsilon);
+    stats.set("pyramid_stride", stride);
+    stats.set("pyramid_evaluated_pixels", static_cast<double>(order.size()));
+    stats.set("pyramid_interpolated_pixels", static_cast<double>(plan.interpolate.size()));
+    stats.set("rd_evaluations", static_cast<double>(pyramid_.lastEvaluations()));
+    return ms;
 }
 
 }  // namespace tsis

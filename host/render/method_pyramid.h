@@ -22,7 +22,7 @@
 #pragma once
 
 #include "cl/flux_pyramid.h"
-#include "render/dipole_table.h"
+#include "render/profile_table_cache.h"
 #include "render/method.h"
 
 namespace tsis {
@@ -41,16 +41,18 @@ class PyramidMethod : public Method {
     static constexpr double kMaxCornerDistance = 0.5;
 
   private:
-    void build(FrameContext& ctx);
-    void gather(FrameContext& ctx);
+    // Each returns its device milliseconds.
+    double build(const FrameContext& ctx, const AtlasCl& flux, const AtlasCl& position,
+                 const AtlasCl& normal, FrameStats& stats);
+    double gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity,
+                  FrameStats& stats);
 
     ClRuntime& cl_;
     FluxPyramid pyramid_;
-    DipoleTable rd_;
-    int leavesVersion_ = -1;  // FrameContext::geometryVersion of the pyramid's leaf order
-    // What the node sums were made from (FrameContext::fluxKey, leavesVersion_).
-    uint64_t builtFluxKey_ = 0;
-    int builtLeavesVersion_ = -1;
+    ProfileTableCache rd_;
+    uint64_t leavesVersion_ = 0;  // the position atlas' version of the leaf order (0: none)
+    // What the node sums were made from (the flux atlas' version, leavesVersion_).
+    uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0;
     cl::Buffer order_;  // the covered pixels in tiles (FluxPyramid::tileOrder)
     size_t orderCapacity_ = 0;
 };

@@ -37,7 +37,7 @@ TEST(Pyramid, ErrorFallsAsEpsilonFallsAndCostRises) {
     for (float epsilon : {0.4f, 0.1f, 0.025f}) {
         const FrameResult f = test::renderWith(scene, pyramidOptions(64, 512, epsilon), "pyramid");
         const double error = test::relativeRmse(f, ref);
-        const double cost = test::statValue(f.stats, "rd_evaluations");
+        const double cost = f.stats.number("rd_evaluations");
         std::printf("skin1 30 mm torus, epsilon %.3f: relative RMSE %.4f%%, %.4g evaluations\n",
                     epsilon, 100 * error, cost);
         EXPECT_LT(error, lastError) << epsilon;
@@ -65,9 +65,9 @@ TEST(Pyramid, GridInterpolationStaysCloseToEveryPixel) {
         opt.pyramidStride = 1;
         const FrameResult every = test::renderWith(scene, opt, "pyramid");
         const double diff = test::relativeRmse(sparse, every);
-        const double stride = test::statValue(sparse.stats, "pyramid_stride");
-        const double evaluated = test::statValue(sparse.stats, "pyramid_evaluated_pixels") /
-                                 test::statValue(sparse.stats, "covered_pixels");
+        const double stride = sparse.stats.number("pyramid_stride");
+        const double evaluated = sparse.stats.number("pyramid_evaluated_pixels") /
+                                 sparse.stats.number("covered_pixels");
         std::printf("%s: stride %.0f, %.1f%% of the pixels evaluated, %.3f%% from every pixel\n",
                     material, stride, 100 * evaluated, 100 * diff);
         EXPECT_GE(stride, 2) << material;

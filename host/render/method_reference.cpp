@@ -27,7 +27,10 @@ double ReferenceMethod::defaultSpacing(const Material& m) {
 void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const double spacing =
         ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(ctx.scene->material);
-    graph.addPass({"reference_points", {}, {"reference_samples"}, [this, &ctx, spacing] {
+    const auto samples = graph.create<Marker>("reference_samples");
+    graph.addPass(
+        "reference_points", [&](FrameGraph::Builder& b) { b.write(samples); },
+        [this, &ctx, spacing](FrameGraph::Resources& res) {
                        const bool built = points_.update(*ctx.scene, spacing, "reference");
                        const std::vector<SurfacePoint>& pts = points_.points();
                        if (built) {
@@ -48,28 +51,32 @@ void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                                cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                                           s.size() * sizeof(TsisSample), s.data());
                        }
-                       ctx.stats->set("reference_spacing_mm", spacing);
-                       ctx.stats->set("reference_point_count", static_cast<double>(pts.size()));
-                       ctx.stats->set("reference_points_cached", !built);
-                   }});
-    graph.addPass({"reference_gather",
-                   {"reference_samples", "points_cl"},
-                   {"radiosity_cl"},
-                   [this, &ctx] { gather(ctx); },
-                   true});
+                       res.stats().set("reference_spacing_mm", spacing);
+                       res.stats().set("reference_point_count", static_cast<double>(pts.size()));
+                       res.stats().set("reference_points_cached", !built);
+        });
+    graph.addPass(
+        "reference_gather",
+        [&](FrameGraph::Builder& b) {
+            b.read(samples);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            cl::Buffer& out = ctx.radiosityBuffer(res, points.count);
+            res.stats().set("rd_evaluations",
+                            static_cast<double>(points.count) * points_.points().size());
+            if (points.count > 0) res.setDeviceMs(gather(ctx, points, out));
+        });
 }
 
-void ReferenceMethod::gather(FrameContext& ctx) {
-    // Any two surface points are at most the bounding sphere's diameter apart.
-    rd_.update(ctx.scene->material, 2.0 * ctx.boundingRadius * 1.001);
+double ReferenceMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
+                               cl::Buffer& radiosity) {
+    rd_.update(ctx.scene->material, ctx.maxDistance());
     const cl::Buffer& table = rd_.device(cl_.context());
     const int n = static_cast<int>(points_.points().size());
-    const int count = ctx.pointCount;
-    ctx.stats->set("rd_evaluations", static_cast<double>(count) * n);
-    if (count == 0) {
-        ctx.stats->addStage("reference_gather", 0.0);
-        return;
-    }
+    const int count = points.count;
     // Output points in chunks (sub-buffers, so the origin must be aligned as the
     // device asks) to show progress and keep each kernel run short.
     const size_t alignPoints =
@@ -81,19 +88,20 @@ void ReferenceMethod::gather(FrameContext& ctx) {
         "reference: gather " + std::to_string(count) + " pixels × " + std::to_string(n) + " points",
         count);
     double ms = 0;
+    cl::Buffer xyz = points.xyz;  // a handle: createSubBuffer is not const
     for (size_t begin = 0; begin < static_cast<size_t>(count); begin += chunk) {
         const size_t len = std::min(chunk, static_cast<size_t>(count) - begin);
         const cl_buffer_region region{begin * 16, len * 16};
         cl::Buffer in =
-            ctx.points.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
+            xyz.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         cl::Buffer out =
-            ctx.radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
+            radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         gatherer_.run(in, static_cast<int>(len), samples_, n, table, rd_.table().info, out);
         ms += gatherer_.lastMs();  // waits for the chunk
         progress.update(static_cast<long long>(begin + len));
     }
     progress.finish();
-    ctx.stats->addStage("reference_gather", ms);
+    return ms;
 }
 
 }  // namespace tsis

@@ -9,7 +9,7 @@
 // mesh (CGAL AABB tree), shadow edges integrated adaptively to h/16. Rd is the
 // double-precision dipole tabulated at 8192 points up to the object's diameter
 // (ProfileTable; relative error < 1e-5 for a 10 mm object, < 5e-5 at 30 mm:
-// dipole_table_test.cpp); the sum runs on the OpenCL device (Gatherer), in
+// profile_table_cache_test.cpp); the sum runs on the OpenCL device (Gatherer), in
 // chunks of pixels so a terminal shows progress.
 // Cost: points ≈ Σ_triangles max(1, ⌈longest edge/h⌉²) ≈ max(T, 2.3 A/h²); their
 // irradiance once per mesh, lights, η and h (cached across frames); then
@@ -17,7 +17,7 @@
 #pragma once
 
 #include "cl/gather.h"
-#include "render/dipole_table.h"
+#include "render/profile_table_cache.h"
 #include "render/method.h"
 #include "render/surface_points.h"
 
@@ -33,13 +33,14 @@ class ReferenceMethod : public Method {
     static double defaultSpacing(const Material& m);
 
   private:
-    void gather(FrameContext& ctx);
+    // Returns the device milliseconds.
+    double gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity);
 
     ClRuntime& cl_;
     Gatherer gatherer_;
     SurfaceSampleCache points_;
     cl::Buffer samples_;  // TsisSample per point, w = E·ΔA
-    DipoleTable rd_;
+    ProfileTableCache rd_;
 };
 
 }  // namespace tsis

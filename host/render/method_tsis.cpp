@@ -1,8 +1,5 @@
 #include "render/method_tsis.h"
 
-#include <sstream>
-
-#include "util/error.h"
 #include "util/timer.h"
 
 namespace tsis {
@@ -11,58 +8,69 @@ TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
 void TsisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    const KeyedProfile profile =
-        dipoleProfile(ctx.scene->material, parseRdPart(o.rdPart), o.rpBound, o.rpK);
-    addGlobalPasses(graph, ctx, profile.f, profile.key, ctx.radiosity, "radiosity_cl", "");
+    addGlobalPasses(graph, ctx, dipoleProfile(ctx.scene->material, o.rdPart, o.rpBound, o.rpK),
+                    "");
 }
 
-void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const RadialProfile& profile,
-                                 const std::string& profileKey, cl::Buffer& out,
-                                 const std::string& output, const std::string& statPrefix) {
-    // Any two surface points are at most the bounding sphere's diameter apart.
-    const double rMax = 2.0 * ctx.boundingRadius * 1.001;
-    std::ostringstream key;
-    key.precision(17);
-    key << profileKey << " rmax " << rMax;
-    if (key.str() != tableKey_) {
-        Timer t;
-        tableHost_ = ProfileTable::build(profile, rMax);
-        table_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                            tableHost_.rgba.size() * sizeof(float), tableHost_.rgba.data());
-        tableKey_ = key.str();
+void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
+                                 const std::string& statPrefix) {
+    Timer t;
+    if (table_.update(profile, ctx.maxDistance()))
         ctx.stats->addStage(statPrefix + "profile_table", t.ms());
-    }
     const int n = ctx.options->samples;
     if (n > samplesCapacity_) {
         samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, sizeof(TsisSample) * n);
         samplesCapacity_ = n;
     }
-    graph.addPass({statPrefix + "cdf", {"flux_atlas_cl"}, {statPrefix + "pyramid"},
-                   [this, &ctx, statPrefix] {
-                       sampler_.buildPyramid(ctx.fluxAtlas, ctx.atlasResolution);
-                       ctx.stats->addStage(statPrefix + "cdf", sampler_.lastPyramidMs());
-                   },
-                   true});
-    graph.addPass({statPrefix + "sample",
-                   {statPrefix + "pyramid", "flux_atlas_cl", "position_atlas_cl"},
-                   {statPrefix + "samples"},
-                   [this, &ctx, n, statPrefix] {
-                       sampler_.draw(ctx.fluxAtlas, ctx.positionAtlas, ctx.atlasResolution, n,
-                                     ctx.options->seed, samples_, ctx.sampleSet);
-                       ctx.stats->addStage(statPrefix + "sample", sampler_.lastDrawMs());
-                   },
-                   true});
-    graph.addPass({statPrefix + "gather", {statPrefix + "samples", "points_cl"}, {output},
-                   [this, &ctx, &out, n, statPrefix] {
-                       if (ctx.pointCount > 0)
-                           gatherer_.run(ctx.points, ctx.pointCount, samples_, n, table_,
-                                         tableHost_.info, out);
-                       ctx.stats->addStage(statPrefix + "gather",
-                                           ctx.pointCount > 0 ? gatherer_.lastMs() : 0.0);
-                       ctx.stats->set(statPrefix + "rd_evaluations",
-                                      static_cast<double>(ctx.pointCount) * n);
-                   },
-                   true});
+    const auto pyramid = graph.create<Marker>(statPrefix + "pyramid");
+    const auto samples = graph.create<Marker>(statPrefix + "samples");
+    addImportancePasses(graph, ctx, sampler_, samples_, statPrefix, pyramid, samples);
+    graph.addPass(
+        statPrefix + "gather",
+        [&](FrameGraph::Builder& b) {
+            b.read(samples);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx, n, statPrefix](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            cl::Buffer& out = ctx.radiosityBuffer(res, points.count);
+            if (points.count > 0) {
+                gatherer_.run(points.xyz, points.count, samples_, n, table_.device(cl_.context()),
+                              table_.table().info, out);
+                res.setDeviceMs(gatherer_.lastMs());
+            }
+            res.stats().set(statPrefix + "rd_evaluations", static_cast<double>(points.count) * n);
+        });
+}
+
+void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
+                         cl::Buffer& samples, const std::string& prefix, FrameGraphId<Marker> pyramid,
+                         FrameGraphId<Marker> drawn) {
+    graph.addPass(
+        prefix + "cdf",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.fluxAtlas);
+            b.write(pyramid);
+        },
+        [&sampler, &ctx](FrameGraph::Resources& res) {
+            sampler.buildPyramid(res.read(ctx.fluxAtlas).buffer, ctx.atlasResolution);
+            res.setDeviceMs(sampler.lastPyramidMs());
+        });
+    graph.addPass(
+        prefix + "sample",
+        [&](FrameGraph::Builder& b) {
+            b.read(pyramid);
+            b.read(ctx.fluxAtlas);
+            b.read(ctx.positionAtlas);
+            b.write(drawn);
+        },
+        [&sampler, &samples, &ctx](FrameGraph::Resources& res) {
+            sampler.draw(res.read(ctx.fluxAtlas).buffer, res.read(ctx.positionAtlas).buffer,
+                         ctx.atlasResolution, ctx.options->samples, ctx.options->seed, samples,
+                         ctx.sampleSet);
+            res.setDeviceMs(sampler.lastDrawMs());
+        });
 }
 
 }  // namespace tsis

@@ -7,8 +7,8 @@
 
 #include "cl/gather.h"
 #include "cl/importance_sampler.h"
-#include "physics/profile_table.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 #include "render/profiles.h"
 
 namespace tsis {
@@ -19,12 +19,11 @@ class TsisMethod : public Method {
     const char* name() const override { return "tsis"; }
     void addPasses(FrameGraph& graph, FrameContext& ctx) override;
 
-    // Adds cdf, sample and gather passes that write `output` with `profile`
-    // (tabulated up to the object's diameter): the full Rd (or --rd-part) for
-    // tsis, Rd·Wg for the hybrid's global part.
-    void addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const RadialProfile& profile,
-                         const std::string& profileKey, cl::Buffer& out,
-                         const std::string& output, const std::string& statPrefix);
+    // Adds cdf, sample and gather passes that write ctx.radiosity with
+    // `profile` (tabulated up to the object's diameter): the full Rd (or
+    // --rd-part) for tsis, Rd·Wg for the hybrid's global part.
+    void addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
+                         const std::string& statPrefix);
 
   private:
     ClRuntime& cl_;
@@ -32,9 +31,14 @@ class TsisMethod : public Method {
     Gatherer gatherer_;
     cl::Buffer samples_;
     int samplesCapacity_ = 0;
-    cl::Buffer table_;
-    ProfileTable tableHost_;
-    std::string tableKey_;
+    ProfileTableCache table_;
 };
+
+// The importance-sampling passes tsis and mis share: <prefix>cdf builds the
+// flux atlas' CDF pyramid (writes `pyramid`), <prefix>sample draws
+// ctx.options->samples samples from it into `samples` (writes `drawn`).
+void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
+                         cl::Buffer& samples, const std::string& prefix, FrameGraphId<Marker> pyramid,
+                         FrameGraphId<Marker> drawn);
 
 }  // namespace tsis

@@ -52,7 +52,6 @@
 namespace tsis {
 namespace {
 
-constexpr size_t kLocal = 64;  // fixed: each new local size compiles again under PoCL
 constexpr size_t kLocal2D = 8;
 constexpr int kTapsPerRing[TsmMethod::kRings] = {1, 4, 8, 8};
 constexpr double kRingTurn[TsmMethod::kRings] = {0.0, 0.5, 0.5, 0.0};  // in sectors
@@ -100,12 +99,11 @@ glm::dvec3 TsmMethod::annulusMean(const RadialImportance& rd, double a, double b
 }
 
 void TsmMethod::updateTables(FrameContext& ctx) {
-    const double diameter = 2.0 * ctx.boundingRadius * 1.001;
+    const double diameter = ctx.maxDistance();
     const double radius =
         filterRadiusMm(ctx.scene->material, ctx.options->tsmRadius, ctx.boundingRadius);
     const KeyedProfile rd = dipoleProfile(ctx.scene->material, RdPart::Full, 0.0, 0.0);
-    const std::string key =
-        rd.key + " R " + std::to_string(radius) + " z " + std::to_string(diameter);
+    const std::string key = exactKey(rd.key + " R z", {radius, diameter});
     if (key == tableKey_) return;
     Timer t;
     // Depth offsets up to the diameter; the mass up to the farthest annulus edge.
@@ -125,10 +123,10 @@ void TsmMethod::updateTables(FrameContext& ctx) {
     ctx.stats->addStage("tsm_tables", t.ms());
 }
 
-void TsmMethod::buildPyramids(FrameContext& ctx) {
+double TsmMethod::buildPyramids(const FrameContext& ctx, const LightMapsCl& maps) {
     const int res = ctx.lightResolution;
-    const size_t lights = ctx.lightFlux.size();
-    TSIS_CHECK_EQ(lights, ctx.lights->size());
+    const size_t lights = maps.flux.size();
+    TSIS_CHECK_EQ(lights, maps.views->size());
     levelsHost_.clear();
     int cells = 0;
     for (int w = res, h = res;; w = (w + 1) / 2, h = (h + 1) / 2) {
@@ -151,10 +149,10 @@ void TsmMethod::buildPyramids(FrameContext& ctx) {
     cl::CommandQueue& q = cl_.queue();
     std::vector<cl::Event> events;
     for (size_t l = 0; l < lights; ++l) {
-        setKernelArgs(level0_, ctx.lightFlux[l], ctx.lightPosition[l], static_cast<cl_int>(res * res),
+        setKernelArgs(level0_, maps.flux[l], maps.position[l], static_cast<cl_int>(res * res),
                       F_[l], P_[l]);
         events.emplace_back();
-        enqueue1D(q, level0_, static_cast<size_t>(res) * res, kLocal, &events.back());
+        enqueue1D(q, level0_, static_cast<size_t>(res) * res, kLocalSize, &events.back());
         for (size_t k = 1; k < levelsHost_.size(); ++k) {
             const cl_int4& src = levelsHost_[k - 1];
             const cl_int4& dst = levelsHost_[k];
@@ -167,45 +165,56 @@ void TsmMethod::buildPyramids(FrameContext& ctx) {
                                    cl::NDRange(kLocal2D, kLocal2D), nullptr, &events.back());
         }
     }
-    ctx.stats->addStage("tsm_pyramid", eventMilliseconds(events));
+    return eventMilliseconds(events);
 }
 
-void TsmMethod::filter(FrameContext& ctx) {
-    const int count = ctx.pointCount;
+double TsmMethod::filter(const FrameContext& ctx, const LightMapsCl& maps,
+                         const SurfacePoints& points, cl::Buffer& out, FrameStats& stats) {
+    const int count = points.count;
     const int taps = static_cast<int>(pattern().size());
-    const size_t lights = ctx.lights->size();
-    ctx.stats->set("rd_evaluations",
-                   static_cast<double>(count) * taps * static_cast<double>(lights));
+    const size_t lights = maps.views->size();
+    stats.set("rd_evaluations", static_cast<double>(count) * taps * static_cast<double>(lights));
     std::vector<cl::Event> events;
     for (size_t l = 0; l < lights && count > 0; ++l) {
-        const LightView& lv = (*ctx.lights)[l];
+        const LightView& lv = (*maps.views)[l];
         const bool point = lv.light.type == Light::Type::Point;
         const glm::vec3 s = point ? lv.light.vec : glm::normalize(lv.light.vec);
-        setKernelArgs(filter_, ctx.points, static_cast<cl_int>(count), lightMapInfo(lv, ctx.lightResolution),
+        setKernelArgs(filter_, points.xyz, static_cast<cl_int>(count), lightMapInfo(lv, ctx.lightResolution),
                       cl_float4{{s.x, s.y, s.z, point ? 1.0f : 0.0f}}, F_[l], P_[l], levels_,
                       static_cast<cl_int>(levelsHost_.size()), taps_, static_cast<cl_int>(taps), rings_,
                       ringInfo_, static_cast<cl_float>(radiusMm_), static_cast<cl_int>(l > 0),
-                      ctx.radiosity);
+                      out);
         events.emplace_back();
-        enqueue1D(cl_.queue(), filter_, static_cast<size_t>(count), kLocal, &events.back());
+        enqueue1D(cl_.queue(), filter_, static_cast<size_t>(count), kLocalSize, &events.back());
     }
-    ctx.stats->addStage("tsm_filter", eventMilliseconds(events));
+    return eventMilliseconds(events);
 }
 
 void TsmMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    graph.addPass({"tsm_pyramid",
-                   {"light_maps_cl"},
-                   {"tsm_pyramid"},
-                   [this, &ctx] {
-                       updateTables(ctx);
-                       buildPyramids(ctx);
-                   },
-                   true});
-    graph.addPass({"tsm_filter",
-                   {"tsm_pyramid", "points_cl"},
-                   {"radiosity_cl"},
-                   [this, &ctx] { filter(ctx); },
-                   true});
+    const auto pyramid = graph.create<Marker>("tsm_pyramid");
+    graph.addPass(
+        "tsm_pyramid",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.lightMaps);
+            b.write(pyramid);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            updateTables(ctx);
+            res.setDeviceMs(buildPyramids(ctx, res.read(ctx.lightMaps)));
+        });
+    graph.addPass(
+        "tsm_filter",
+        [&](FrameGraph::Builder& b) {
+            b.read(pyramid);
+            b.read(ctx.lightMaps);
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            res.setDeviceMs(filter(ctx, res.read(ctx.lightMaps), points,
+                                   ctx.radiosityBuffer(res, points.count), res.stats()));
+        });
 }
 
 }  // namespace tsis

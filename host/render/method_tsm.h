@@ -33,8 +33,10 @@ class TsmMethod : public Method {
 
   private:
     void updateTables(FrameContext& ctx);
-    void buildPyramids(FrameContext& ctx);
-    void filter(FrameContext& ctx);
+    // Each returns its device milliseconds.
+    double buildPyramids(const FrameContext& ctx, const LightMapsCl& maps);
+    double filter(const FrameContext& ctx, const LightMapsCl& maps, const SurfacePoints& points,
+                  cl::Buffer& out, FrameStats& stats);
 
     ClRuntime& cl_;
     cl::Kernel level0_, reduce_, filter_;

@@ -57,6 +57,14 @@ double RadialImportance::cdf(double r) const {
     return mix_[k - 1] + t * (mix_[k] - mix_[k - 1]);
 }
 
+std::vector<float> RadialImportance::inverseTable(int entries) const {
+    TSIS_CHECK_GE(entries, 1);
+    std::vector<float> radii(static_cast<size_t>(entries) + 1);
+    for (int k = 0; k <= entries; ++k)
+        radii[static_cast<size_t>(k)] = static_cast<float>(inverse(static_cast<double>(k) / entries));
+    return radii;
+}
+
 double RadialImportance::inverse(double u) const {
     if (u <= 0.0) return 0.0;
     if (u >= 1.0) return rMax();

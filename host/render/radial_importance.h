@@ -26,6 +26,9 @@ class RadialImportance {
     // whatever its magnitude. cdf(rMax) = 1; inverse(u) for u in the unit interval.
     double cdf(double r) const;
     double inverse(double u) const;
+    // inverse(k / entries) for k = 0 … entries: `entries` equal-probability
+    // intervals (a draw picks one uniformly and a radius linearly inside it).
+    std::vector<float> inverseTable(int entries) const;
 
   private:
     std::vector<double> r_;        // cell edges

@@ -3,10 +3,24 @@
 #include <algorithm>
 
 #include "render/method.h"
-#include "render/profiles.h"
 #include "util/error.h"
 
 namespace tsis {
+
+RdPart parseRdPart(const std::string& name) {
+    if (name == "full") return RdPart::Full;
+    if (name == "local") return RdPart::Local;
+    if (name == "global") return RdPart::Global;
+    fail("--rd-part '", name, "': expected full, local or global");
+}
+
+const char* rdPartName(RdPart part) {
+    switch (part) {
+        case RdPart::Local: return "local";
+        case RdPart::Global: return "global";
+        default: return "full";
+    }
+}
 
 void validateRenderOptions(const RenderOptions& o) {
     const std::vector<std::string> names = methodNames();
@@ -28,7 +42,7 @@ void validateRenderOptions(const RenderOptions& o) {
     if (o.pyramidStride < 0 || o.pyramidStride > 16)
         fail("--pyramid-stride ", o.pyramidStride, " is outside 0 to 16 (0: automatic)");
     // The checks the methods make when they run (method_hybrid, method_mis, method_ltsm).
-    const RdPart part = parseRdPart(o.rdPart);
+    const RdPart part = o.rdPart;
     if (part != RdPart::Full && o.method == "hybrid")
         fail("--rd-part applies to tsis and ltsm; the hybrid always splits the full Rd");
     if (part != RdPart::Full && o.method == "mis")

@@ -6,6 +6,12 @@
 
 namespace tsis {
 
+// What tsis and ltsm integrate: Rd, Rd·Wl or Rd·Wg (the hybrid's split).
+enum class RdPart { Full, Local, Global };
+// "full", "local" or "global"; throws tsis::Error for anything else.
+RdPart parseRdPart(const std::string& name);
+const char* rdPartName(RdPart part);
+
 struct RenderOptions {
     std::string method = "pyramid";  // the most accurate per ms measured (README)
     int width = 512, height = 512;
@@ -22,7 +28,7 @@ struct RenderOptions {
     // Hybrid split (DESIGN §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
     double rpBound = 0.1;
     double rpK = 1.5;
-    std::string rdPart = "full";  // tsis/ltsm integrate Rd, Rd·Wl ("local") or Rd·Wg ("global")
+    RdPart rdPart = RdPart::Full;  // tsis/ltsm: Rd, Rd·Wl or Rd·Wg
     int ltsmRings = 4;            // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light

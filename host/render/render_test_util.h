@@ -15,6 +15,7 @@
 #include "physics/dipole.h"
 #include "physics/fresnel.h"
 #include "physics/material.h"
+#include "compare/image_compare.h"
 #include "render/renderer.h"
 
 namespace tsis::test {
@@ -102,13 +103,6 @@ inline glm::dvec3 planeClosedForm(const Material& m) {
     return fresnelTransmittance(m.eta, 1.0) * Dipole(m).totalReflectance();
 }
 
-// A number set in a frame's stats (FrameStats::set); -1 when absent.
-inline double statValue(const FrameStats& stats, const std::string& key) {
-    for (const auto& [k, v] : stats.values)
-        if (k == key) return v.number();
-    return -1;
-}
-
 // Pixels with coverage.
 inline size_t coveredPixels(const FrameResult& f) {
     size_t n = 0;
@@ -131,20 +125,10 @@ inline glm::dvec3 meanRadiosity(const FrameResult& f) {
 }
 
 // RMSE over covered pixels and channels of the radiosity, relative to the
-// reference's mean.
+// reference's mean (tsis compare's rel_rmse).
 inline double relativeRmse(const FrameResult& f, const FrameResult& ref) {
-    double se = 0, sum = 0;
-    size_t n = 0;
-    for (int y = 0; y < ref.height; ++y)
-        for (int x = 0; x < ref.width; ++x)
-            if (ref.coverage.at(x, y, 0) > 0)
-                for (int c = 0; c < 3; ++c) {
-                    const double d = f.radiosity.at(x, y, c) - ref.radiosity.at(x, y, c);
-                    se += d * d;
-                    sum += ref.radiosity.at(x, y, c);
-                    ++n;
-                }
-    return n && sum > 0 ? std::sqrt(se / n) / (sum / n) : 0.0;
+    return compareImages(f.radiosity, ref.radiosity, &ref.coverage, "frame", "reference")
+        .metrics.relRmse;
 }
 
 // Relative RMSE of each method against the ground truth (--method reference),

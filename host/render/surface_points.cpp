@@ -9,7 +9,7 @@
 
 #include "physics/fresnel.h"
 #include "render/ray_caster.h"
-#include "render/renderer.h"
+#include "render/frame_keys.h"
 #include "tsis_shared.h"
 #include "util/error.h"
 #include "util/parallel.h"
@@ -24,15 +24,6 @@ namespace {
 // mesh's bounding-box diagonal: far above float rounding of the positions
 // (~1e-7 of the size), far below any feature the dipole resolves.
 constexpr double kShadowOffset = 1e-4;
-
-template <typename T>
-void hashValue(uint64_t& h, const T& v) {
-    const auto* p = reinterpret_cast<const unsigned char*>(&v);
-    for (size_t i = 0; i < sizeof(T); ++i) {
-        h ^= p[i];
-        h *= 1099511628211ull;
-    }
-}
 
 double boundingDiagonal(const Mesh& mesh) {
     if (mesh.positions.empty()) return 0.0;
@@ -133,7 +124,7 @@ glm::dvec2 centroid(const glm::dvec2 (&c)[3]) {
 }
 
 double luminance(const glm::dvec3& c) {
-    return TSIS_LUMA_R * c.x + TSIS_LUMA_G * c.y + TSIS_LUMA_B * c.z;
+    return TSIS_LUMINANCE(c.x, c.y, c.z);
 }
 
 // E at a point (DESIGN §2) and the lights whose shadow rays are blocked there.
@@ -385,7 +376,7 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
         TSIS_CHECK_GE(k, 0);  // a point was dropped only because one was near
         Cell& c = cells[k];
         const glm::dvec3 f = glm::dvec3(s.irradiance) * static_cast<double>(s.area);
-        const double y = TSIS_LUMA_R * f.x + TSIS_LUMA_G * f.y + TSIS_LUMA_B * f.z;
+        const double y = TSIS_LUMINANCE(f.x, f.y, f.z);
         c.area += s.area;
         c.flux += f;
         c.weight += y;
@@ -409,15 +400,9 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
 }
 
 bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label) {
-    uint64_t key = meshHash(scene.mesh);
-    for (const Light& l : scene.lights) {
-        hashValue(key, l.type);
-        hashValue(key, l.vec);
-        hashValue(key, l.rgb);
-        hashValue(key, l.shadows);
-    }
-    hashValue(key, scene.material.eta);
-    hashValue(key, spacing);
+    Hasher h(meshHash(scene.mesh));
+    hashIrradiance(h, scene);
+    const uint64_t key = h.add(spacing).digest();
     if (valid_ && key == key_) return false;
     Timer t;
     {

@@ -10,7 +10,7 @@
 
 #include "mesh/mesh.h"
 #include "physics/material.h"
-#include "render/scene.h"
+#include "scene/scene.h"
 
 namespace tsis {
 

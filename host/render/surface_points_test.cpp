@@ -10,6 +10,7 @@
 #include "mesh/builtin.h"
 #include "physics/fresnel.h"
 #include "render/ray_caster.h"
+#include "tsis_shared.h"
 
 namespace tsis {
 namespace {
@@ -162,7 +163,7 @@ TEST(SurfacePoints, PoissonThinningKeepsDistanceAndConservesAreaAndFlux) {
         glm::dvec3 m(0.0);
         for (const SurfacePoint& p : s) {
             const glm::dvec3 f = glm::dvec3(p.irradiance) * static_cast<double>(p.area);
-            m += (0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z) * glm::dvec3(p.position);
+            m += TSIS_LUMINANCE(f.x, f.y, f.z) * glm::dvec3(p.position);
         }
         return m;
     };

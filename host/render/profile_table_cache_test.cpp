@@ -1,4 +1,4 @@
-#include "render/dipole_table.h"
+#include "render/profile_table_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ namespace {
 // an object whose bounding sphere has diameter rMax are rarely further apart;
 // beyond, Rd is < 1e-9 of its peak for these materials).
 double worstRelativeError(const Material& m, double rMax) {
-    DipoleTable t;
+    ProfileTableCache t;
     EXPECT_TRUE(t.update(m, rMax));
     EXPECT_FALSE(t.update(m, rMax)) << "unchanged material: kept";
     const Dipole d(m);
@@ -30,7 +30,7 @@ double worstRelativeError(const Material& m, double rMax) {
     return worst;
 }
 
-TEST(DipoleTable, RelativeErrorBelow1e5At10mmAnd1e4At30mm) {
+TEST(ProfileTableCache, RelativeErrorBelow1e5At10mmAnd1e4At30mm) {
     for (const char* name : {"marble", "skin1", "skimmilk", "ketchup"}) {
         const double e10 = worstRelativeError(presetMaterial(name), 10.0);
         const double e30 = worstRelativeError(presetMaterial(name), 30.0);
@@ -41,8 +41,22 @@ TEST(DipoleTable, RelativeErrorBelow1e5At10mmAnd1e4At30mm) {
     }
 }
 
-TEST(DipoleTable, RetabulatesWhenMaterialOrRangeChanges) {
-    DipoleTable t;
+TEST(ProfileTableCache, KeysKeepEveryDigit) {
+    // A size change in the 8th digit (which a 6-decimal key would round away)
+    // is a new range, and a new table.
+    ProfileTableCache t;
+    const Material m = presetMaterial("marble");
+    EXPECT_TRUE(t.update(m, 10.0));
+    EXPECT_TRUE(t.update(m, 10.0000001));
+    EXPECT_TRUE(t.update(m, std::nextafter(10.0000001, 11.0)));
+    EXPECT_FALSE(t.update(m, std::nextafter(10.0000001, 11.0)));
+    Material n = m;
+    n.sigmaA.y = std::nextafter(n.sigmaA.y, 1.0);
+    EXPECT_TRUE(t.update(n, std::nextafter(10.0000001, 11.0)));
+}
+
+TEST(ProfileTableCache, RetabulatesWhenMaterialOrRangeChanges) {
+    ProfileTableCache t;
     Material m = presetMaterial("marble");
     EXPECT_TRUE(t.update(m, 10.0));
     EXPECT_TRUE(t.update(m, 20.0));

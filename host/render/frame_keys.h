@@ -1,0 +1,30 @@
+// The keys that decide what a frame may reuse from the last one: equal keys,
+// equal contents. Each key covers everything its contents depend on.
+#pragma once
+
+#include <cstdint>
+
+#include "mesh/mesh.h"
+#include "render/render_options.h"
+#include "scene/scene.h"
+#include "util/hash.h"
+
+namespace tsis {
+
+// The mesh's geometry and UVs: decides when to re-upload it.
+uint64_t meshHash(const Mesh& mesh);
+
+// The lights field by field, and η (Fresnel at entry): what the irradiance
+// on the surface depends on besides the mesh.
+void hashIrradiance(Hasher& h, const Scene& scene);
+
+// Everything the light maps and the flux atlas depend on: the mesh, the
+// lights, η and the two resolutions.
+uint64_t lightingKey(const Scene& scene, const RenderOptions& options, uint64_t meshHash);
+
+// Everything that changes the radiosity a frame computes, except the sample
+// set: frames with equal keys may be averaged. A new option that changes the
+// radiosity belongs here too.
+uint64_t accumulationKey(const Scene& scene, const RenderOptions& options, uint64_t lightingKey);
+
+}  // namespace tsis

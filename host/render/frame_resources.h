@@ -1,0 +1,63 @@
+// The data a frame's passes hand each other through the frame graph (each is
+// the T of a FrameGraphId<T>; render/method.h lists the frame's handles).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "cl/cl_runtime.h"
+#include "gl/light_view.h"
+
+namespace tsis {
+
+// A CL buffer kept across frames and grown when a frame needs more.
+struct GrowingBuffer {
+    cl::Buffer buffer;
+    size_t capacity = 0;
+    cl::Buffer& reserve(const cl::Context& context, size_t bytes) {
+        if (capacity < bytes || capacity == 0) {
+            capacity = std::max<size_t>(bytes, 16);
+            buffer = cl::Buffer(context, CL_MEM_READ_WRITE, capacity);
+        }
+        return buffer;
+    }
+};
+
+// An atlas on the CL side: res² float4, atlas row order. `version` changes
+// whenever the contents do (the flux with the lighting, the geometry with the
+// mesh or the resolution), so methods can keep what they derived from it.
+struct AtlasCl {
+    cl::Buffer buffer;
+    uint64_t version = 0;
+};
+
+// The covered camera pixels, packed.
+struct SurfacePoints {
+    int count = 0;
+    cl::Buffer xyz;              // count float4 (xyz of each covered pixel)
+    std::vector<float> host;     // the same float4s on the host
+    std::vector<int> pixel;      // GL pixel index y*width+x (row 0 = bottom)
+};
+
+// The camera's G-buffer on the CL side: width*height float4 each, GL row order.
+struct CameraBuffersCl {
+    cl::Buffer position;    // xyz, w = coverage
+    cl::Buffer normal;      // xyz
+    cl::Buffer irradiance;  // E rgb at the pixel's surface point (DESIGN §2)
+};
+
+// The light views on the CL side: per light resolution² float4 (GL row order).
+struct LightMapsCl {
+    const std::vector<LightView>* views = nullptr;  // matrices in views[i].viewProj
+    std::vector<cl::Buffer> flux;      // flux per texel rgb (DESIGN §2), a = covered
+    std::vector<cl::Buffer> position;  // xyz, w = distance to the light (mm)
+};
+
+// Radiosity B of every covered pixel, on the host: width*height RGBA, GL row
+// order, a = 1 where covered.
+struct RadiosityImage {
+    std::vector<float> rgba;
+};
+
+}  // namespace tsis

@@ -1,0 +1,158 @@
+#include "render/gl_cl_staging.h"
+
+#include <cstring>
+
+namespace tsis {
+
+namespace {
+
+constexpr size_t kTexelBytes = 4 * sizeof(float);
+
+// Blocking: the host vector dies when the pass returns.
+void upload(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data) {
+    if (!data.empty())
+        queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, data.size() * sizeof(float), data.data());
+}
+
+}  // namespace
+
+void GlClStaging::declare(FrameGraph& graph, FrameContext& ctx) {
+    ctx.fluxAtlas = graph.create<AtlasCl>("flux_atlas_cl");
+    ctx.positionAtlas = graph.create<AtlasCl>("position_atlas_cl");
+    ctx.normalAtlas = graph.create<AtlasCl>("normal_atlas_cl");
+    ctx.points = graph.create<SurfacePoints>("points_cl");
+    ctx.gbuffer = graph.create<CameraBuffersCl>("gbuffer_cl");
+    ctx.lightMaps = graph.create<LightMapsCl>("light_maps_cl");
+    ctx.radiosity = graph.import("radiosity_cl", radiosity_);
+}
+
+void GlClStaging::addAtlasUpload(FrameGraph& graph, const FrameContext& ctx, const char* name,
+                                 FrameGraphId<GlTarget> source, int attachment,
+                                 GrowingBuffer& buffer, uint64_t& uploaded,
+                                 FrameGraphId<AtlasCl> out) {
+    graph.addPass(
+        name,
+        [&](FrameGraph::Builder& b) {
+            b.read(source);
+            b.write(out);
+        },
+        [&ctx, source, attachment, &buffer, &uploaded, out](FrameGraph::Resources& res) {
+            const GlTarget& gl = res.read(source);
+            if (gl.version != uploaded) {
+                const std::vector<float> texels = gl.target->readRGBA(attachment);
+                upload(ctx.cl->queue(),
+                       buffer.reserve(ctx.cl->context(), texels.size() * sizeof(float)), texels);
+                uploaded = gl.version;
+                res.addBytes(static_cast<long long>(texels.size() * sizeof(float)));
+            } else {
+                res.addBytes(0);
+            }
+            res.write(out) = {buffer.buffer, gl.version};
+        });
+}
+
+void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl) {
+    // The flux atlas crosses whenever the lighting changed; the geometry
+    // (position; normal, w = texel area) only with the mesh or resolution.
+    addAtlasUpload(graph, ctx, "gl_to_cl_flux_atlas", gl.fluxAtlas, 0, fluxAtlas_, fluxUploaded_,
+                   ctx.fluxAtlas);
+    addAtlasUpload(graph, ctx, "gl_to_cl_position_atlas", gl.geometryAtlas, 0, positionAtlas_,
+                   positionUploaded_, ctx.positionAtlas);
+    addAtlasUpload(graph, ctx, "gl_to_cl_normal_atlas", gl.geometryAtlas, 1, normalAtlas_,
+                   normalUploaded_, ctx.normalAtlas);
+    // Only covered pixels cross, packed (xyz per point).
+    graph.addPass(
+        "gl_to_cl_points",
+        [&](FrameGraph::Builder& b) {
+            b.read(gl.gbuffer);
+            b.write(ctx.points);
+        },
+        [this, &ctx, gl](FrameGraph::Resources& res) {
+            const std::vector<float> position = res.read(gl.gbuffer).target->readRGBA(0);
+            SurfacePoints& p = res.write(ctx.points);
+            for (int i = 0; i < ctx.width * ctx.height; ++i)
+                if (position[static_cast<size_t>(i) * 4 + 3] > 0) {
+                    p.pixel.push_back(i);
+                    p.host.insert(p.host.end(), position.begin() + i * 4,
+                                  position.begin() + i * 4 + 4);
+                }
+            p.count = static_cast<int>(p.pixel.size());
+            p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
+            upload(ctx.cl->queue(), p.xyz, p.host);
+            res.addBytes(static_cast<long long>(p.host.size() * sizeof(float)));
+        });
+    // Full-resolution camera buffers, for methods that work in image space.
+    graph.addPass(
+        "gl_to_cl_gbuffer",
+        [&](FrameGraph::Builder& b) {
+            b.read(gl.gbuffer);
+            b.write(ctx.gbuffer);
+        },
+        [this, &ctx, gl](FrameGraph::Resources& res) {
+            const RenderTarget& target = *res.read(gl.gbuffer).target;
+            const size_t bytes = static_cast<size_t>(ctx.width) * ctx.height * kTexelBytes;
+            CameraBuffersCl& out = res.write(ctx.gbuffer);
+            cl::Buffer* dst[3] = {&out.position, &out.normal, &out.irradiance};
+            for (int i = 0; i < 3; ++i) {
+                *dst[i] = gbuffer_[i].reserve(ctx.cl->context(), bytes);
+                upload(ctx.cl->queue(), *dst[i], target.readRGBA(i));
+                res.addBytes(static_cast<long long>(bytes));
+            }
+        });
+    graph.addPass(
+        "gl_to_cl_light_maps",
+        [&](FrameGraph::Builder& b) {
+            b.read(gl.lights);
+            b.write(ctx.lightMaps);
+        },
+        [this, &ctx, gl](FrameGraph::Resources& res) {
+            const GlLights& lights = res.read(gl.lights);
+            const size_t bytes =
+                static_cast<size_t>(ctx.lightResolution) * ctx.lightResolution * kTexelBytes;
+            const bool changed = lights.version != lightsUploaded_;
+            LightMapsCl& out = res.write(ctx.lightMaps);
+            out.views = lights.views;
+            lightMaps_.resize(2 * lights.views->size());
+            res.addBytes(0);
+            for (size_t l = 0; l < lights.views->size(); ++l)
+                for (int i = 0; i < 2; ++i) {
+                    GrowingBuffer& b = lightMaps_[2 * l + static_cast<size_t>(i)];
+                    if (changed) {
+                        upload(ctx.cl->queue(), b.reserve(ctx.cl->context(), bytes),
+                               (*lights.views)[l].target->readRGBA(i));
+                        res.addBytes(static_cast<long long>(bytes));
+                    }
+                    (i == 0 ? out.flux : out.position).push_back(b.buffer);
+                }
+            lightsUploaded_ = lights.version;
+        });
+}
+
+FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph, const FrameContext& ctx) {
+    const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
+    graph.addPass(
+        "read_radiosity",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.points);
+            b.read(ctx.radiosity);
+            b.write(image);
+        },
+        [&ctx, image](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            std::vector<float> packed(static_cast<size_t>(points.count) * 4);
+            if (!packed.empty())
+                ctx.cl->queue().enqueueReadBuffer(res.read(ctx.radiosity).buffer, CL_TRUE, 0,
+                                                  packed.size() * sizeof(float), packed.data());
+            std::vector<float>& rgba = res.write(image).rgba;
+            rgba.assign(static_cast<size_t>(ctx.width) * ctx.height * 4, 0.0f);
+            for (size_t k = 0; k < points.pixel.size(); ++k) {
+                const size_t i = static_cast<size_t>(points.pixel[k]) * 4;
+                std::memcpy(&rgba[i], &packed[k * 4], 3 * sizeof(float));
+                rgba[i + 3] = 1.0f;
+            }
+            res.addBytes(static_cast<long long>(packed.size() * sizeof(float)));
+        });
+    return image;
+}
+
+}  // namespace tsis

@@ -1,0 +1,38 @@
+// The hand-off between GL and CL. OSMesa + PoCL have no cl_khr_gl_sharing, so
+// render targets are read back and written to CL buffers — each only when its
+// contents changed (versions), the camera's covered pixels packed — and the
+// methods' radiosity is read back to the host for the composite.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/frame_graph.h"
+#include "render/frame_resources.h"
+#include "render/method.h"
+#include "render/raster_passes.h"
+
+namespace tsis {
+
+class GlClStaging {
+  public:
+    // Declares the CL-side resources in ctx (the handles methods read and
+    // the radiosity they write), before any pass is added.
+    void declare(FrameGraph& graph, FrameContext& ctx);
+    // The uploads that write ctx's handles from the GL targets.
+    void addUploads(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl);
+    // The methods' radiosity, back into a width×height image.
+    FrameGraphId<RadiosityImage> addReadback(FrameGraph& graph, const FrameContext& ctx);
+
+  private:
+    // One attachment of a GL target into a CL buffer, when its version changed.
+    void addAtlasUpload(FrameGraph& graph, const FrameContext& ctx, const char* name,
+                        FrameGraphId<GlTarget> source, int attachment, GrowingBuffer& buffer,
+                        uint64_t& uploaded, FrameGraphId<AtlasCl> out);
+
+    GrowingBuffer fluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_, gbuffer_[3];
+    std::vector<GrowingBuffer> lightMaps_;
+    uint64_t fluxUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0, lightsUploaded_ = 0;
+};
+
+}  // namespace tsis

@@ -1,0 +1,154 @@
+#include "render/raster_passes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tsis_shared.h"
+
+namespace tsis {
+
+float logAverageLuminance(const std::vector<float>& rgba) {
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        if (rgba[i + 3] <= 0) continue;
+        double y = TSIS_LUMINANCE(rgba[i], rgba[i + 1], rgba[i + 2]);
+        sum += std::log(1e-12 + std::max(0.0, y));
+        ++n;
+    }
+    return n ? static_cast<float>(std::exp(sum / static_cast<double>(n))) : 1.0f;
+}
+
+void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
+    if (gpuMesh_ && hash == meshHash_) return;
+    gpuMesh_ = std::make_unique<GpuMesh>(mesh);
+    meshHash_ = hash;
+}
+
+RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx,
+                                      uint64_t meshHash, uint64_t lighting,
+                                      FrameGraphId<LightMapsCl> lightMapsCl,
+                                      FrameGraphId<CameraBuffersCl> gbufferCl) {
+    RasterHandles h;
+    h.mesh = graph.create<const GpuMesh*>("mesh", nullptr);
+    h.lights = graph.create<GlLights>("light_views");
+    h.geometryAtlas = graph.create<GlTarget>("geometry_atlas");
+    h.fluxAtlas = graph.create<GlTarget>("flux_atlas");
+    h.gbuffer = graph.create<GlTarget>("gbuffer");
+    const float eta = static_cast<float>(ctx.scene->material.eta);
+
+    graph.addPass(
+        "upload_mesh", [&](FrameGraph::Builder& b) { b.write(h.mesh); },
+        [this, &ctx, meshHash, h](FrameGraph::Resources& res) {
+            uploadMesh(ctx.scene->mesh, meshHash);
+            res.write(h.mesh) = gpuMesh_.get();
+        });
+    graph.addPass(
+        "gl_light_view",
+        [&](FrameGraph::Builder& b) {
+            b.read(h.mesh);
+            b.write(h.lights);
+        },
+        [this, &graph, &ctx, lighting, eta, lightMapsCl, h](FrameGraph::Resources& res) {
+            // Flux and position maps only when a light-view method reads them.
+            const bool maps = graph.isRead(lightMapsCl);
+            if (lightViewKey_ != lighting || !(lightMapsMade_ || !maps)) {
+                lights_.clear();
+                for (const Light& l : ctx.scene->lights)
+                    lights_.push_back(
+                        makeLightView(l, ctx.boundingRadius, ctx.lightResolution, maps));
+                lightMapsMade_ = maps;
+                lightPass_.run(*res.read(h.mesh), lights_, eta);
+                glFinish();
+                lightViewKey_ = lighting;
+                ++lightsVersion_;
+            }
+            res.write(h.lights) = {&lights_, &lightPass_.shadows(), lightsVersion_};
+        });
+    // The geometry atlas depends on the mesh and resolution only: made once.
+    graph.addPass(
+        "gl_geometry_atlas",
+        [&](FrameGraph::Builder& b) {
+            b.read(h.mesh);
+            b.write(h.geometryAtlas);
+        },
+        [this, &ctx, h](FrameGraph::Resources& res) {
+            if (geometryKey_ != std::make_pair(meshHash_, ctx.atlasResolution)) {
+                geometryAtlasPass_.run(*res.read(h.mesh), ctx.atlasResolution);
+                glFinish();
+                geometryKey_ = {meshHash_, ctx.atlasResolution};
+                ++geometryVersion_;
+            }
+            res.write(h.geometryAtlas) = {&geometryAtlasPass_.target(), geometryVersion_};
+        });
+    graph.addPass(
+        "gl_flux_atlas",
+        [&](FrameGraph::Builder& b) {
+            b.read(h.geometryAtlas);
+            b.read(h.lights);
+            b.write(h.fluxAtlas);
+        },
+        [this, lighting, eta, h](FrameGraph::Resources& res) {
+            if (fluxKey_ != lighting) {
+                const GlLights& lights = res.read(h.lights);
+                fluxAtlasPass_.run(*res.read(h.geometryAtlas).target, *lights.views,
+                                   *lights.shadows, eta);
+                glFinish();
+                fluxKey_ = lighting;
+                ++fluxVersion_;
+            }
+            res.write(h.fluxAtlas) = {&fluxAtlasPass_.target(), fluxVersion_};
+        });
+    graph.addPass(
+        "gl_gbuffer",
+        [&](FrameGraph::Builder& b) {
+            b.read(h.mesh);
+            b.read(h.lights);
+            b.write(h.gbuffer);
+        },
+        [this, &graph, &ctx, eta, gbufferCl, h](FrameGraph::Resources& res) {
+            const GlLights& lights = res.read(h.lights);
+            gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, eta, ctx.viewProj,
+                             ctx.width, ctx.height, graph.isRead(gbufferCl));
+            glFinish();
+            res.write(h.gbuffer) = {&gbufferPass_.target(), ++gbufferVersion_};
+        });
+    return h;
+}
+
+FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const FrameContext& ctx,
+                                                    const RasterHandles& gl,
+                                                    FrameGraphId<RadiosityImage> radiosity) {
+    const FrameGraphId<FrameImage> image = graph.create<FrameImage>("image");
+    graph.addPass(
+        "composite",
+        [&](FrameGraph::Builder& b) {
+            b.read(radiosity);
+            b.read(gl.gbuffer);
+            b.read(gl.lights);
+            b.write(image);
+        },
+        [this, &ctx, gl, radiosity, image](FrameGraph::Resources& res) {
+            const RenderOptions& o = *ctx.options;
+            const float eta = static_cast<float>(ctx.scene->material.eta);
+            const RenderTarget& gbuffer = *res.read(gl.gbuffer).target;
+            const GlLights& lights = res.read(gl.lights);
+            FrameImage& out = res.write(image);
+            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, eta);
+            out.radiance = compositePass_.radianceTarget().readRGBA(0);
+            out.lavg = logAverageLuminance(out.radiance);
+            compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, eta, o.key,
+                                   out.lavg, o.specular ? o.specularKs : 0.0f, o.shininess);
+            const std::vector<unsigned char> rgba = compositePass_.colorTarget().readRGBA8(0);
+            const int w = ctx.width, h = ctx.height;
+            out.rgb8.resize(static_cast<size_t>(w) * h * 3);
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        out.rgb8[(static_cast<size_t>(h - 1 - y) * w + x) * 3 + c] =
+                            rgba[(static_cast<size_t>(y) * w + x) * 4 + c];
+        });
+    return image;
+}
+
+}  // namespace tsis

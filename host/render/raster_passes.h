@@ -1,0 +1,83 @@
+// The GL side of a frame (gl/passes.h) as frame-graph passes: the mesh upload,
+// the light views, the geometry and flux atlases, the camera G-buffer and the
+// composite. Each is redone only when what it depends on changed; the
+// versions it hands on change exactly when its contents do.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "gl/gpu_mesh.h"
+#include "gl/passes.h"
+#include "render/frame_graph.h"
+#include "render/frame_resources.h"
+#include "render/method.h"
+
+namespace tsis {
+
+// A GL render target a pass wrote, and the version of its contents.
+struct GlTarget {
+    const RenderTarget* target = nullptr;
+    uint64_t version = 0;
+};
+
+struct GlLights {
+    const std::vector<LightView>* views = nullptr;
+    const ShadowMapArray* shadows = nullptr;
+    uint64_t version = 0;  // changes whenever the views are drawn again
+};
+
+// The tone-mapped frame and the radiance it was made from.
+struct FrameImage {
+    std::vector<uint8_t> rgb8;      // sRGB, row 0 = top
+    std::vector<float> radiance;    // RGBA, GL row order
+    float lavg = 1;                 // log-average luminance of the radiance
+};
+
+struct RasterHandles {
+    FrameGraphId<const GpuMesh*> mesh;
+    FrameGraphId<GlLights> lights;
+    FrameGraphId<GlTarget> geometryAtlas, fluxAtlas, gbuffer;
+};
+
+// The log-average luminance (Reinhard's L_avg) of RGBA pixels whose alpha > 0.
+float logAverageLuminance(const std::vector<float>& rgba);
+
+class RasterPasses {
+  public:
+    // Adds the passes up to the G-buffer. `lightMapsCl` and `gbufferCl` say
+    // (through FrameGraph::isRead) whether the light views need their flux and
+    // position maps and the G-buffer its irradiance.
+    RasterHandles addPasses(FrameGraph& graph, const FrameContext& ctx, uint64_t meshHash,
+                            uint64_t lightingKey, FrameGraphId<LightMapsCl> lightMapsCl,
+                            FrameGraphId<CameraBuffersCl> gbufferCl);
+    // Radiance L = Ft/π·B, then tone mapping, the Phong highlight and sRGB.
+    FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
+                                          const RasterHandles& gl,
+                                          FrameGraphId<RadiosityImage> radiosity);
+    // Whether the light views of the last frame were drawn for `lightingKey`.
+    bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
+    // Forget every lighting result (--no-reuse-lighting).
+    void invalidateLighting() { lightViewKey_ = fluxKey_ = 0; }
+
+  private:
+    void uploadMesh(const Mesh& mesh, uint64_t hash);
+
+    LightViewPass lightPass_;
+    GeometryAtlasPass geometryAtlasPass_;
+    FluxAtlasPass fluxAtlasPass_;
+    GBufferPass gbufferPass_;
+    CompositePass compositePass_;
+    std::unique_ptr<GpuMesh> gpuMesh_;
+    uint64_t meshHash_ = 0;
+    std::vector<LightView> lights_;
+    bool lightMapsMade_ = false;  // the light views have flux and position maps
+    // What the targets hold: lighting keys (0 = nothing) and versions.
+    uint64_t lightViewKey_ = 0, fluxKey_ = 0;
+    std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
+    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0;
+};
+
+}  // namespace tsis
