@@ -20,7 +20,6 @@ class GpuMesh {
 
     void draw() const;          // indexed: positions and normals
     void drawUnrolled() const;  // unindexed, with uv and area ratio (the atlas pass)
-    size_t vertexCount() const { return count_; }
 
   private:
     GLuint vao_ = 0, vbo_ = 0;                          // unindexed

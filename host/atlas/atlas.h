@@ -84,12 +84,6 @@ AtlasStats measureAtlas(const Mesh& meshWithUVs, int resolution);
 // seconds, from_cache.
 Json atlasStatsJson(const AtlasStats& stats);
 
-// The names the `tsis atlas` issue uses.
-using AtlasReport = AtlasStats;
-inline Json atlasReportJson(const AtlasReport& report) {
-    return atlasStatsJson(report);
-}
-
 // A (2·res)×res PNG: charts in colour on the left, a heat map of log2 r on the
 // right (blue r < 1, white r = 1, red r > 1; saturated at r = 2^∓½ ≈ 0.71 and 1.41).
 // Row 0 is v = 1. Written atomically.

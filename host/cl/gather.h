@@ -29,8 +29,6 @@ class Gatherer {
 
     double lastMs() const;  // CL profiling of the last run (waits for it)
     long long lastEvaluations() const { return lastEvaluations_; }  // count * n
-    int pointsPerItem() const { return width_; }
-    bool interleaved() const { return interleaved_; }
 
   private:
     ClRuntime& cl_;

@@ -34,7 +34,6 @@ class ImportanceSampler {
                         float xi, cl::Buffer& samples);
 
     const cl::Buffer& pyramid() const { return pyramid_; }
-    int pyramidRes() const { return res_; }
     double lastPyramidMs() const;  // CL profiling, all levels (waits for them)
     double lastDrawMs() const;     // waits for the draw
 

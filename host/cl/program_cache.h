@@ -25,7 +25,6 @@ class ProgramCache {
     // the full source text (the parts are separated so "ab"+"c" ≠ "a"+"bc").
     static std::string key(const std::vector<std::string_view>& parts);
 
-    const std::string& dir() const { return dir_; }
     std::string path(const std::string& key) const;  // the file a key lives in
 
     std::optional<std::vector<unsigned char>> load(const std::string& key) const;

@@ -99,6 +99,7 @@ int autoLightResolution(const Scene& scene) {
 }
 
 FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
+    validateRenderOptions(requested);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
