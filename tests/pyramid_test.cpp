@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

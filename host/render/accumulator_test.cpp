@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis {
 namespace {
@@ -75,7 +75,8 @@ TEST(Progressive, AChangeStartsANewMean) {
     scene.material = presetMaterial("skin1");
     EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), 1);
     opt.progressive = false;
-    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"), -1);
+    EXPECT_EQ(test::statValue(test::renderWith(scene, opt, "tsis").stats, "accumulated_frames"),
+              -1);
 }
 
 }  // namespace

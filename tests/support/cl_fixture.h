@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cl/cl_runtime.h"
-#include "util/scoped_env_test_util.h"
+#include "support/scoped_env.h"
 
 namespace tsis::test {
 
