@@ -1,4 +1,4 @@
-// The flux atlas invariant (DESIGN §2): the atlas sums to the flux the object
+// The flux atlas invariant (docs/design.md §2): the atlas sums to the flux the object
 // receives, ∫E dA, integrated here per triangle on the host in double.
 #include <gtest/gtest.h>
 

@@ -132,7 +132,7 @@ TEST(Reference, MatchesAnIndependentDoubleSum) {
 }
 
 // An infinite plane under uniform irradiance E has B = E · Ft(1) · ∫Rd dA (the
-// closed form of DESIGN §2). Plane half-side 12/σtr: the missing tail is
+// closed form of docs/design.md §2). Plane half-side 12/σtr: the missing tail is
 // ~e^-12; the camera looks at a 5 mm window at its centre.
 TEST(Reference, PlaneMatchesClosedFormWithinHalfAPercent) {
     const Scene scene = test::planeScene("skin1", 12.0);

@@ -14,7 +14,7 @@ namespace tsis {
 // Options every command that renders shares (render, compare-style tools, bench).
 const std::vector<OptionSpec>& sceneOptionSpecs();
 
-// Material from --material (default marble) with --sigma-s/--sigma-a/--eta overrides.
+// Material from --material (default skin1) with --sigma-s/--sigma-a/--eta overrides.
 Material materialFromArgs(const Args& args);
 
 // "point:X,Y,Z:R,G,B" or "dir:X,Y,Z:R,G,B".

@@ -1,4 +1,4 @@
-// The interface every rendering method implements (DESIGN §4). A method turns
+// The interface every rendering method implements (docs/design.md §4). A method turns
 // the frame's shared inputs into radiosity B for every covered pixel by adding
 // passes to the frame graph; the renderer owns the GL passes, the hand-offs
 // and the composite around it.
@@ -46,12 +46,12 @@ struct FrameContext {
     glm::vec3 eye{0.0f};
     cl::Buffer gbufferPosition;   // xyz, w = coverage
     cl::Buffer gbufferNormal;     // xyz
-    cl::Buffer gbufferIrradiance; // E rgb at the pixel's surface point (DESIGN §2)
+    cl::Buffer gbufferIrradiance; // E rgb at the pixel's surface point (docs/design.md §2)
 
     // Light views: "light_maps_cl", per light lightResolution² float4 (GL row order);
     // matrices in lights[i].viewProj.
     int lightResolution = 0;
-    std::vector<cl::Buffer> lightFlux;      // flux per texel rgb (DESIGN §2), a = covered
+    std::vector<cl::Buffer> lightFlux;      // flux per texel rgb (docs/design.md §2), a = covered
     std::vector<cl::Buffer> lightPosition;  // xyz, w = distance to the light (mm)
 
     // Progressive accumulation: frames of the same view already averaged, so

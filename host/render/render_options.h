@@ -19,7 +19,7 @@ struct RenderOptions {
     bool specular = true;
     float specularKs = 0.2f;
     float shininess = 40.0f;
-    // Hybrid split (DESIGN §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
+    // Hybrid split (docs/design.md §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
     double rpBound = 0.1;
     double rpK = 1.5;
     std::string rdPart = "full";  // tsis/ltsm integrate Rd, Rd·Wl ("local") or Rd·Wg ("global")
