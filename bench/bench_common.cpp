@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "cli/args.h"
-#include "compare/image_compare.h"
 #include "cli/scene_options.h"
+#include "compare/image_compare.h"
 #include "util/error.h"
 #include "util/output_file.h"
 
@@ -73,12 +73,7 @@ double relativeRmse(const FrameResult& frame, const ReferenceImage& ref) {
 
 double statValue(const FrameStats& stats, const std::string& key) {
     for (const auto& [k, v] : stats.values)
-        if (k == key) {
-            const std::string text = v.dump(0);
-            char* end = nullptr;
-            const double d = std::strtod(text.c_str(), &end);
-            return end != text.c_str() ? d : std::nan("");
-        }
+        if (k == key) return v.is_number() ? v.get<double>() : std::nan("");
     return std::nan("");
 }
 
@@ -143,8 +138,7 @@ std::string fmt(double v, int decimals) {
 }
 
 std::string fmtRange(const Summary& s, int decimals) {
-    return fmt(s.median, decimals) + " (" + fmt(s.min, decimals) + "–" + fmt(s.max, decimals) +
-           ")";
+    return fmt(s.median, decimals) + " (" + fmt(s.min, decimals) + "–" + fmt(s.max, decimals) + ")";
 }
 
 std::string resultsDir() {

@@ -33,8 +33,8 @@ void FrameStats::totalRdEvaluations() {
     bool parts = false;
     for (const auto& [k, v] : values) {
         if (k == key) return;
-        if (v.isNumber() && k.size() > key.size() && k.ends_with("_" + key)) {
-            sum += v.number();
+        if (v.is_number() && k.size() > key.size() && k.ends_with("_" + key)) {
+            sum += v.get<double>();
             parts = true;
         }
     }
@@ -43,15 +43,15 @@ void FrameStats::totalRdEvaluations() {
 
 Json FrameStats::toJson() const {
     Json root = Json::object();
-    for (const auto& [k, v] : values) root.set(k, v);
+    for (const auto& [k, v] : values) root[k] = v;
     Json ms = Json::object();
     Json bytes = Json::object();
     for (const Stage& s : stages) {
-        ms.set(s.name, s.ms);
-        if (s.bytes >= 0) bytes.set(s.name, s.bytes);
+        ms[s.name] = s.ms;
+        if (s.bytes >= 0) bytes[s.name] = s.bytes;
     }
-    root.set("ms", ms);
-    root.set("bytes", bytes);
+    root["ms"] = ms;
+    root["bytes"] = bytes;
     return root;
 }
 

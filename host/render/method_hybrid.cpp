@@ -18,7 +18,7 @@ void HybridMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     local_.addLocalPasses(graph, ctx, local, ctx.radiosity, {"global_radiosity_cl"}, "radiosity_cl",
                           "local_", true);
     Json rp = Json::array();
-    for (int c = 0; c < 3; ++c) rp.push(local.Rp[c]);
+    for (int c = 0; c < 3; ++c) rp.push_back(local.Rp[c]);
     ctx.stats->set("rp", rp);
     ctx.stats->set("rp_k", o.rpK);
 }

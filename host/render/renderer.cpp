@@ -429,7 +429,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.set("covered_pixels", ctx.pointCount);
     stats.set("triangles", static_cast<double>(scene.mesh.triangles.size()));
     Json passes = Json::array();
-    for (const std::string& p : graph.executed()) passes.push(p);
+    for (const std::string& p : graph.executed()) passes.push_back(p);
     stats.set("passes", passes);
     return result;
 }

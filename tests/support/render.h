@@ -105,7 +105,7 @@ inline glm::dvec3 planeClosedForm(const Material& m) {
 // A number set in a frame's stats (FrameStats::set); -1 when absent.
 inline double statValue(const FrameStats& stats, const std::string& key) {
     for (const auto& [k, v] : stats.values)
-        if (k == key) return v.number();
+        if (k == key) return v.is_number() ? v.get<double>() : 0.0;
     return -1;
 }
 
