@@ -135,9 +135,9 @@ TEST_P(LssKernelTest, GatherMatchesHostDoubleSum) {
         const glm::dvec3 xo = test::xyz(pos[size_t(pix)]);
         const double depth = glm::dot(xo - eye, view);
         const double perMm = 1.0 / (depth * cam.pixel_angle);
-        const uint32_t h1 = test::hash(uint32_t(pix) ^ test::hash(seed));
-        const uint32_t h2 = test::hash(h1 + 0x9e3779b9U);
-        const double xi = test::hashUnit(h1), phi = 2.0 * M_PI * test::hashUnit(h2);
+        const uint32_t h1 = tsis_hash(uint32_t(pix) ^ tsis_hash(seed));
+        const uint32_t h2 = tsis_hash(h1 + 0x9e3779b9U);
+        const double xi = tsis_hash_unit(h1), phi = 2.0 * M_PI * tsis_hash_unit(h2);
         const double norm = entries * 2.0 * M_PI / (m * depth * depth);
         for (int k = 0; k < m; ++k) {
             const double tk = (k + xi) * entries / m;

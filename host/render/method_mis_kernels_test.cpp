@@ -279,8 +279,8 @@ TEST_F(MisKernelTest, GatherMatchesHostDoubleSum) {
         }
         // D samples: per light, n points of an R2 sequence shifted by a hash.
         for (int l = 0; l < kLights; ++l) {
-            const uint32_t h = test::hash(uint32_t(j) ^ test::hash(info.seed * 8u + uint32_t(l)));
-            const double s1 = test::hashUnit(h), s2 = test::hashUnit(test::hash(h + 0x9e3779b9U));
+            const uint32_t h = tsis_hash(uint32_t(j) ^ tsis_hash(info.seed * 8u + uint32_t(l)));
+            const double s1 = tsis_hash_unit(h), s2 = tsis_hash_unit(tsis_hash(h + 0x9e3779b9U));
             const double tau = o[l].z, z = zt[l].x, tail = zt[l].y;
             for (int k = 0; k < info.n_dist; ++k) {
                 const double a1 = s1 + 0.7548776662 * k, a2 = s2 + 0.5698402910 * k;

@@ -1,7 +1,8 @@
 // Host double-precision versions of the helpers the kernels share
-// (kernels/hash.h, kernels/light_map.h), written from their formulas, for
-// the kernel tests that compare every output value of a kernel with a host
-// sum. Inputs are the same floats the kernel reads; the arithmetic is double.
+// (kernels/light_map.h), written from their formulas, for the kernel tests
+// that compare every output value of a kernel with a host sum. Inputs are the
+// same floats the kernel reads; the arithmetic is double. (kernels/hash.h is
+// integer arithmetic, exact on both sides: the tests include it as it is.)
 //
 // Discrete choices (which texel, which table cell) are where float and double
 // can part on an unlucky input. The reference counts every such choice that
@@ -23,6 +24,7 @@
 #include <random>
 #include <vector>
 
+#include "hash.h"
 #include "light_map.h"
 #include "tsis_shared.h"
 
@@ -45,19 +47,6 @@ struct Conditioning {
         return a < b;
     }
 };
-
-// kernels/hash.h: Wellons' lowbias32 and its top 24 bits on [0, 1).
-inline uint32_t hash(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
-inline double hashUnit(uint32_t h) {
-    return double(h >> 8) / 16777216.0;
-}
 
 // Y(rgb) with the Rec. 709 weights of tsis_shared.h.
 inline double luminance(const glm::dvec3& c) {
