@@ -18,7 +18,7 @@ PACKAGES=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
   libosmesa6-dev libglm-dev libopenimageio-dev openimageio-tools
   libcgal-dev libeigen3-dev libcgal-demo libtinygltf-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}
 JOBS=${TSIS_JOBS:-$(nproc)}

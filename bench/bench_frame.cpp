@@ -59,12 +59,10 @@ std::vector<double> externalOrbit(const std::string& binary, const std::vector<s
     std::vector<double> ms;
     if (std::system(cmd.c_str()) == 0) {
         std::ifstream in(dir / "s.json");
-        std::stringstream text;
-        text << in.rdbuf();
-        const std::string s = text.str();
-        for (size_t k = s.find("\"render_ms\":"); k != std::string::npos;
-             k = s.find("\"render_ms\":", k + 1))
-            ms.push_back(std::strtod(s.c_str() + k + 12, nullptr));
+        const Json stats = Json::parse(in, nullptr, false);
+        if (!stats.is_discarded() && stats.contains("per_frame"))
+            for (const Json& f : stats["per_frame"])
+                ms.push_back(f.value("render_ms", std::nan("")));
         if (!ms.empty()) ms.erase(ms.begin());
     }
     std::filesystem::remove_all(dir);

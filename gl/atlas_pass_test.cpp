@@ -1,12 +1,12 @@
-// The flux atlas invariant (DESIGN §2): the atlas sums to the flux the object
+// The flux atlas invariant (docs/design.md §2): the atlas sums to the flux the object
 // receives, ∫E dA, integrated here per triangle on the host in double.
 #include <gtest/gtest.h>
 
-#include "flux_reference.h"
 #include "gl/gl_context.h"
 #include "gl/gpu_mesh.h"
 #include "gl/passes.h"
 #include "mesh/builtin.h"
+#include "support/flux_reference.h"
 
 namespace tsis {
 namespace {

@@ -1,4 +1,4 @@
-// The GL passes of a frame (DESIGN §1). Each owns its program and its render
+// The GL passes of a frame (docs/design.md §1). Each owns its program and its render
 // target and is reused across frames; a target is re-made only when its size
 // changes. What each reads and writes is declared where the frame graph
 // schedules it (host/render/renderer.cpp).

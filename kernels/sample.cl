@@ -1,5 +1,5 @@
 /* Importance sampling of the flux atlas by descending the luminance sum
- * pyramid (thesis Algorithm 3.1 as corrected in DESIGN.md section 3). */
+ * pyramid (thesis Algorithm 3.1 as corrected in docs/design.md §3). */
 #include "tsis_shared.h"
 
 /* Sample i takes u_i = frac((i + xi) / n): a shifted regular grid, so the N

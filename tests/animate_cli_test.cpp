@@ -7,7 +7,7 @@
 #include <fstream>
 #include <regex>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

@@ -8,10 +8,10 @@
 #include <filesystem>
 
 #include "atlas/atlas.h"
-#include "flux_reference.h"
 #include "mesh/builtin.h"
 #include "mesh/mesh_io.h"
 #include "render/renderer.h"
+#include "support/flux_reference.h"
 
 namespace tsis {
 namespace {

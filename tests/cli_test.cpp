@@ -8,7 +8,7 @@
 #include <regex>
 #include <sstream>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

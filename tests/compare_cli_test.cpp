@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "image/image_io.h"
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

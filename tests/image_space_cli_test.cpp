@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <thread>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 namespace tsis::test {
 namespace {

@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "test_util.h"
+#include "support/tsis_cli.h"
+#include "util/json.h"
 
 namespace tsis::test {
 namespace {
@@ -26,12 +27,12 @@ double errorAgainstReference(const std::string& scene, const std::string& method
         runTsis("compare " + dir.file("m/radiosity.exr") + " " + dir.file("ref/radiosity.exr") +
                 " --mask " + dir.file("ref/coverage.exr") + " --json");
     EXPECT_EQ(cmp.exitCode, 0) << cmp.err;
-    const size_t k = cmp.out.find("\"rel_rmse\": ");
-    if (k == std::string::npos) {
+    const Json j = Json::parse(cmp.out, nullptr, false);
+    if (j.is_discarded() || !j.contains("rel_rmse")) {
         ADD_FAILURE() << cmp.out;
         return 1.0;
     }
-    return std::stod(cmp.out.substr(k + 12));
+    return j["rel_rmse"].get<double>();
 }
 
 void expectWithinTwoPercent(const std::string& mesh) {

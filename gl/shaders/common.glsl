@@ -3,7 +3,7 @@ const float PI = 3.14159265358979;
 // MAX_LIGHTS: defined before this file by ShaderProgram (TSIS_MAX_LIGHTS).
 
 // Exact unpolarized Fresnel reflectance from air into a medium of relative
-// index eta (DESIGN §2: not Schlick).
+// index eta (docs/design.md §2: not Schlick).
 float fresnelR(float eta, float cosI) {
     cosI = clamp(cosI, 0.0, 1.0);
     float sin2T = (1.0 - cosI * cosI) / (eta * eta);
@@ -14,7 +14,7 @@ float fresnelR(float eta, float cosI) {
 }
 float fresnelT(float eta, float cosI) { return 1.0 - fresnelR(eta, cosI); }
 
-// Lights (DESIGN §2): type 0 = point (vec = position, rgb = intensity),
+// Lights (docs/design.md §2): type 0 = point (vec = position, rgb = intensity),
 // 1 = directional (vec = direction of travel, rgb = irradiance).
 uniform int u_lightCount;
 uniform int u_lightType[MAX_LIGHTS];
@@ -63,7 +63,7 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     return 0.25 * sum;
 }
 
-// E(x) of DESIGN §2, summed over the lights.
+// E(x) of docs/design.md §2, summed over the lights.
 vec3 irradiance(vec3 p, vec3 n) {
     vec3 e = vec3(0.0);
     // A constant trip count (unrolled, so the light uniforms are read at

@@ -1,4 +1,4 @@
-// Flux per atlas texel = E(x) · texel surface area (DESIGN §2), so the atlas
+// Flux per atlas texel = E(x) · texel surface area (docs/design.md §2), so the atlas
 // sums to the total flux the object receives. Runs over the geometry atlas,
 // so a moving light re-shades texels without re-rasterising the mesh.
 uniform sampler2D u_position;

@@ -1,5 +1,5 @@
 // The light's view: depth (the shadow map) plus the flux that lands in each
-// texel (DESIGN §2) and the surface position, for the light-view methods.
+// texel (docs/design.md §2) and the surface position, for the light-view methods.
 // Point light: flux = I · Ft · dω(texel) — the cosine and 1/d² cancel against
 // the area the texel's solid angle covers. Directional: flux = I · Ft · texel area.
 in vec3 v_position;

@@ -1,4 +1,4 @@
-// L = Ft(η, cos θo) / π · B (DESIGN §2), per covered pixel.
+// L = Ft(η, cos θo) / π · B (docs/design.md §2), per covered pixel.
 uniform sampler2D u_radiosity;
 uniform sampler2D u_position;
 uniform sampler2D u_normal;

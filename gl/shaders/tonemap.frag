@@ -1,4 +1,4 @@
-// Reinhard tone map (DESIGN §2: Ls = key·L/Lavg, colour = Ls/(1+Ls)), then Phong
+// Reinhard tone map (docs/design.md §2: Ls = key·L/Lavg, colour = Ls/(1+Ls)), then Phong
 // specular added after tone mapping (thesis §3.2.2), then sRGB encoding.
 uniform sampler2D u_radiance;
 uniform sampler2D u_position;

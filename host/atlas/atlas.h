@@ -1,5 +1,5 @@
 // Texture atlases: every triangle of a mesh gets a place in [0,1]² so that the
-// integral over the surface becomes an integral over texture space (DESIGN §1).
+// integral over the surface becomes an integral over texture space (docs/design.md §1).
 //
 // Pipeline of buildAtlas (host/atlas/atlas.cpp):
 //   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200);

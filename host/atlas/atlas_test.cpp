@@ -12,11 +12,11 @@
 #include <optional>
 #include <sstream>
 
-#include "atlas/atlas_test_util.h"
 #include "atlas/cache.h"
 #include "atlas/chart.h"
+#include "support/atlas_meshes.h"
+#include "support/scoped_env.h"
 #include "util/error.h"
-#include "util/scoped_env_test_util.h"
 
 namespace tsis {
 namespace {

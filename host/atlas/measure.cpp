@@ -1,9 +1,8 @@
 // Atlas quality: distortion r, flips, overlaps, coverage.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-
 #include <glm/geometric.hpp>
+#include <numeric>
 
 #include "atlas/atlas.h"
 #include "atlas/chart.h"
@@ -13,7 +12,8 @@ namespace tsis {
 
 namespace atlas {
 
-void rasterTriangles(const Mesh& mesh, int resolution, const std::function<void(size_t, int, int)>& fn) {
+void rasterTriangles(const Mesh& mesh, int resolution,
+                     const std::function<void(size_t, int, int)>& fn) {
     const double res = resolution;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
@@ -22,10 +22,14 @@ void rasterTriangles(const Mesh& mesh, int resolution, const std::function<void(
         double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
         if (!(area != 0) || !std::isfinite(area)) continue;
         if (area < 0) std::swap(v[1], v[2]);  // counter-clockwise
-        const double xmin = std::min({v[0].x, v[1].x, v[2].x}), xmax = std::max({v[0].x, v[1].x, v[2].x});
-        const double ymin = std::min({v[0].y, v[1].y, v[2].y}), ymax = std::max({v[0].y, v[1].y, v[2].y});
-        const int x0 = std::max(0, int(std::ceil(xmin - 0.5))), x1 = std::min(resolution - 1, int(std::floor(xmax - 0.5)));
-        const int y0 = std::max(0, int(std::ceil(ymin - 0.5))), y1 = std::min(resolution - 1, int(std::floor(ymax - 0.5)));
+        const double xmin = std::min({v[0].x, v[1].x, v[2].x}),
+                     xmax = std::max({v[0].x, v[1].x, v[2].x});
+        const double ymin = std::min({v[0].y, v[1].y, v[2].y}),
+                     ymax = std::max({v[0].y, v[1].y, v[2].y});
+        const int x0 = std::max(0, int(std::ceil(xmin - 0.5))),
+                  x1 = std::min(resolution - 1, int(std::floor(xmax - 0.5)));
+        const int y0 = std::max(0, int(std::ceil(ymin - 0.5))),
+                  y1 = std::min(resolution - 1, int(std::floor(ymax - 0.5)));
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
                 const glm::dvec2 p(x + 0.5, y + 0.5);
@@ -52,7 +56,8 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
     double total3 = 0;
     for (size_t t = 0; t < n; ++t) {
         const glm::uvec3 tr = mesh.triangles[t];
-        const glm::dvec3 p0 = mesh.positions[tr.x], p1 = mesh.positions[tr.y], p2 = mesh.positions[tr.z];
+        const glm::dvec3 p0 = mesh.positions[tr.x], p1 = mesh.positions[tr.y],
+                         p2 = mesh.positions[tr.z];
         a3[t] = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
         const glm::dvec2 u0 = mesh.uvs[tr.x], u1 = mesh.uvs[tr.y], u2 = mesh.uvs[tr.z];
         auv[t] = 0.5 * ((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
@@ -147,7 +152,8 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
         size_t j = i;
         while (j < edges.size() && edges[j].first == edges[i].first) ++j;
         if (j - i == 1) {
-            const uint32_t a = uint32_t(edges[i].first >> 32), b = uint32_t(edges[i].first & 0xffffffffu);
+            const uint32_t a = uint32_t(edges[i].first >> 32),
+                           b = uint32_t(edges[i].first & 0xffffffffu);
             if (mesh.uvs[a] != mesh.uvs[b]) {
                 segs.push_back({glm::dvec2(mesh.uvs[a]), glm::dvec2(mesh.uvs[b]), a, b});
                 segTri.push_back(edges[i].second);
@@ -162,17 +168,17 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
 
 Json atlasStatsJson(const AtlasStats& s) {
     Json j = Json::object();
-    j.set("charts", s.charts);
-    j.set("coverage", s.coverage);
-    j.set("r_wstd", s.rWstd);
-    j.set("r_p01", s.rP01);
-    j.set("r_p99", s.rP99);
-    j.set("r_min", s.rMin);
-    j.set("r_max", s.rMax);
-    j.set("flipped", s.flipped);
-    j.set("overlaps", s.overlaps);
-    j.set("seconds", s.seconds);
-    j.set("from_cache", s.fromCache);
+    j["charts"] = s.charts;
+    j["coverage"] = s.coverage;
+    j["r_wstd"] = s.rWstd;
+    j["r_p01"] = s.rP01;
+    j["r_p99"] = s.rP99;
+    j["r_min"] = s.rMin;
+    j["r_max"] = s.rMax;
+    j["flipped"] = s.flipped;
+    j["overlaps"] = s.overlaps;
+    j["seconds"] = s.seconds;
+    j["from_cache"] = s.fromCache;
     return j;
 }
 

@@ -7,9 +7,9 @@
 #include <functional>
 #include <random>
 
-#include "cl/cl_test_fixture.h"
 #include "cl/importance_sampler.h"
 #include "cl/program_cache.h"
+#include "support/cl_fixture.h"
 #include "util/error.h"
 
 namespace tsis {

@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <random>
 
-#include "cl/cl_test_fixture.h"
-#include "cl/table_test_util.h"
+#include "support/analytic_table.h"
+#include "support/cl_fixture.h"
 
 namespace tsis {
 namespace {

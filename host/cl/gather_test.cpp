@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <random>
 
-#include "cl/cl_test_fixture.h"
-#include "cl/table_test_util.h"
 #include "physics/profile_table.h"
+#include "support/analytic_table.h"
+#include "support/cl_fixture.h"
 
 namespace tsis {
 namespace {

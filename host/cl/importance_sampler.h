@@ -1,6 +1,6 @@
 // Texture-space importance sampling of the flux atlas (thesis ch. 3.2): a sum
 // pyramid of luminance in mipmap order, then N samples by descending it
-// (Algorithm 3.1 as corrected in DESIGN.md §3). Kernels: kernels/pyramid.cl,
+// (Algorithm 3.1 as corrected in docs/design.md §3). Kernels: kernels/pyramid.cl,
 // kernels/sample.cl.
 #pragma once
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <random>
 
-#include "cl/cl_test_fixture.h"
+#include "support/cl_fixture.h"
 
 namespace tsis {
 namespace {

@@ -150,12 +150,12 @@ int runAnimate(const std::vector<std::string>& argv) {
         });
         ms.push_back(t.ms());  // everything: scene update, frame, PNG
         Json j = Json::object();
-        j.set("frame", f);
-        j.set("ms", ms.back());
-        j.set("render_ms", frame.stats.stageMs("total"));
+        j["frame"] = f;
+        j["ms"] = ms.back();
+        j["render_ms"] = frame.stats.stageMs("total");
         // Follows memory over long runs (a test bounds its growth).
-        j.set("rss_mb", residentMegabytes());
-        perFrame.push(j);
+        j["rss_mb"] = residentMegabytes();
+        perFrame.push_back(j);
         progress.update(f + 1);
     }
     progress.finish();
@@ -177,16 +177,17 @@ int runAnimate(const std::vector<std::string>& argv) {
     }
     if (statsPath) {
         Json j = Json::object();
-        j.set("frames", frames);
-        j.set("first_ms", ms[0]);
-        j.set("steady_fps", fps);
-        j.set("method", options.method);
-        j.set("width", options.width);
-        j.set("height", options.height);
-        j.set("samples", options.samples);
-        j.set("per_frame", perFrame);
-        outputs.write(*statsPath,
-                      [&](const std::filesystem::path& file) { writeText(file, j.dump() + "\n"); });
+        j["frames"] = frames;
+        j["first_ms"] = ms[0];
+        j["steady_fps"] = fps;
+        j["method"] = options.method;
+        j["width"] = options.width;
+        j["height"] = options.height;
+        j["samples"] = options.samples;
+        j["per_frame"] = perFrame;
+        outputs.write(*statsPath, [&](const std::filesystem::path& file) {
+            writeText(file, dumpJson(j) + "\n");
+        });
     }
     outputs.commit();
     std::fprintf(stderr, "tsis: %d frames in %s; first %.0f ms, steady %.2f fps\n", frames,

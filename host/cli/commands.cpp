@@ -137,11 +137,11 @@ int runRender(const std::vector<std::string>& argv) {
     }
     if (statsPath) {
         Json j = frame.stats.toJson();
-        j.set("mesh", scene.mesh.name);
-        j.set("material", scene.material.name);
-        j.set("lavg", frame.lavg);
+        j["mesh"] = scene.mesh.name;
+        j["material"] = scene.material.name;
+        j["lavg"] = frame.lavg;
         outputs.write(*statsPath,
-                      [&](const std::filesystem::path& f) { writeText(f, j.dump() + "\n"); });
+                      [&](const std::filesystem::path& f) { writeText(f, dumpJson(j) + "\n"); });
     }
     outputs.commit();
     return 0;
@@ -179,7 +179,7 @@ int runDipole(const std::vector<std::string>& argv) {
     for (double r : radii)
         if (r < 0) fail("--r: radius ", r, " is negative");
     Json report = dipoleReport(m, radii, args.getDouble("rp-bound", 0.1, 1e-9, 1e9));
-    std::cout << report.dump(2) << "\n";
+    std::cout << dumpJson(report) << "\n";
     return 0;
 }
 
@@ -188,7 +188,8 @@ int runAtlas(const std::vector<std::string>& argv) {
         {"mesh", true, false, "M  mesh file, builtin:NAME or a data mesh name (required)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"atlas", true, false, "MODE  auto (default), file or build"},
-        {"atlas-res", true, false, "R  resolution the atlas is made for (default 512, as tsis render)"},
+        {"atlas-res", true, false,
+         "R  resolution the atlas is made for (default 512, as tsis render)"},
         {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
         {"json", false, false, "print the statistics as JSON"},
     };
@@ -223,7 +224,7 @@ int runAtlas(const std::vector<std::string>& argv) {
     }
     Json j = atlasStatsJson(stats);
     if (args.flag("json")) {
-        std::cout << j.dump() << "\n";
+        std::cout << dumpJson(j) << "\n";
     } else {
         std::printf("%s: %zu triangles, %d charts, coverage %.3f\n", mesh.name.c_str(),
                     mesh.triangles.size(), stats.charts, stats.coverage);

@@ -68,7 +68,7 @@ int runCompare(const std::vector<std::string>& argv) {
     if (maskPath) mask = readInput(*maskPath, "mask");
     const Comparison cmp =
         compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB, maskPath.value_or(""));
-    std::cout << (args.flag("json") ? compareJson(cmp.metrics).dump() + "\n"
+    std::cout << (args.flag("json") ? dumpJson(compareJson(cmp.metrics)) + "\n"
                                     : compareTable(cmp.metrics));
     if (heatPath) {
         const double scale = heatMax > 0 ? heatMax : heatmapScale(cmp.relError);

@@ -84,12 +84,12 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
 
 Json compareJson(const CompareMetrics& m) {
     Json j = Json::object();
-    j.set("rmse", m.rmse);
-    j.set("rel_rmse", m.relRmse);
-    j.set("mean_rel_err", m.meanRelErr);
-    j.set("max_abs", m.maxAbs);
-    j.set("psnr", m.psnr);
-    j.set("pixels", m.pixels);
+    j["rmse"] = m.rmse;
+    j["rel_rmse"] = m.relRmse;
+    j["mean_rel_err"] = m.meanRelErr;
+    j["max_abs"] = m.maxAbs;
+    j["psnr"] = m.psnr;
+    j["pixels"] = m.pixels;
     return j;
 }
 

@@ -1,5 +1,5 @@
 // Image files through OpenImageIO. Buffers are top row first (row 0 = top,
-// DESIGN §2); callers holding GL read-backs (bottom row first) reorder them.
+// docs/design.md §2); callers holding GL read-backs (bottom row first) reorder them.
 // Writers write the file they are given; a run's outputs reach their names
 // through util/output_set.h (temporary, then all renamed together).
 #pragma once

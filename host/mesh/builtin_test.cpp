@@ -7,9 +7,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "mesh/mesh_test_util.h"
 #include "mesh/repair.h"
 #include "mesh/uv_check.h"
+#include "support/error_of.h"
 
 namespace tsis {
 namespace {

@@ -24,7 +24,7 @@ struct Mesh {
     double triangleUVArea(size_t t) const;  // unsigned
 };
 
-// DESIGN §2: centre on the bounding-box centre and scale so the bounding-box
+// docs/design.md §2: centre on the bounding-box centre and scale so the bounding-box
 // diagonal equals sizeMm.
 void normalizeMesh(Mesh& mesh, double sizeMm);
 

@@ -6,9 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "mesh/mesh_test_util.h"
 #include "mesh/repair.h"
-#include "util/scoped_env_test_util.h"
+#include "support/error_of.h"
+#include "support/scoped_env.h"
+#include "support/scratch_dir.h"
 
 namespace tsis {
 namespace {
@@ -43,7 +44,7 @@ TEST(LoadMesh, Builtin) {
 TEST(LoadMesh, BareNameSearchesMeshDirFirst) {
     test::ScratchDir dir;
     dir.file("thing.obj", kTriOBJ);
-    ScopedEnv env("TSIS_MESH_DIR", dir.path());
+    ScopedEnv env("TSIS_MESH_DIR", dir.path().string());
     EXPECT_NEAR(loadMesh("thing").surfaceArea(), 2.0, 1e-9);
     dir.file("thing.off", kTriOFF);  // .off is looked for before .obj
     EXPECT_NEAR(loadMesh("thing").surfaceArea(), 0.5, 1e-9);
@@ -51,15 +52,15 @@ TEST(LoadMesh, BareNameSearchesMeshDirFirst) {
 
 TEST(LoadMesh, MissingFilesSayWhereAndWhy) {
     test::ScratchDir dir;
-    ScopedEnv env("TSIS_MESH_DIR", dir.path());
+    ScopedEnv env("TSIS_MESH_DIR", dir.path().string());
     const std::string msg = errorOf([] { loadMesh("no_such_mesh_xyz"); }, "no_such_mesh_xyz");
-    EXPECT_THAT(msg, HasSubstr(dir.path()));
+    EXPECT_THAT(msg, HasSubstr(dir.path().string()));
     EXPECT_THAT(msg, HasSubstr("data/meshes"));
     EXPECT_THAT(msg, HasSubstr("setup.sh"));
     EXPECT_THAT(msg, HasSubstr("CGAL"));
-    const std::string path = dir.path() + "/gone.off";
+    const std::string path = dir.file("gone.off");
     EXPECT_THAT(errorOf([&] { loadMesh(path); }, path), HasSubstr("cannot open"));
-    EXPECT_THAT(errorOf([&] { loadMesh(dir.path() + "/x.3ds"); }), HasSubstr("unknown format"));
+    EXPECT_THAT(errorOf([&] { loadMesh(dir.file("x.3ds")); }), HasSubstr("unknown format"));
     EXPECT_THAT(errorOf([&] { loadMesh(""); }), HasSubstr("empty"));
     const std::string empty = dir.file("empty.ply", "");
     EXPECT_THAT(errorOf([&] { loadMesh(empty); }, empty), HasSubstr("empty file"));
@@ -72,12 +73,12 @@ TEST(LoadMesh, CGALDataMeshes) {
     test::ScratchDir dir;
     const char* names[] = {"cow",       "elephant", "head",     "ChineseDragon-10kv",
                            "armadillo", "bunny00",  "lion-head"};
-    std::string cmd =
-        std::string("tar -xzf ") + tarball + " -C " + dir.path() + " --no-anchored --wildcards";
+    std::string cmd = std::string("tar -xzf ") + tarball + " -C " + dir.path().string() +
+                      " --no-anchored --wildcards";
     for (const char* n : names) cmd += std::string(" 'meshes/") + n + ".off'";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     for (const char* n : names) {
-        const std::string path = dir.path() + "/data/meshes/" + n + ".off";
+        const std::string path = dir.file(std::string("data/meshes/") + n + ".off");
         testing::internal::CaptureStderr();
         Mesh m = loadMesh(path);
         const std::string notes = testing::internal::GetCapturedStderr();

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "mesh/mesh_test_util.h"
+#include "support/error_of.h"
 
 namespace tsis {
 namespace {

@@ -2,7 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_test_util.h"
+#include "support/error_of.h"
+#include "support/scratch_dir.h"
 
 namespace tsis {
 namespace {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_test_util.h"
+#include "support/error_of.h"
 
 namespace tsis {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_test_util.h"
+#include "support/error_of.h"
 
 namespace tsis {
 namespace {

@@ -1,4 +1,4 @@
-// The dipole diffusion profile Rd(r) of Jensen et al. 2001 (DESIGN §2), in
+// The dipole diffusion profile Rd(r) of Jensen et al. 2001 (docs/design.md §2), in
 // double precision: the exact function the kernels' tables are checked against.
 #pragma once
 
@@ -21,7 +21,7 @@ struct DipoleChannel {
     double sigmaTPrime, alphaPrime, sigmaTr, Fdr, A, zr, zv;
 };
 
-// Fdr of DESIGN §2 (Groenhuis' fit).
+// Fdr of docs/design.md §2 (Groenhuis' fit).
 double diffuseFresnelReflectance(double eta);
 
 struct Dipole {

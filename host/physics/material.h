@@ -1,4 +1,4 @@
-// Scattering coefficients of a translucent material (DESIGN §2): reduced
+// Scattering coefficients of a translucent material (docs/design.md §2): reduced
 // scattering σs' and absorption σa in mm⁻¹ per RGB channel, relative index η.
 #pragma once
 

@@ -34,7 +34,7 @@ TEST(Material, PresetsAreJensensTableAndValid) {
         EXPECT_EQ(rejection(m), "") << m.name;
         EXPECT_EQ(m.eta, m.name == "marble" ? 1.5 : 1.3) << m.name;
     }
-    // Spot checks against DESIGN §2, including the rows Mitsuba 0.x misprints.
+    // Spot checks against docs/design.md §2, including the rows Mitsuba 0.x misprints.
     EXPECT_EQ(presetMaterial("chicken1").sigmaA, glm::dvec3(0.015, 0.077, 0.19));
     EXPECT_EQ(presetMaterial("chicken2").sigmaA, glm::dvec3(0.018, 0.088, 0.20));
     EXPECT_EQ(presetMaterial("cream").sigmaSPrime, glm::dvec3(7.38, 5.47, 3.15));

@@ -14,17 +14,17 @@ static Json rgb(const glm::dvec3& v) {
 Json dipoleReport(const Material& m, const std::vector<double>& radii, double rpBound) {
     const Dipole d(m);
     Json rd = Json::array();
-    for (double r : radii) rd.push(Json::array({r, rgb(d.Rd(r))}));
+    for (double r : radii) rd.push_back(Json::array({r, rgb(d.Rd(r))}));
     Json j = Json::object();
-    j.set("material", m.name);
-    j.set("eta", m.eta);
-    j.set("sigma_s_prime", rgb(m.sigmaSPrime));
-    j.set("sigma_a", rgb(m.sigmaA));
-    j.set("sigma_tr", rgb(d.sigmaTr()));
-    j.set("mean_free_path", rgb(d.meanFreePath()));
-    j.set("total_reflectance", rgb(d.totalReflectance()));
-    j.set("rp", rgb(importanceRadius(d, rpBound)));
-    j.set("rd", std::move(rd));
+    j["material"] = m.name;
+    j["eta"] = m.eta;
+    j["sigma_s_prime"] = rgb(m.sigmaSPrime);
+    j["sigma_a"] = rgb(m.sigmaA);
+    j["sigma_tr"] = rgb(d.sigmaTr());
+    j["mean_free_path"] = rgb(d.meanFreePath());
+    j["total_reflectance"] = rgb(d.totalReflectance());
+    j["rp"] = rgb(importanceRadius(d, rpBound));
+    j["rd"] = std::move(rd);
     return j;
 }
 

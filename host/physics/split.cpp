@@ -53,7 +53,7 @@ glm::dvec3 importanceRadius(const Dipole& d, double lowerBound) {
 }
 
 double localWeight(double r, double Rp, double K) {
-    // DESIGN §4 and the thesis print 1 − ½e^(−(r−Rp)K) for r ≤ Rp: a misprint.
+    // The thesis prints 1 − ½e^(−(r−Rp)K) for r ≤ Rp: a misprint (docs/design.md §3).
     // There the exponent is positive, so Wl < 0 once r < Rp − ln2/K. The sign-
     // flipped form below is the intended one: continuous (½ at Rp), monotone,
     // in [0, 1], Wl → 1 at r = 0 for K·Rp ≫ 1 as in the thesis' Fig. 3.4.

@@ -1,4 +1,4 @@
-// The hybrid's split of Rd into a local and a global part (DESIGN §4, thesis
+// The hybrid's split of Rd into a local and a global part (docs/design.md §4, thesis
 // §3.3.1): Rd = Rd·Wl + Rd·Wg, Wl + Wg = 1, the two equal at r = Rp.
 #pragma once
 

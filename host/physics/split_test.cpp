@@ -72,7 +72,7 @@ TEST(Split, NeverReachingTheBoundGivesThePeak) {
 
 // The thesis' Fig. 3.4 gives Rp = 2.4141 for skimmilk red. With the table's
 // σa = 0.0014 we get 2.4161; with the caption's σa = 0.0024 it would be 2.3747,
-// so the caption's σa is the misprint (DESIGN §3).
+// so the caption's σa is the misprint (docs/design.md §3).
 TEST(Split, SkimmilkRedReproducesThesisRp) {
     const double rp = importanceRadius(Dipole(presetMaterial("skimmilk")).ch[0]);
     std::printf("skimmilk red Rp = %.4f mm (thesis Fig. 3.4: 2.4141)\n", rp);

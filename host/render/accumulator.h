@@ -1,4 +1,4 @@
-// Progressive accumulation (DESIGN §6): while nothing that changes the
+// Progressive accumulation (docs/design.md §6): while nothing that changes the
 // radiosity changes, each frame draws a new sample set and the image shows the
 // mean of the frames so far, so a still view converges towards the reference.
 #pragma once

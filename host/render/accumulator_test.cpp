@@ -3,10 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <cstdio>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis {
 namespace {

@@ -44,13 +44,13 @@ struct SurfacePoints {
 struct CameraBuffersCl {
     cl::Buffer position;    // xyz, w = coverage
     cl::Buffer normal;      // xyz
-    cl::Buffer irradiance;  // E rgb at the pixel's surface point (DESIGN §2)
+    cl::Buffer irradiance;  // E rgb at the pixel's surface point (docs/design.md §2)
 };
 
 // The light views on the CL side: per light resolution² float4 (GL row order).
 struct LightMapsCl {
     const std::vector<LightView>* views = nullptr;  // matrices in views[i].viewProj
-    std::vector<cl::Buffer> flux;      // flux per texel rgb (DESIGN §2), a = covered
+    std::vector<cl::Buffer> flux;      // flux per texel rgb (docs/design.md §2), a = covered
     std::vector<cl::Buffer> position;  // xyz, w = distance to the light (mm)
 };
 

@@ -31,7 +31,7 @@ double FrameStats::stageMs(const std::string& name) const {
 
 double FrameStats::number(const std::string& key) const {
     for (const auto& [k, v] : values)
-        if (k == key) return v.isNumber() ? v.number() : std::nan("");
+        if (k == key) return v.is_number() ? v.get<double>() : std::nan("");
     return std::nan("");
 }
 
@@ -41,8 +41,8 @@ void FrameStats::totalRdEvaluations() {
     bool parts = false;
     for (const auto& [k, v] : values) {
         if (k == key) return;
-        if (v.isNumber() && k.size() > key.size() && k.ends_with("_" + key)) {
-            sum += v.number();
+        if (v.is_number() && k.size() > key.size() && k.ends_with("_" + key)) {
+            sum += v.get<double>();
             parts = true;
         }
     }
@@ -51,15 +51,15 @@ void FrameStats::totalRdEvaluations() {
 
 Json FrameStats::toJson() const {
     Json root = Json::object();
-    for (const auto& [k, v] : values) root.set(k, v);
+    for (const auto& [k, v] : values) root[k] = v;
     Json ms = Json::object();
     Json bytes = Json::object();
     for (const Stage& s : stages) {
-        ms.set(s.name, s.ms);
-        if (s.bytes >= 0) bytes.set(s.name, s.bytes);
+        ms[s.name] = s.ms;
+        if (s.bytes >= 0) bytes[s.name] = s.bytes;
     }
-    root.set("ms", ms);
-    root.set("bytes", bytes);
+    root["ms"] = ms;
+    root["bytes"] = bytes;
     return root;
 }
 

@@ -1,4 +1,4 @@
-// The interface every rendering method implements (DESIGN §4). A method turns
+// The interface every rendering method implements (docs/design.md §4). A method turns
 // the frame's shared inputs into radiosity B for every covered pixel by adding
 // passes to the frame graph; the renderer owns the GL passes, the hand-offs
 // and the composite around it.

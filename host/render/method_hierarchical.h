@@ -1,4 +1,4 @@
-// --method hierarchical: Jensen & Buhler 2002 (DESIGN §4).
+// --method hierarchical: Jensen & Buhler 2002 (docs/design.md §4).
 //
 // Irradiance samples spread over the surface at about the mean free path: the
 // dense points of the reference at half the spacing (exact E, ray-cast

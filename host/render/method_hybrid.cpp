@@ -13,7 +13,7 @@ void HybridMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     global_.addGlobalPasses(graph, ctx, global, "global_");
     local_.addLocalPasses(graph, ctx, local, "local_", true);
     Json rp = Json::array();
-    for (int c = 0; c < 3; ++c) rp.push(local.Rp[c]);
+    for (int c = 0; c < 3; ++c) rp.push_back(local.Rp[c]);
     ctx.stats->set("rp", rp);
     ctx.stats->set("rp_k", o.rpK);
 }

@@ -1,4 +1,4 @@
-// --method hybrid (thesis 3.3, DESIGN §4): Rd = Rd·Wl + Rd·Wg. The global part
+// --method hybrid (thesis 3.3, docs/design.md §4): Rd = Rd·Wl + Rd·Wg. The global part
 // by texture-space importance sampling (tsis, N shared samples), the local
 // part by the light-view ring filter (ltsm); both land in the frame's
 // radiosity, local added to global. Options: --rp-bound (Rp from the

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis {
 namespace {

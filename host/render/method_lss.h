@@ -1,5 +1,5 @@
 // --method lss: local subsurface scattering in image space (Mertens et al.
-// 2003; the thesis' "LSS", whose text swaps the authors, DESIGN §3). Irradiance
+// 2003; the thesis' "LSS", whose text swaps the authors, docs/design.md §3). Irradiance
 // from the camera's G-buffer, an importance-sampled disk on the image plane per
 // pixel; --samples is the number of samples per pixel. Kernel: kernels/lss.cl.
 #pragma once

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/image_space_test_util.h"
+#include "support/image_space.h"
 
 namespace tsis {
 namespace {

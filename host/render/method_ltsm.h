@@ -1,5 +1,5 @@
 // --method ltsm: the thesis' local method (3.3.2), "local translucent shadow
-// map". Each light's flux map (flux per texel, DESIGN §2) is filtered around
+// map". Each light's flux map (flux per texel, docs/design.md §2) is filtered around
 // xo's projection with L rings of C samples + the centre (--ltsm-rings,
 // --ltsm-per-ring; default 4×4+1) placed by the importance of the profile on
 // the plane; samples are weighted by the profile at the true 3D distance to the

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis {
 namespace {

@@ -1,4 +1,4 @@
-// --method mis (beyond the thesis, DESIGN §6): one unbiased estimator for both
+// --method mis (beyond the thesis, docs/design.md §6): one unbiased estimator for both
 // regimes, with no Rp or K to tune. B(xo) = ∫ E(x) Rd(|xo − x|) dA(x) is
 // sampled two ways, densities in the surface-area measure:
 //

@@ -1,13 +1,14 @@
 // --method pyramid: error-bounded integration over the texture-space flux
-// pyramid (beyond the thesis; cl/flux_pyramid.h, kernels/flux_pyramid.cl).
+// pyramid (beyond the thesis, docs/design.md §6; cl/flux_pyramid.h,
+// kernels/flux_pyramid.cl).
 //
 // The thesis draws N samples from the flux atlas' sum pyramid; Jensen &
 // Buhler sum an octree of irradiance samples top-down, using a node whole
 // when it is small as seen from the point. This method does the second on the
-// first's data: the atlas texels are the leaves, summed four to a node in the
-// order of a 3D Morton curve through their positions (fixed per mesh and
-// atlas resolution, so atlas neighbours from unrelated charts never share a
-// node); each node keeps flux, area, flux-weighted position and a radius
+// first's data: the atlas texels are the leaves of an octree over their
+// positions (their 3D Morton codes sorted once per mesh and atlas resolution,
+// up to 8 children a node, so atlas neighbours from unrelated charts never
+// share a node); each node keeps flux, area, flux-weighted position and a radius
 // bounding it, rebuilt on the device each time the flux atlas changes, and
 // every group of 8 neighbouring pixels descends it with the criterion
 // max(radius², area/π) < ε·(d² + ℓ²), ℓ the smallest mean free path. No

@@ -1,4 +1,4 @@
-// --method reference: the ground truth of the dipole model (DESIGN §4).
+// --method reference: the ground truth of the dipole model (docs/design.md §4).
 //
 // B(xo) = Σ_i E(x_i) ΔA_i Rd(|xo − x_i|) over dense surface points
 // (render/surface_points.h): every triangle cut into k² sub-triangles with

@@ -1,4 +1,4 @@
-// The methods `--method` can name (DESIGN §4). Add a method here.
+// The methods `--method` can name (docs/design.md §4). Add a method here.
 #include "render/method.h"
 #include "render/method_hierarchical.h"
 #include "render/method_reference.h"

@@ -1,6 +1,6 @@
 // --method tsis: texture-space importance sampling (thesis ch. 3.1–3.2).
 // N samples drawn from the flux atlas by pyramid descent are shared by every
-// pixel: B(xo) = Σ w_i ⊙ Rd(|xo − x_i|) (DESIGN §2).
+// pixel: B(xo) = Σ w_i ⊙ Rd(|xo − x_i|) (docs/design.md §2).
 #pragma once
 
 #include <functional>

@@ -1,6 +1,6 @@
 // tsm, Dachsbacher & Stamminger 2003, as a baseline.
 //
-// Each light's view holds the flux that lands in every texel (DESIGN §2) and
+// Each light's view holds the flux that lands in every texel (docs/design.md §2) and
 // the surface position there. For xo, per light:
 //   * project xo into the map; the filter radius R (mm) is --tsm-radius / σtr
 //     of the widest channel (default 2: the best of 1–4 on the sphere and the

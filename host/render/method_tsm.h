@@ -1,5 +1,5 @@
 // --method tsm: Translucent Shadow Maps (Dachsbacher & Stamminger 2003; the
-// thesis' text swaps the authors, DESIGN §3). The light-view flux and position
+// thesis' text swaps the authors, docs/design.md §3). The light-view flux and position
 // maps, filtered around xo's projection into each light's map by a fixed
 // pattern of 21 taps. Kernel: kernels/tsm.cl; the pattern: method_tsm.cpp.
 #pragma once

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "render/image_space_test_util.h"
+#include "support/image_space.h"
 
 namespace tsis {
 namespace {

@@ -1,5 +1,5 @@
 // The radial profiles the methods integrate: the dipole Rd, or one of the
-// hybrid's parts Rd·Wl, Rd·Wg (physics/split.h, DESIGN §4), each with a key
+// hybrid's parts Rd·Wl, Rd·Wg (physics/split.h, docs/design.md §4), each with a key
 // that changes whenever its values do (methods cache tables under it).
 #pragma once
 

@@ -16,7 +16,7 @@ RadialProfile rd(const Dipole& d) {
 }
 
 // Far enough out that the missing tail is negligible, the integral is the
-// closed-form total diffuse reflectance (DESIGN §2).
+// closed-form total diffuse reflectance (docs/design.md §2).
 TEST(RadialImportance, MassMatchesClosedForm) {
     for (const char* name : {"skin1", "marble", "cream", "skimmilk"}) {
         const Dipole d(presetMaterial(name));

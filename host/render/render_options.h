@@ -1,4 +1,4 @@
-// How a frame is rendered (as opposed to what it shows: render/scene.h).
+// How a frame is rendered (as opposed to what it shows: scene/scene.h).
 #pragma once
 
 #include <cstdint>
@@ -25,7 +25,7 @@ struct RenderOptions {
     bool specular = true;
     float specularKs = 0.2f;
     float shininess = 40.0f;
-    // Hybrid split (DESIGN §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
+    // Hybrid split (docs/design.md §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
     double rpBound = 0.1;
     double rpK = 1.5;
     RdPart rdPart = RdPart::Full;  // tsis/ltsm: Rd, Rd·Wl or Rd·Wg

@@ -72,7 +72,7 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
     stats.set("covered_pixels", coveredPixels);
     stats.set("triangles", static_cast<double>(scene.mesh.triangles.size()));
     Json passes = Json::array();
-    for (const std::string& p : graph.executed()) passes.push(p);
+    for (const std::string& p : graph.executed()) passes.push_back(p);
     stats.set("passes", passes);
 }
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis {
 namespace {

@@ -127,7 +127,7 @@ double luminance(const glm::dvec3& c) {
     return TSIS_LUMINANCE(c.x, c.y, c.z);
 }
 
-// E at a point (DESIGN §2) and the lights whose shadow rays are blocked there.
+// E at a point (docs/design.md §2) and the lights whose shadow rays are blocked there.
 struct Shading {
     glm::dvec3 e{0.0};
     uint64_t blocked = 0;  // bit per light: faces the point but is hidden

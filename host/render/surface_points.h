@@ -1,5 +1,5 @@
 // Deterministic points over a mesh's surface with their exact irradiance E
-// (DESIGN §2): the quadrature of `--method reference` and the irradiance
+// (docs/design.md §2): the quadrature of `--method reference` and the irradiance
 // samples of `--method hierarchical`. Visibility is exact (render/ray_caster.h).
 #pragma once
 
@@ -34,7 +34,7 @@ double smallestMeanFreePath(const Material& m);
 // The mesh needs normals; irradiance is left 0.
 std::vector<SurfacePoint> placeSurfacePoints(const Mesh& mesh, double spacing);
 
-// E(x) of DESIGN §2 summed over the lights, with V(x) = 1 when the segment from
+// E(x) of docs/design.md §2 summed over the lights, with V(x) = 1 when the segment from
 // x + offset·n to the light (a point light's position, or `reach` mm against a
 // directional light's direction; reach must exceed the mesh's extent) crosses
 // no triangle (V = 1 for a light with shadows off).

@@ -24,7 +24,7 @@ struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 20.0f};
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fovYDegrees = 40.0f;
+    float fovYDegrees = 40.0f;  // vertical; `tsis render` frames the object with --fov (35)
 };
 
 struct Scene {

@@ -1,49 +1,19 @@
-// A minimal JSON writer: enough for --json outputs and --stats files.
+// JSON values through nlohmann::json: the --json outputs, the --stats files,
+// and what the tests and benchmarks read back.
 #pragma once
 
-#include <initializer_list>
-#include <map>
+#include <nlohmann/json.hpp>
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace tsis {
 
-class Json {
-  public:
-    Json() : kind_(Kind::Null) {}
-    Json(double v) : kind_(Kind::Number), number_(v) {}
-    Json(int v) : Json(static_cast<double>(v)) {}
-    Json(long v) : Json(static_cast<double>(v)) {}
-    Json(long long v) : Json(static_cast<double>(v)) {}
-    Json(unsigned v) : Json(static_cast<double>(v)) {}
-    Json(unsigned long v) : Json(static_cast<double>(v)) {}
-    Json(unsigned long long v) : Json(static_cast<double>(v)) {}
-    Json(bool v) : kind_(Kind::Bool), bool_(v) {}
-    Json(const char* s) : kind_(Kind::String), string_(s) {}
-    Json(std::string s) : kind_(Kind::String), string_(std::move(s)) {}
+// Objects keep their keys in insertion order, so outputs read in the order
+// written.
+using Json = nlohmann::ordered_json;
 
-    static Json array(std::vector<Json> items = {});
-    static Json object();
-
-    // Objects keep insertion order, so outputs read in the order written.
-    Json& set(const std::string& key, Json value);
-    Json& push(Json value);
-
-    std::string dump(int indent = 2) const;
-    bool isNumber() const { return kind_ == Kind::Number; }
-    double number() const { return number_; }  // 0 unless isNumber()
-
-  private:
-    enum class Kind { Null, Number, Bool, String, Array, Object };
-    void write(std::string& out, int indent, int depth) const;
-
-    Kind kind_;
-    double number_ = 0;
-    bool bool_ = false;
-    std::string string_;
-    std::vector<Json> items_;
-    std::vector<std::pair<std::string, Json>> members_;
-};
+// `j` as text, `indent` spaces a level (negative: on one line). tsis computes
+// its numbers as doubles: those with an integral value print as integers
+// ("3", not "3.0"), non-finite ones as null (JSON has no inf or NaN).
+std::string dumpJson(const Json& j, int indent = 2);
 
 }  // namespace tsis

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <thread>
 
-#include "util/scoped_env_test_util.h"
+#include "support/scoped_env.h"
 
 namespace tsis {
 namespace {

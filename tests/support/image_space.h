@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "render/render_test_util.h"
+#include "support/render.h"
 
 namespace tsis::test {
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -10,7 +11,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "mesh/mesh.h"
 
@@ -48,7 +48,8 @@ inline Mesh readOFF(const std::string& path) {
 inline std::string cgalMesh(const std::string& name) {
     if (!std::filesystem::exists(kCgalTarball)) return "";
     static const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("tsis_atlas_test_meshes_" + std::to_string(::getpid()));
+        std::filesystem::temp_directory_path() /
+        ("tsis_atlas_test_meshes_" + std::to_string(::getpid()));
     const std::filesystem::path file = dir / "data" / "meshes" / (name + ".off");
     if (!std::filesystem::exists(file)) {
         std::filesystem::create_directories(dir);
@@ -68,7 +69,8 @@ inline Mesh sphereMesh(int rings, int segments) {
     for (int r = 1; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
             const double th = pi * r / rings, ph = 2 * pi * s / segments;
-            m.positions.emplace_back(std::sin(th) * std::cos(ph), std::cos(th), -std::sin(th) * std::sin(ph));
+            m.positions.emplace_back(std::sin(th) * std::cos(ph), std::cos(th),
+                                     -std::sin(th) * std::sin(ph));
         }
     m.positions.emplace_back(0, -1, 0);
     const unsigned south = unsigned(m.positions.size() - 1);
@@ -79,7 +81,8 @@ inline Mesh sphereMesh(int rings, int segments) {
             m.triangles.emplace_back(at(r, s), at(r + 1, s), at(r + 1, s + 1));
             m.triangles.emplace_back(at(r, s), at(r + 1, s + 1), at(r, s + 1));
         }
-    for (int s = 0; s < segments; ++s) m.triangles.emplace_back(at(rings - 1, s), south, at(rings - 1, s + 1));
+    for (int s = 0; s < segments; ++s)
+        m.triangles.emplace_back(at(rings - 1, s), south, at(rings - 1, s + 1));
     for (auto& p : m.positions) m.normals.push_back(p);
     return m;
 }

@@ -1,9 +1,8 @@
-#include "test_util.h"
+#include "support/tsis_cli.h"
 
 #include <unistd.h>
 
 #include <atomic>
-#include <random>
 
 namespace tsis::test {
 
@@ -23,18 +22,6 @@ RunResult runTsis(const std::string& args, const std::string& env) {
     std::filesystem::remove(outPath);
     std::filesystem::remove(errPath);
     return r;
-}
-
-ScratchDir::ScratchDir() {
-    std::random_device rd;
-    path_ = std::filesystem::temp_directory_path() /
-            ("tsis-test-" + std::to_string(::getpid()) + "-" + std::to_string(rd()));
-    std::filesystem::create_directories(path_);
-}
-
-ScratchDir::~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
 }
 
 std::string readFile(const std::string& path) {

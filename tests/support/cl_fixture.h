@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "cl/cl_runtime.h"
-#include "util/scoped_env_test_util.h"
+#include "cl/launch.h"
+#include "support/scoped_env.h"
 
 namespace tsis::test {
 
@@ -35,6 +36,15 @@ class ClTest : public ::testing::Test {
 
     cl::Buffer buffer(size_t bytes) {
         return cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes > 0 ? bytes : 1);
+    }
+
+    // Sets k's arguments, runs it over n work-items (groups of 64) and waits,
+    // so buffers passed as temporaries (upload(v)) outlive the kernel.
+    template <typename... Args>
+    void run(cl::Kernel& k, size_t n, const Args&... args) {
+        setKernelArgs(k, args...);
+        enqueue1D(rt.queue(), k, n, 64, nullptr);
+        rt.queue().finish();
     }
 
     template <typename T>

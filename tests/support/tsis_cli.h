@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "support/scratch_dir.h"
 
 namespace tsis::test {
 
@@ -20,18 +21,6 @@ struct RunResult {
 // Runs `tsis <args>` through the shell with extra environment assignments
 // (e.g. "TSIS_NO_GL=1"); captures stdout and stderr.
 RunResult runTsis(const std::string& args, const std::string& env = "");
-
-// A fresh empty folder under the build's temp area, removed by the destructor.
-class ScratchDir {
-  public:
-    ScratchDir();
-    ~ScratchDir();
-    const std::filesystem::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-  private:
-    std::filesystem::path path_;
-};
 
 std::string readFile(const std::string& path);
 

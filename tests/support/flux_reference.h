@@ -1,4 +1,4 @@
-// The flux a mesh receives, ∫E dA (DESIGN §2), integrated per triangle on the
+// The flux a mesh receives, ∫E dA (docs/design.md §2), integrated per triangle on the
 // host in double: the reference for the atlas and light-view flux invariants.
 #pragma once
 
@@ -10,7 +10,7 @@
 
 namespace tsis::test {
 
-// ∫E dA over the mesh for unshadowed lights, E as in DESIGN §2 with the
+// ∫E dA over the mesh for unshadowed lights, E as in docs/design.md §2 with the
 // interpolated vertex normal the shader uses; 4-level subdivided midpoint rule.
 inline double hostFlux(const Mesh& mesh, const Light& light, double eta, int channel) {
     const int k = 16;  // sub-triangles per edge
