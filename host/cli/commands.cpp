@@ -11,6 +11,7 @@
 #include "cli/args.h"
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
+#include "cli/view_command.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "physics/report.h"
@@ -34,6 +35,7 @@ commands:
   dipole      evaluate the dipole profile Rd(r) of a material
   compare     error metrics (and a heat map) of an image against a reference
   animate     a PNG sequence while the light orbits, the material or the size changes
+  view        an interactive window: orbit, drag the light, change material and size
   atlas       build (or check) a mesh's texture atlas and report its quality
   help        this text; `tsis <command> --help` for a command's options
 )";
@@ -206,6 +208,7 @@ int runAtlas(const std::vector<std::string>& argv) {
 const Command kCommands[] = {
     {"atlas", runAtlas},   {"render", runRender},   {"materials", runMaterials},
     {"dipole", runDipole}, {"compare", runCompare}, {"animate", runAnimate},
+    {"view", runView},
 };
 
 }  // namespace
