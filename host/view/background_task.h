@@ -9,6 +9,7 @@
 #include <thread>
 #include <utility>
 
+#include "view/thread_priority.h"
 #include "view/work_progress.h"
 
 namespace tsis {
@@ -19,6 +20,7 @@ class BackgroundTask {
     // Starts work() now; wake() runs on the task's thread when it has finished.
     BackgroundTask(std::function<T()> work, std::function<void()> wake) {
         thread_ = std::thread([this, work = std::move(work), wake = std::move(wake)] {
+            lowerThisThreadPriority();
             {
                 ScopedProgressObserver observer(progress_.observer());
                 try {

@@ -28,7 +28,8 @@ glm::vec3 turn(const glm::vec3& v, const glm::vec3& up, float yaw, float pitch) 
     const float target = std::clamp(angle - pitch, kPoleMargin, float(M_PI) - kPoleMargin);
     const glm::vec3 side = glm::cross(axisUp, out);
     if (glm::length(side) < 1e-12f * len) return out;  // on the axis: no pitch direction
-    return rotate(out, angle - target, glm::normalize(side));
+    return rotate(out, target - angle,
+                  glm::normalize(side));  // +θ about up × v moves v away from up
 }
 
 }  // namespace

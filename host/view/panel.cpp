@@ -15,6 +15,12 @@ namespace {
 
 const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
 
+void errorText(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
 void progressLine(const WorkProgress& p, const char* what) {
     char text[256];
     std::snprintf(text, sizeof text, "%s %.0f%%", p.label.empty() ? what : p.label.c_str(),
@@ -88,11 +94,15 @@ void settings(ViewState& s) {
     s.maxFrames = std::max(1, s.maxFrames);
 }
 
-void timings(const PanelInfo& info) {
+void frameLine(const PanelInfo& info) {
     ImGui::Text("%.1f fps   frame %.1f ms   %d frame%s averaged", info.fps,
                 info.stats ? info.stats->stageMs("total") : 0.0, info.accumulated,
                 info.accumulated == 1 ? "" : "s");
-    if (!info.frameError.empty()) ImGui::TextColored(kErrorColour, "%s", info.frameError.c_str());
+    if (!info.frameError.empty()) errorText(info.frameError);
+}
+
+// The last frame's stages as bars of their share of its time.
+void stageBars(const PanelInfo& info) {
     if (!info.stats || !ImGui::CollapsingHeader("stages", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const double total = std::max(1e-9, info.stats->stageMs("total"));
     for (const FrameStats::Stage& st : info.stats->stages) {
@@ -135,7 +145,7 @@ void files(const PanelInfo& info, PanelFields& fields, PanelActions& actions) {
     ImGui::InputText("##aov", fields.aovDir, sizeof fields.aovDir);
     if (!info.status.empty()) {
         if (info.statusIsError)
-            ImGui::TextColored(kErrorColour, "%s", info.status.c_str());
+            errorText(info.status);
         else
             ImGui::TextWrapped("%s", info.status.c_str());
     }
@@ -149,7 +159,7 @@ void meshSection(const PanelInfo& info, PanelFields& fields, PanelActions& actio
     actions.openMesh =
         (ImGui::Button("open mesh") || enter) && fields.meshPath[0] != '\0' && !info.meshLoading;
     if (info.meshLoading) progressLine(info.meshProgress, "loading");
-    if (!info.meshError.empty()) ImGui::TextColored(kErrorColour, "%s", info.meshError.c_str());
+    if (!info.meshError.empty()) errorText(info.meshError);
 }
 
 }  // namespace
@@ -166,11 +176,12 @@ PanelActions drawPanel(ViewState& state, PanelFields& fields, const PanelInfo& i
     ImGui::Separator();
     settings(state);
     ImGui::Separator();
-    timings(info);
+    frameLine(info);
     ImGui::Separator();
     reference(info, fields, actions);
     ImGui::Separator();
     files(info, fields, actions);
+    stageBars(info);
     ImGui::Separator();
     ImGui::TextDisabled(
         "drag: orbit  right/shift: light  middle/ctrl: pan\n"

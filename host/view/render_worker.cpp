@@ -1,6 +1,7 @@
 #include "view/render_worker.h"
 
 #include "util/error.h"
+#include "view/thread_priority.h"
 
 namespace tsis {
 
@@ -76,6 +77,7 @@ FrameDone RenderWorker::render(const FrameJob& job) {
 }
 
 void RenderWorker::run(const std::string& clDevice) {
+    lowerThisThreadPriority();
     // The Renderer is made here: its OSMesa context is current on this thread only.
     {
         std::lock_guard lock(mutex_);

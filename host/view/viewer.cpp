@@ -538,10 +538,10 @@ void Viewer::captureScreenshot() {
 }
 
 double Viewer::waitSeconds() const {
-    if (config_.script) return scriptWaiting() ? 0.05 : 0.0;
-    if (screenshotPending_ || forceFrame_) return 0.0;
-    // Progress bars move while work runs (≥ 20 updates a second); input wakes the loop at once.
-    return busy() ? 1.0 / 30.0 : 0.5;
+    if (screenshotPending_ || forceFrame_ || (config_.script && !scriptWaiting())) return 0.0;
+    // Progress bars move while work runs (≥ 20 updates a second); input and
+    // finished work wake the loop at once.
+    return busy() || config_.script ? 1.0 / 30.0 : 0.5;
 }
 
 void Viewer::countUiUpdate() {
@@ -561,8 +561,12 @@ void Viewer::countUiUpdate() {
 }
 
 ViewerResult Viewer::run() {
+    Clock::time_point updateStart = Clock::now();
     while (!window_.closeRequested()) {
-        window_.waitEvents(waitSeconds());
+        // The wait counts from the last update's start: the period includes drawing.
+        const double wait = waitSeconds() - secondsBetween(updateStart, Clock::now());
+        window_.waitEvents(std::max(wait, 0.0));
+        updateStart = Clock::now();
         collect();
         window_.beginFrame();
         if (!config_.script) input();
