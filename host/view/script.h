@@ -1,7 +1,8 @@
 // `tsis view --script FILE`: UI events played back with fixed timing. Each
-// command runs once the frame of everything before it is on screen and any
-// mesh load or reference it started has finished, so a script shows the same
-// pictures on any machine, however fast.
+// command runs once the frame of everything before it is on screen (the
+// first, once the start-up view's frame is) and any mesh load or reference it
+// started has finished, so a script shows the same pictures on any machine,
+// however fast.
 //
 //   # a comment; blank lines are skipped
 //   frame N              N more frames (a sampling method's progressive frames accumulate)

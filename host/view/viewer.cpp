@@ -471,6 +471,12 @@ void Viewer::submitIfNeeded() {
     if (state_.autoOrbit && !state_.lights.empty() && (!script || scriptFrames_ > 0))
         state_.lights[0].vec = turnAboutY(state_.lights[0].vec, kAutoOrbitPixels, 0);
     if (script && scriptFrames_ > 0) --scriptFrames_;
+    // The last frame before the view rests keeps its AOVs, so that "AOVs" and
+    // the reference's error need no frame of their own (which would add a
+    // sample set to the mean on screen).
+    const int frameCount = changed ? 1 : accumulated_ + 1;
+    const bool last = script ? scriptFrames_ == 0
+                             : !state_.autoOrbit && (!sampling || frameCount >= state_.maxFrames);
     forceFrame_ = false;
     if (scaledFrom_ != state_.mesh || scaledSize_ != state_.sizeMm) {
         scaled_ = scaledMesh(state_);
@@ -485,7 +491,7 @@ void Viewer::submitIfNeeded() {
     job.options.progressive = sampling;
     const bool referenceHere = (reference_ && sameScene(referenceState_, state_)) ||
                                (referenceTask_ && sameScene(referenceTaskState_, state_));
-    job.options.keepAovs = aovPending_.has_value() || referenceHere;
+    job.options.keepAovs = aovPending_.has_value() || referenceHere || last;
     submitted_ = state_;
     awaiting_ = true;
     worker_->submit(std::move(job));
