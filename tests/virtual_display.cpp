@@ -20,6 +20,7 @@ VirtualDisplay::VirtualDisplay() {
     }
     int fds[2];
     if (::pipe(fds) != 0) return;
+    const std::string fd = std::to_string(fds[1]);  // before fork: the child only execs
     pid_ = ::fork();
     if (pid_ == 0) {
         // The child: Xvfb writes its display number into the pipe when it is ready.
@@ -28,7 +29,6 @@ VirtualDisplay::VirtualDisplay() {
         ::dup2(null, 0);
         ::dup2(null, 1);
         ::dup2(null, 2);
-        const std::string fd = std::to_string(fds[1]);
         ::execl(xvfb->c_str(), "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24",
                 "-nolisten", "tcp", static_cast<char*>(nullptr));
         ::_exit(127);

@@ -19,6 +19,7 @@ struct PanelInfo {
     int accumulated = 0;
     const FrameStats* stats = nullptr;  // the last frame's
     std::string frameError;
+    WorkProgress frameProgress;  // of a frame that reports (a reference, an atlas), else empty
     bool meshLoading = false;
     WorkProgress meshProgress;
     std::string meshError;

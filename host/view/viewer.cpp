@@ -412,6 +412,7 @@ void Viewer::panel() {
     info.accumulated = accumulated_;
     info.stats = frame_.width > 0 ? &frame_.stats : nullptr;
     info.frameError = frameError_;
+    if (awaiting_) info.frameProgress = worker_->progress();
     info.meshLoading = meshTask_ != nullptr;
     if (meshTask_) info.meshProgress = meshTask_->progress();
     info.meshError = meshError_;
