@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "util/parse.h"  // the value parsers, for callers
+
 namespace tsis {
 
 struct OptionSpec {
@@ -44,11 +46,5 @@ class Args {
 
 // "--help" text for a command from its specs.
 std::string usageText(const std::string& synopsis, const std::vector<OptionSpec>& specs);
-
-// Parsers for option values; `what` names the option in messages.
-double parseNumber(const std::string& what, const std::string& text);
-long long parseInteger(const std::string& what, const std::string& text);
-glm::dvec3 parseVec3(const std::string& what, const std::string& text);           // "X,Y,Z"
-std::vector<double> parseList(const std::string& what, const std::string& text);  // "a,b,c"
 
 }  // namespace tsis

@@ -11,9 +11,11 @@
 #include "cli/args.h"
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
+#include "cli/view_command.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "physics/report.h"
+#include "render/aov_files.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/output_set.h"
@@ -33,6 +35,7 @@ commands:
   dipole      evaluate the dipole profile Rd(r) of a material
   compare     error metrics (and a heat map) of an image against a reference
   animate     a PNG sequence while the light orbits, the material or the size changes
+  view        an interactive window: orbit, drag the light, change material and size
   atlas       build (or check) a mesh's texture atlas and report its quality
   help        this text; `tsis <command> --help` for a command's options
 )";
@@ -62,21 +65,6 @@ std::vector<OptionSpec> renderSpecs() {
     return specs;
 }
 
-// The AOV files of --aov DIR (flux_atlas only when the method made the atlas).
-struct Aov {
-    const char* file;
-    ImageF FrameResult::*image;
-    std::vector<std::string> channels;
-};
-const Aov kAovs[] = {
-    {"radiosity.exr", &FrameResult::radiosity, {"R", "G", "B"}},
-    {"radiance.exr", &FrameResult::radiance, {"R", "G", "B"}},
-    {"position.exr", &FrameResult::position, {"X", "Y", "Z"}},
-    {"normal.exr", &FrameResult::normal, {"X", "Y", "Z"}},
-    {"coverage.exr", &FrameResult::coverage, {"Y"}},
-    {"flux_atlas.exr", &FrameResult::fluxAtlas, {"R", "G", "B"}},
-};
-
 // An image output: its place takes a file and its format is known ("-": a PNG on stdout).
 void addImageOutput(OutputSet& outputs, const std::string& path) {
     outputs.add(path, ".png");
@@ -105,13 +93,7 @@ int runRender(const std::vector<std::string>& argv) {
 
     OutputSet outputs;
     addImageOutput(outputs, output);
-    auto aovPath = [&](const char* name) {
-        return (std::filesystem::path(*aovDir) / name).string();
-    };
-    if (aovDir) {
-        outputs.makeDirectory(*aovDir);
-        for (const Aov& a : kAovs) outputs.add(aovPath(a.file));
-    }
+    if (aovDir) addAovOutputs(outputs, *aovDir);
     if (statsPath) outputs.add(*statsPath, ".json");
 
     loadSceneMesh(scene, args);
@@ -122,19 +104,7 @@ int runRender(const std::vector<std::string>& argv) {
     outputs.write(output, [&](const std::filesystem::path& f) {
         writeImage8(f.string(), frame.width, frame.height, 3, frame.rgb8);
     });
-    if (aovDir) {
-        for (const Aov& a : kAovs) {
-            const ImageF& image = frame.*a.image;
-            // Methods that never read the atlas (ltsm, lss, …) leave it unmade.
-            if (image.channels == 0) {
-                outputs.discard(aovPath(a.file));
-                continue;
-            }
-            outputs.write(aovPath(a.file), [&](const std::filesystem::path& f) {
-                writeImageF(f.string(), image, a.channels);
-            });
-        }
-    }
+    if (aovDir) writeAovOutputs(outputs, *aovDir, frame);
     if (statsPath) {
         Json j = frame.stats.toJson();
         j["mesh"] = scene.mesh.name;
@@ -239,6 +209,7 @@ int runAtlas(const std::vector<std::string>& argv) {
 const Command kCommands[] = {
     {"atlas", runAtlas},   {"render", runRender},   {"materials", runMaterials},
     {"dipole", runDipole}, {"compare", runCompare}, {"animate", runAnimate},
+    {"view", runView},
 };
 
 }  // namespace

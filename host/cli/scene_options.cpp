@@ -1,5 +1,6 @@
 #include "cli/scene_options.h"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <glm/geometric.hpp>
@@ -204,11 +205,17 @@ Scene parseScene(const Args& args) {
     return scene;
 }
 
+Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
+                 const AtlasOptions& atlasOptions) {
+    Mesh mesh = loadMesh(spec);
+    normalizeMesh(mesh, sizeMm);
+    ensureNormals(mesh);
+    return ensureAtlas(mesh, atlasMode, atlasOptions);
+}
+
 void loadSceneMesh(Scene& scene, const Args& args) {
-    scene.mesh = loadMesh(args.getString("mesh", SceneDefaults().mesh));
-    normalizeMesh(scene.mesh, sizeMmFromArgs(args));
-    ensureNormals(scene.mesh);
-    scene.mesh = ensureAtlas(scene.mesh, atlasMode(args), atlasOptionsFromArgs(args));
+    scene.mesh = prepareMesh(args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
+                             atlasMode(args), atlasOptionsFromArgs(args));
 }
 
 Scene sceneFromArgs(const Args& args) {
@@ -250,6 +257,67 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.reuseLighting = !args.flag("no-reuse-lighting");
     validateRenderOptions(o);
     return o;
+}
+
+namespace {
+
+// The shortest text that parses back to exactly v.
+template <typename T>
+std::string exact(T v) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+template <typename V>
+std::string exact3(const V& v) {
+    return exact(v.x) + "," + exact(v.y) + "," + exact(v.z);
+}
+
+}  // namespace
+
+std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec,
+                                   double sizeMm) {
+    std::vector<std::string> a = {"--mesh", meshSpec, "--size-mm", exact(sizeMm)};
+    const Material& m = scene.material;
+    for (const Material& p : presetMaterials())
+        if (p.name == m.name) a.insert(a.end(), {"--material", m.name});
+    a.insert(a.end(), {"--sigma-s", exact3(m.sigmaSPrime), "--sigma-a", exact3(m.sigmaA), "--eta",
+                       exact(m.eta)});
+    for (const Light& l : scene.lights)
+        a.insert(a.end(), {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
+                                          exact3(l.vec) + ":" + exact3(l.rgb)});
+    const Camera& c = scene.camera;
+    a.insert(a.end(), {"--eye", exact3(c.eye), "--target", exact3(c.target), "--up",
+                       exact3(c.up), "--fov", exact(c.fovYDegrees)});
+    return a;
+}
+
+std::vector<std::string> renderOptionArgs(const RenderOptions& o) {
+    std::vector<std::string> a = {
+        "--method",          o.method,
+        "--width",           exact(o.width),
+        "--height",          exact(o.height),
+        "--samples",         exact(o.samples),
+        "--seed",            exact(o.seed),
+        "--atlas-res",       exact(o.atlasResolution),
+        "--light-res",       exact(o.lightResolution),
+        "--key",             exact(o.key),
+        "--rp-bound",        exact(o.rpBound),
+        "--rp-k",            exact(o.rpK),
+        "--rd-part",         rdPartName(o.rdPart),
+        "--ltsm-rings",      exact(o.ltsmRings),
+        "--ltsm-per-ring",   exact(o.ltsmPerRing),
+        "--mis-distance",    exact(o.misDistanceSamples),
+        "--epsilon",         exact(o.epsilon),
+        "--pyramid-epsilon", exact(o.pyramidEpsilon),
+        "--pyramid-stride",  exact(o.pyramidStride),
+        "--tsm-radius",      exact(o.tsmRadius),
+    };
+    if (o.spacingMm > 0) a.insert(a.end(), {"--spacing", exact(o.spacingMm)});
+    if (!o.specular) a.push_back("--no-specular");
+    if (!o.reuseLighting) a.push_back("--no-reuse-lighting");
+    return a;
 }
 
 }  // namespace tsis

@@ -45,11 +45,23 @@ AtlasOptions atlasOptionsFromArgs(const Args& args);
 // Every scene option parsed and checked (material, lights, camera, atlas
 // options), the mesh not yet loaded: option errors come before slow work.
 Scene parseScene(const Args& args);
-// Loads, normalises and prepares (normals, UVs) the mesh --mesh names.
+// Loads the mesh `spec` names (a file, builtin:NAME or a data mesh name),
+// normalises it to sizeMm and prepares it (normals, UVs by atlasMode).
+Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
+                 const AtlasOptions& atlasOptions);
+// prepareMesh of --mesh, --size-mm, --atlas and --atlas-res.
 void loadSceneMesh(Scene& scene, const Args& args);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);
 // Parsed and validated (validateRenderOptions); touches no device or file.
 RenderOptions renderOptionsFromArgs(const Args& args);
+
+// The options that give back, through parseScene and renderOptionsFromArgs,
+// this scene's material, lights and camera on the mesh `meshSpec` at sizeMm,
+// and these render options: every number printed exactly (the shortest text
+// that parses to the same value).
+std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec,
+                                   double sizeMm);
+std::vector<std::string> renderOptionArgs(const RenderOptions& options);
 
 }  // namespace tsis

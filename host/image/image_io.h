@@ -4,6 +4,7 @@
 // through util/output_set.h (temporary, then all renamed together).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,5 +32,14 @@ void writeImage8(const std::string& path, int width, int height, int channels,
                  const std::vector<uint8_t>& pixels);
 
 ImageF readImageF(const std::string& path);
+
+// Reorders rows so that row 0 becomes the last (GL read-backs → images).
+template <typename T>
+void flipRows(std::vector<T>& data, int width, int height, int channels) {
+    const size_t row = static_cast<size_t>(width) * channels;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(data.begin() + y * row, data.begin() + (y + 1) * row,
+                         data.begin() + (height - 1 - y) * row);
+}
 
 }  // namespace tsis

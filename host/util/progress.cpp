@@ -10,6 +10,19 @@
 
 namespace tsis {
 
+namespace {
+thread_local const ProgressObserver* tCurrentObserver = nullptr;
+}  // namespace
+
+ScopedProgressObserver::ScopedProgressObserver(ProgressObserver observer)
+    : observer_(std::move(observer)), previous_(tCurrentObserver) {
+    tCurrentObserver = &observer_;
+}
+
+ScopedProgressObserver::~ScopedProgressObserver() {
+    tCurrentObserver = previous_;
+}
+
 Progress::Mode Progress::mode() {
     const char* env = std::getenv("TSIS_PROGRESS");
     if (env && std::strcmp(env, "0") == 0) return Mode::Off;
@@ -30,7 +43,11 @@ double Progress::lineInterval() {
 }
 
 Progress::Progress(std::string label, long long total)
-    : label_(std::move(label)), total_(total), mode_(mode()) {
+    : label_(std::move(label)),
+      total_(total),
+      observer_(tCurrentObserver ? *tCurrentObserver : ProgressObserver()),
+      mode_(mode()) {
+    notify(0);
     start_ = last_ = std::chrono::steady_clock::now();
     if (mode_ == Mode::Terminal) update(0);
     if (mode_ == Mode::Lines) ticker_ = std::thread([this] { tick(); });
@@ -56,8 +73,14 @@ void Progress::tick() {
         printLine(done_.load());
 }
 
+void Progress::notify(long long done) {
+    if (observer_)
+        observer_(label_, total_ > 0 ? std::clamp(double(done) / double(total_), 0.0, 1.0) : 1.0);
+}
+
 void Progress::update(long long done) {
     done_.store(done);
+    notify(done);
     if (mode_ != Mode::Terminal || finished_) return;
     std::lock_guard lock(mutex_);
     auto now = std::chrono::steady_clock::now();
@@ -70,7 +93,12 @@ void Progress::update(long long done) {
 }
 
 void Progress::finish() {
-    if (mode_ == Mode::Off || finished_) return;
+    if (finished_) return;
+    notify(total_);
+    if (mode_ == Mode::Off) {
+        finished_ = true;
+        return;
+    }
     if (mode_ == Mode::Terminal) {
         update(total_);
         finished_ = true;

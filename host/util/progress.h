@@ -10,11 +10,30 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
 
 namespace tsis {
+
+// Also told of every update of the Progress objects its thread creates
+// (label, fraction done in [0, 1]); called from any thread, so it must be
+// cheap and thread-safe. The window of `tsis view` shows background work so.
+using ProgressObserver = std::function<void(const std::string& label, double fraction)>;
+
+// Installs an observer for the Progress objects created on this thread while it lives.
+class ScopedProgressObserver {
+  public:
+    explicit ScopedProgressObserver(ProgressObserver observer);
+    ~ScopedProgressObserver();
+    ScopedProgressObserver(const ScopedProgressObserver&) = delete;
+    ScopedProgressObserver& operator=(const ScopedProgressObserver&) = delete;
+
+  private:
+    ProgressObserver observer_;
+    const ProgressObserver* previous_;
+};
 
 class Progress {
   public:
@@ -34,8 +53,11 @@ class Progress {
     void printLine(long long done);
     void tick();
 
+    void notify(long long done);
+
     std::string label_;
     long long total_;
+    ProgressObserver observer_;  // the creating thread's (ScopedProgressObserver), or none
     Mode mode_;
     std::atomic<long long> done_{0};
     std::atomic<bool> finished_{false};

@@ -7,6 +7,8 @@
 #include <regex>
 #include <sstream>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "support/scoped_env.h"
 
@@ -63,6 +65,33 @@ TEST(Progress, OffPrintsNothing) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
+TEST(Progress, ObserverOfTheCreatingThreadSeesEveryUpdate) {
+    ScopedEnv off("TSIS_PROGRESS", "0");  // the observer does not depend on stderr's mode
+    std::vector<std::pair<std::string, double>> seen;
+    {
+        ScopedProgressObserver observer(
+            [&](const std::string& label, double f) { seen.emplace_back(label, f); });
+        Progress p("gather", 4);
+        p.update(1);
+        p.update(3);
+    }
+    const std::vector<std::pair<std::string, double>> expected = {
+        {"gather", 0.0}, {"gather", 0.25}, {"gather", 0.75}, {"gather", 1.0}};
+    EXPECT_EQ(seen, expected);
+    // Gone with its scope, and never seen by another thread's Progress.
+    {
+        Progress after("after", 1);
+    }
+    std::thread other;
+    {
+        ScopedProgressObserver observer(
+            [&](const std::string& label, double f) { seen.emplace_back(label, f); });
+        other = std::thread([] { Progress p("other", 2); });
+        other.join();
+    }
+    EXPECT_EQ(seen, expected);
 }
 
 }  // namespace

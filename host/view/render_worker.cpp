@@ -1,0 +1,116 @@
+#include "view/render_worker.h"
+
+#include "util/error.h"
+#include "view/thread_priority.h"
+
+namespace tsis {
+
+std::string currentErrorMessage() {
+    try {
+        throw;
+    } catch (const cl::Error& e) {
+        return concat("OpenCL call ", e.what(), " failed with code ", e.err());
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown error";
+    }
+}
+
+RenderWorker::RenderWorker(const std::string& clDevice, std::function<void()> wake)
+    : wake_(std::move(wake)) {
+    thread_ = std::thread([this, clDevice] { run(clDevice); });
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return started_; });
+    if (!startError_.empty()) {
+        lock.unlock();
+        thread_.join();
+        throw Error(startError_);
+    }
+}
+
+RenderWorker::~RenderWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+}
+
+void RenderWorker::submit(FrameJob job) {
+    {
+        std::lock_guard lock(mutex_);
+        waiting_ = std::move(job);
+    }
+    changed_.notify_all();
+}
+
+bool RenderWorker::busy() const {
+    std::lock_guard lock(mutex_);
+    return waiting_.has_value() || rendering_;
+}
+
+std::optional<FrameDone> RenderWorker::take() {
+    std::lock_guard lock(mutex_);
+    std::optional<FrameDone> out = std::move(done_);
+    done_.reset();
+    return out;
+}
+
+FrameDone RenderWorker::render(const FrameJob& job) {
+    FrameDone done;
+    done.id = job.id;
+    try {
+        if (job.mesh != mesh_) {
+            mesh_ = job.mesh;
+            scene_.mesh = *mesh_;
+        }
+        scene_.material = job.scene.material;
+        scene_.lights = job.scene.lights;
+        scene_.camera = job.scene.camera;
+        done.frame = renderer_->render(scene_, job.options);
+    } catch (...) {
+        done.error = currentErrorMessage();
+    }
+    return done;
+}
+
+void RenderWorker::run(const std::string& clDevice) {
+    lowerThisThreadPriority();
+    // The Renderer is made here: its OSMesa context is current on this thread only.
+    {
+        std::lock_guard lock(mutex_);
+        try {
+            renderer_ = std::make_unique<Renderer>(clDevice);
+        } catch (...) {
+            startError_ = currentErrorMessage();
+        }
+        started_ = true;
+    }
+    changed_.notify_all();
+    if (!renderer_) return;
+    ScopedProgressObserver observer(progress_.observer());
+    for (;;) {
+        FrameJob job;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] { return stop_ || waiting_.has_value(); });
+            if (stop_) break;
+            job = std::move(*waiting_);
+            waiting_.reset();
+            rendering_ = true;
+        }
+        FrameDone done = render(job);
+        progress_.clear();
+        {
+            std::lock_guard lock(mutex_);
+            done_ = std::move(done);
+            rendering_ = false;
+        }
+        if (wake_) wake_();
+    }
+    renderer_.reset();  // on the thread whose context it is
+}
+
+}  // namespace tsis

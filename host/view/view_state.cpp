@@ -1,0 +1,139 @@
+#include "view/view_state.h"
+
+#include <algorithm>
+
+#include "render/method.h"
+#include "util/error.h"
+#include "util/parse.h"
+
+namespace tsis {
+
+namespace {
+
+bool onOff(const std::string& name, const std::string& value) {
+    if (value == "on" || value == "1") return true;
+    if (value == "off" || value == "0") return false;
+    fail(name, ": '", value, "' is not on or off");
+}
+
+int integerIn(const std::string& name, const std::string& value, int lo, int hi) {
+    const long long v = parseInteger(name, value);
+    if (v < lo || v > hi) fail(name, ": ", v, " is outside [", lo, ", ", hi, "]");
+    return static_cast<int>(v);
+}
+
+int powerOfTwoIn(const std::string& name, const std::string& value, int lo, int hi) {
+    const int v = integerIn(name, value, lo, hi);
+    if (v & (v - 1)) fail(name, ": ", v, " is not a power of two");
+    return v;
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovYDegrees == b.fovYDegrees;
+}
+
+bool sameLights(const std::vector<Light>& a, const std::vector<Light>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Light& x, const Light& y) {
+        return x.type == y.type && x.vec == y.vec && x.rgb == y.rgb && x.shadows == y.shadows;
+    });
+}
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.sigmaSPrime == b.sigmaSPrime && a.sigmaA == b.sigmaA && a.eta == b.eta;
+}
+
+}  // namespace
+
+void resize(ViewState& state, double sizeMm) {
+    if (!(sizeMm >= kMinSizeMm && sizeMm <= kMaxSizeMm))
+        fail("size-mm: ", sizeMm, " is outside [", kMinSizeMm, ", ", kMaxSizeMm, "]");
+    const float k = static_cast<float>(sizeMm / state.sizeMm);
+    for (Camera* c : {&state.camera, &state.home}) {
+        c->eye *= k;
+        c->target *= k;
+    }
+    for (Light& l : state.lights) {
+        if (l.type != Light::Type::Point) continue;
+        l.vec *= k;
+        l.rgb *= k * k;
+    }
+    state.sizeMm = sizeMm;
+}
+
+std::shared_ptr<const Mesh> scaledMesh(const ViewState& state) {
+    if (!state.mesh || state.sizeMm == state.meshSizeMm) return state.mesh;
+    auto mesh = std::make_shared<Mesh>(*state.mesh);
+    normalizeMesh(*mesh, state.sizeMm);
+    return mesh;
+}
+
+Scene sceneOf(const ViewState& state, std::shared_ptr<const Mesh> mesh) {
+    Scene scene;
+    if (mesh) scene.mesh = *mesh;
+    scene.material = state.material;
+    scene.lights = state.lights;
+    scene.camera = state.camera;
+    return scene;
+}
+
+bool drawsSamples(const std::string& method) {
+    return method == "tsis" || method == "hybrid" || method == "mis" || method == "lss";
+}
+
+const std::vector<std::string>& parameterNames() {
+    static const std::vector<std::string> names = {
+        "material", "sigma-s",   "sigma-a",   "eta",         "size-mm", "method",
+        "samples",  "atlas-res", "light-res", "progressive", "frames",  "auto-orbit"};
+    return names;
+}
+
+void setParameter(ViewState& state, const std::string& name, const std::string& value) {
+    ViewState s = state;
+    Material& m = s.material;
+    RenderOptions& o = s.options;
+    if (name == "material") {
+        m = presetMaterial(value);
+    } else if (name == "sigma-s" || name == "sigma-a" || name == "eta") {
+        if (name == "sigma-s") m.sigmaSPrime = parseVec3(name, value);
+        if (name == "sigma-a") m.sigmaA = parseVec3(name, value);
+        if (name == "eta") m.eta = parseNumber(name, value);
+        m.name = "custom";
+        validateMaterial(m);
+    } else if (name == "size-mm") {
+        resize(s, parseNumber(name, value));
+    } else if (name == "method") {
+        o.method = value;
+        validateRenderOptions(o);
+    } else if (name == "samples") {
+        o.samples = integerIn(name, value, 1, 1 << 22);
+    } else if (name == "atlas-res") {
+        o.atlasResolution = powerOfTwoIn(name, value, 16, 4096);
+    } else if (name == "light-res") {
+        o.lightResolution = value == "0" ? 0 : powerOfTwoIn(name, value, 16, 8192);
+    } else if (name == "progressive") {
+        s.progressive = onOff(name, value);
+    } else if (name == "frames") {
+        s.maxFrames = integerIn(name, value, 1, 100000);
+    } else if (name == "auto-orbit") {
+        s.autoOrbit = onOff(name, value);
+    } else {
+        std::string list;
+        for (const std::string& n : parameterNames()) list += (list.empty() ? "" : ", ") + n;
+        fail("unknown parameter '", name, "' (", list, ")");
+    }
+    state = std::move(s);
+}
+
+bool sameScene(const ViewState& a, const ViewState& b) {
+    return a.mesh == b.mesh && a.sizeMm == b.sizeMm && sameMaterial(a.material, b.material) &&
+           sameLights(a.lights, b.lights) && sameCamera(a.camera, b.camera) &&
+           a.options.width == b.options.width && a.options.height == b.options.height;
+}
+
+bool sameFrame(const ViewState& a, const ViewState& b) {
+    const RenderOptions &oa = a.options, &ob = b.options;
+    return sameScene(a, b) && oa.method == ob.method && oa.samples == ob.samples &&
+           oa.atlasResolution == ob.atlasResolution && oa.lightResolution == ob.lightResolution;
+}
+
+}  // namespace tsis

@@ -1,0 +1,64 @@
+// What `tsis view` shows and how it renders it: everything the panel, the
+// mouse, the keys and a script change, and the scene a frame is rendered from.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/render_options.h"
+#include "scene/scene.h"
+
+namespace tsis {
+
+struct ViewState {
+    std::string meshSpec;  // as --mesh or "open mesh" named it
+    // The mesh prepared (normals, atlas) at meshSizeMm; the frame's mesh is
+    // it scaled to sizeMm (scaledMesh).
+    std::shared_ptr<const Mesh> mesh;
+    double meshSizeMm = 10;
+    double sizeMm = 10;  // bounding-box diagonal now
+    Material material;
+    std::vector<Light> lights;  // lights[0] is the one a drag moves
+    Camera camera;
+    Camera home;  // the start-up camera at sizeMm (the "reset view" key)
+    RenderOptions options;
+    bool autoOrbit = false;   // the main light turns about the y axis by itself
+    bool progressive = true;  // average frames while nothing changes (sampling methods)
+    int maxFrames = 64;       // ... up to this many
+};
+
+// The sizes the size slider spans, mm.
+constexpr double kMinSizeMm = 1, kMaxSizeMm = 100;
+
+// A new size: the camera and point lights scale with the object (a point
+// light's intensity by the square, so that the irradiance stays).
+void resize(ViewState& state, double sizeMm);
+
+// The state's mesh scaled to its size (normalizeMesh again, docs/design.md §2).
+std::shared_ptr<const Mesh> scaledMesh(const ViewState& state);
+
+// The frame's scene, on the mesh scaledMesh() made.
+Scene sceneOf(const ViewState& state, std::shared_ptr<const Mesh> mesh);
+
+// Whether frames of `method` differ by their sample set (so that averaging
+// them converges): tsis, hybrid, mis, lss.
+bool drawsSamples(const std::string& method);
+
+// Sets a parameter by the name a script uses (`set NAME VALUE`): material,
+// sigma-s, sigma-a, eta, size-mm, method, samples, atlas-res, light-res,
+// progressive (on|off), frames, auto-orbit (on|off). Throws tsis::Error naming
+// the parameter when the name or the value is bad; the state is then unchanged.
+void setParameter(ViewState& state, const std::string& name, const std::string& value);
+
+// The names setParameter takes, for messages.
+const std::vector<std::string>& parameterNames();
+
+// Same mesh, size, material, lights, camera and image size: one reference
+// image holds for both.
+bool sameScene(const ViewState& a, const ViewState& b);
+// sameScene, and the same method, N and resolutions (what the viewer changes
+// of the options): the same frame, so a new one is not needed.
+bool sameFrame(const ViewState& a, const ViewState& b);
+
+}  // namespace tsis

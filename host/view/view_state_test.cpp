@@ -1,0 +1,124 @@
+#include "view/view_state.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/builtin.h"
+#include "util/error.h"
+
+namespace tsis {
+namespace {
+
+ViewState twoLights() {
+    ViewState s;
+    s.sizeMm = s.meshSizeMm = 10;
+    s.material = presetMaterial("skin1");
+    Light point;
+    point.vec = {3, 4, 0};
+    point.rgb = glm::vec3(2);
+    Light dir;
+    dir.type = Light::Type::Directional;
+    dir.vec = {0, -1, 0};
+    dir.rgb = glm::vec3(0.5f);
+    s.lights = {point, dir};
+    s.camera.eye = {0, 2, 20};
+    s.camera.target = {0, 1, 0};
+    s.home = s.camera;
+    return s;
+}
+
+TEST(ViewState, ResizeScalesCameraAndPointLightsKeepingIrradiance) {
+    ViewState s = twoLights();
+    resize(s, 30);
+    EXPECT_EQ(s.sizeMm, 30);
+    EXPECT_EQ(s.camera.eye, glm::vec3(0, 6, 60));
+    EXPECT_EQ(s.camera.target, glm::vec3(0, 3, 0));
+    EXPECT_EQ(s.home.eye, s.camera.eye);
+    EXPECT_EQ(s.lights[0].vec, glm::vec3(9, 12, 0));
+    // I/d² at the object's centre stays.
+    EXPECT_FLOAT_EQ(s.lights[0].rgb.x / glm::dot(s.lights[0].vec, s.lights[0].vec), 2.0f / 25.0f);
+    EXPECT_EQ(s.lights[1].vec, glm::vec3(0, -1, 0));
+    EXPECT_EQ(s.lights[1].rgb, glm::vec3(0.5f));
+    EXPECT_THROW(resize(s, 0.5), Error);
+    EXPECT_THROW(resize(s, 101), Error);
+    EXPECT_EQ(s.sizeMm, 30);
+}
+
+TEST(ViewState, ScaledMeshHasTheSizeAsItsDiagonal) {
+    ViewState s = twoLights();
+    Mesh m = builtinMesh("sphere");
+    normalizeMesh(m, 10);
+    s.mesh = std::make_shared<Mesh>(m);
+    EXPECT_EQ(scaledMesh(s), s.mesh) << "no copy at the prepared size";
+    resize(s, 25);
+    const std::shared_ptr<const Mesh> big = scaledMesh(s);
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& p : big->positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    EXPECT_NEAR(glm::length(hi - lo), 25.0f, 1e-4f);
+    EXPECT_EQ(big->uvs, s.mesh->uvs) << "the atlas stays";
+}
+
+TEST(ViewState, SetParameterChangesOneThingOrNothing) {
+    ViewState s = twoLights();
+    setParameter(s, "material", "marble");
+    EXPECT_EQ(s.material.name, "marble");
+    EXPECT_EQ(s.material.eta, 1.5);
+    setParameter(s, "sigma-a", "0.1,0.2,0.3");
+    EXPECT_EQ(s.material.sigmaA, glm::dvec3(0.1, 0.2, 0.3));
+    EXPECT_EQ(s.material.name, "custom");
+    setParameter(s, "method", "tsis");
+    setParameter(s, "samples", "64");
+    setParameter(s, "atlas-res", "256");
+    setParameter(s, "light-res", "0");
+    setParameter(s, "progressive", "off");
+    setParameter(s, "auto-orbit", "on");
+    setParameter(s, "frames", "8");
+    setParameter(s, "size-mm", "20");
+    EXPECT_EQ(s.options.method, "tsis");
+    EXPECT_EQ(s.options.samples, 64);
+    EXPECT_EQ(s.options.atlasResolution, 256);
+    EXPECT_FALSE(s.progressive);
+    EXPECT_TRUE(s.autoOrbit);
+    EXPECT_EQ(s.maxFrames, 8);
+    EXPECT_EQ(s.sizeMm, 20);
+    const std::pair<const char*, const char*> bad[] = {
+        {"material", "unobtainium"}, {"sigma-s", "1,2"}, {"eta", "0.5"},        {"size-mm", "1000"},
+        {"method", "magic"},         {"samples", "0"},   {"atlas-res", "1000"}, {"light-res", "12"},
+        {"progressive", "maybe"},    {"frames", "x"},    {"colour", "red"},
+    };
+    for (const auto& [name, value] : bad) {
+        ViewState before = s;
+        EXPECT_THROW(setParameter(s, name, value), Error) << name << " " << value;
+        EXPECT_TRUE(sameFrame(before, s)) << name;
+        EXPECT_EQ(before.material.name, s.material.name) << name;
+    }
+}
+
+TEST(ViewState, SameSceneAndSameFrame) {
+    const ViewState a = twoLights();
+    ViewState b = a;
+    EXPECT_TRUE(sameFrame(a, b));
+    b.options.method = "tsis";
+    EXPECT_TRUE(sameScene(a, b)) << "a reference holds for any method";
+    EXPECT_FALSE(sameFrame(a, b));
+    b = a;
+    b.lights[0].vec.x += 1e-3f;
+    EXPECT_FALSE(sameScene(a, b));
+    b = a;
+    b.camera.eye.z += 1e-3f;
+    EXPECT_FALSE(sameScene(a, b));
+    b = a;
+    b.material.sigmaA.x *= 2;
+    EXPECT_FALSE(sameScene(a, b));
+    b = a;
+    b.autoOrbit = true;
+    b.options.keepAovs = true;
+    EXPECT_TRUE(sameFrame(a, b)) << "switches that do not change the image";
+}
+
+}  // namespace
+}  // namespace tsis
