@@ -19,6 +19,7 @@ PACKAGES=(
   libosmesa6-dev libglm-dev libopenimageio-dev openimageio-tools
   libcgal-dev libeigen3-dev libcgal-demo libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libembree-dev
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}
 JOBS=${TSIS_JOBS:-$(nproc)}

@@ -33,8 +33,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"width", true, false, "W  image width (default 512)"},
         {"height", true, false, "H  image height (default 512)"},
         {"method", true, false,
-         "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see "
-         "README"},
+         "NAME  pyramid (default), tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference, "
+         "volumetric; see README"},
         {"samples", true, false, "N  importance samples (default 900); lss: samples per pixel"},
         {"seed", true, false, "S  random seed (default 1)"},
         {"spacing", true, false,
@@ -62,6 +62,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"tsm-radius", true, false,
          "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding radius "
          "(default 2)"},
+        {"spp", true, false,
+         "N  volumetric: paths per pixel (default 16; with --time: until the time is up)"},
+        {"time", true, false, "S  volumetric: stop after S seconds of paths (whole passes)"},
         {"atlas-res", true, false, "R  atlas resolution, a power of two (default 512)"},
         {"atlas", true, false,
          "MODE  auto (the mesh's UVs when valid, else build; default), file (require valid UVs) or "
@@ -219,6 +222,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.ltsmPerRing = args.getInt("ltsm-per-ring", 4, 1, 256);
     o.misDistanceSamples = args.getInt("mis-distance", 16, 0, 1 << 16);
     o.tsmRadius = args.getDouble("tsm-radius", 2.0, 1e-3, 1e3);
+    o.spp = args.getInt("spp", 0, 1, 1 << 20);
+    o.timeSeconds = args.getDouble("time", 0.0, 1e-3, 1e6);
     o.key = static_cast<float>(args.getDouble("key", 0.18, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     o.reuseLighting = !args.flag("no-reuse-lighting");

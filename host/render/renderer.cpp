@@ -80,7 +80,7 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     hashBytes(h, o.method.data(), o.method.size());
     hashBytes(h, o.rdPart.data(), o.rdPart.size());
     for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples,
-                  o.pyramidStride})
+                  o.pyramidStride, o.spp})
         hashValue(h, v);
     for (double v :
          {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon), o.tsmRadius})
