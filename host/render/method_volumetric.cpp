@@ -18,7 +18,8 @@ namespace tsis {
 VolumetricMethod::VolumetricMethod(ClRuntime& cl) : cl_(cl) {}
 
 void VolumetricMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    graph.addPass({"volumetric", {"points_cl"}, {"radiosity_cl"}, [this, &ctx] { render(ctx); }, true});
+    graph.addPass(
+        {"volumetric", {"points_cl"}, {"radiosity_cl"}, [this, &ctx] { render(ctx); }, true});
 }
 
 void VolumetricMethod::render(FrameContext& ctx) {
@@ -49,7 +50,7 @@ void VolumetricMethod::render(FrameContext& ctx) {
     const int spp = o.spp > 0 ? o.spp : (o.timeSeconds > 0 ? (1 << 20) : kDefaultSpp);
     const uint64_t seed = frameSeed(ctx);
     std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
-    std::atomic<long long> vertices{0}, nee{0}, unsolved{0};
+    std::atomic<long long> vertices{0}, nee{0}, unsettled{0};
     const bool timed = o.timeSeconds > 0;
     Progress progress("volumetric: " + std::to_string(count) + " pixels",
                       timed ? static_cast<long long>(o.timeSeconds * 1000) : spp);
@@ -66,7 +67,7 @@ void VolumetricMethod::render(FrameContext& ctx) {
             }
             vertices += c.vertices;
             nee += c.nee;
-            unsolved += c.neeUnsolved;
+            unsettled += c.neeUnsettled;
         });
         ++done;
         const double seconds = timer.ms() / 1000.0;
@@ -84,7 +85,8 @@ void VolumetricMethod::render(FrameContext& ctx) {
         const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
         const double ft =
             fresnelTransmittance(eta, std::abs(glm::dot(boundary_->shadingNormal(hits[k]), toEye)));
-        const glm::dvec3 b = ft > 0 ? sum[k] / static_cast<double>(done) * (M_PI / ft) : glm::dvec3(0.0);
+        const glm::dvec3 b =
+            ft > 0 ? sum[k] / static_cast<double>(done) * (M_PI / ft) : glm::dvec3(0.0);
         for (int c = 0; c < 3; ++c) out[k * 4 + static_cast<size_t>(c)] = static_cast<float>(b[c]);
     }
     if (count > 0)
@@ -95,7 +97,7 @@ void VolumetricMethod::render(FrameContext& ctx) {
     ctx.stats->set("volumetric_spp", done);
     ctx.stats->set("volumetric_vertices", static_cast<double>(vertices.load()));
     ctx.stats->set("volumetric_nee", static_cast<double>(nee.load()));
-    ctx.stats->set("volumetric_nee_unsolved", static_cast<double>(unsolved.load()));
+    ctx.stats->set("volumetric_nee_unsettled", static_cast<double>(unsettled.load()));
     ctx.stats->set("rd_evaluations", 0.0);
 }
 

@@ -26,8 +26,8 @@
 // Bias. None for the paths it samples; it misses light reflected inside the
 // object between entering and its first scattering (Fr ≈ 2–4% of light that
 // crossed the object unscattered, e^(−σt·thickness) of it) and entry points
-// the facet iteration does not settle on (`volumetric_nee_unsolved` in
-// --stats counts them; shadowed points are counted too). It excludes, like
+// the facet iteration does not settle on (`volumetric_nee_unsettled` of
+// `volumetric_nee` in --stats). It excludes, like
 // every method, the specular reflection of the lights at the camera's point
 // and light transmitted without scattering. Both vanish on optically thick
 // objects; the semi-infinite slab is exact (volumetric_test.cpp checks it

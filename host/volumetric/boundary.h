@@ -13,7 +13,7 @@ struct SurfaceHit {
     glm::dvec3 position{0.0};
     glm::dvec3 normal{0.0};  // outward unit normal of the facet's plane
     int facet = -1;
-    double u = 0, v = 0;     // barycentric coordinates of vertices 1 and 2 (meshes)
+    double u = 0, v = 0;  // barycentric coordinates of vertices 1 and 2 (meshes)
 };
 
 class Boundary {

@@ -47,8 +47,7 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
     for (int event = 0; event < kMaxEvents; ++event) {
         SurfaceHit surface;
         const bool bounded = boundary.intersect(pos, dir, kInfinity, surface);
-        const FreeFlight flight =
-            sampleFreeFlight(m, bounded ? surface.t : kInfinity, w, rng);
+        const FreeFlight flight = sampleFreeFlight(m, bounded ? surface.t : kInfinity, w, rng);
         if (flight.scattered) {
             pos += dir * flight.t;
             ++counters.vertices;
@@ -64,8 +63,9 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
                 if (rng.uniform() >= q) continue;
                 ++counters.nee;
                 RefractedLight in;
-                if (!refractedLight(boundary, light, m.eta, pos, in, &straight)) {
-                    ++counters.neeUnsolved;
+                const LightPath path = refractedLight(boundary, light, m.eta, pos, in, &straight);
+                if (path != LightPath::Reached) {
+                    counters.neeUnsettled += path == LightPath::Unsettled;
                     continue;
                 }
                 radiance += w.value() * kPhase * in.irradiance * transmittance(m, in.distance) / q;
@@ -82,8 +82,9 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
             continue;
         }
         if (!bounded) break;  // an open mesh: the walk left through a hole
-        // At the boundary from inside: reflect with probability Fr, else leave.
-        const double cosI = -glm::dot(dir, surface.normal);
+        // At the boundary from inside (leaving: dir·n > 0): reflect with
+        // probability Fr, else leave.
+        const double cosI = glm::dot(dir, surface.normal);
         const double fr = fresnelReflectance(1.0 / m.eta, std::abs(cosI));
         if (rng.uniform() < fr) {
             dir = reflect(dir, surface.normal);

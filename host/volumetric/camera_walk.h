@@ -23,9 +23,9 @@ struct WalkScene {
 };
 
 struct WalkCounters {
-    long long vertices = 0;    // scattering vertices
-    long long nee = 0;         // next-event estimations attempted (after roulette)
-    long long neeUnsolved = 0; // of those, entry point not found (shadowed included)
+    long long vertices = 0;      // scattering vertices
+    long long nee = 0;           // next-event estimations attempted (after roulette)
+    long long neeUnsettled = 0;  // of those, the entry point not found (refracted_light.h)
 };
 
 // Radiance leaving surface point `hit` towards the unit direction `toEye`

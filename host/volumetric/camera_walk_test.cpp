@@ -9,17 +9,10 @@
 #include "mesh/mesh.h"
 #include "physics/fresnel.h"
 #include "volumetric/mesh_boundary.h"
+#include "volumetric/walk_test_util.h"
 
 namespace tsis {
 namespace {
-
-Medium medium(glm::dvec3 sigmaS, glm::dvec3 sigmaA, double eta) {
-    Material mat;
-    mat.sigmaSPrime = sigmaS;
-    mat.sigmaA = sigmaA;
-    mat.eta = eta;
-    return Medium(mat);
-}
 
 Mesh sphere(double diameterMm) {
     Mesh mesh = builtinSphere();
@@ -35,24 +28,21 @@ TEST(CameraWalk, WhiteFurnaceWithoutAbsorption) {
     // exercise the spectral weights; the mesh, the Fresnel splits inside.
     const Mesh mesh = sphere(3.0);
     const MeshBoundary boundary(mesh);
-    WalkScene scene{&boundary, medium({2.19, 2.62, 3.0}, {0, 0, 0}, 1.5), {}, glm::dvec3(1.0)};
+    WalkScene scene{&boundary, testMedium({2.19, 2.62, 3.0}, {0, 0, 0}, 1.5), {}, glm::dvec3(1.0)};
     WalkCounters counters;
     for (double angle : {0.0, 0.7, 1.2}) {
         const glm::dvec3 toEye(std::sin(angle), 0.0, std::cos(angle));
         SurfaceHit hit;
         ASSERT_TRUE(boundary.intersect(toEye * 10.0, -toEye, kInfinity, hit));
         const double ft = fresnelTransmittance(1.5, glm::dot(hit.normal, toEye));
-        glm::dvec3 sum(0.0), sumSq(0.0);
+        MeanEstimate walk;
         const int n = 4000;
         for (int i = 0; i < n; ++i) {
             Rng rng(11, static_cast<uint64_t>(i));
-            const glm::dvec3 v = exitantRadiance(scene, hit, toEye, rng, counters);
-            sum += v;
-            sumSq += v * v;
+            walk.add(exitantRadiance(scene, hit, toEye, rng, counters));
         }
         for (int c = 0; c < 3; ++c) {
-            const double mean = sum[c] / n;
-            const double err = std::sqrt(std::max(0.0, sumSq[c] / n - mean * mean) / n);
+            const double mean = walk.mean()[c], err = walk.error(c);
             EXPECT_NEAR(mean, ft, 4 * err + 1e-9) << "angle " << angle << " channel " << c;
         }
     }
@@ -64,7 +54,9 @@ TEST(CameraWalk, SameSeedSameRadiance) {
     Light light;
     light.vec = glm::vec3(0.0f, 0.0f, 20.0f);
     light.rgb = glm::vec3(400.0f);
-    WalkScene scene{&boundary, medium({0.74, 0.88, 1.01}, {0.032, 0.17, 0.48}, 1.3), {light},
+    WalkScene scene{&boundary,
+                    testMedium({0.74, 0.88, 1.01}, {0.032, 0.17, 0.48}, 1.3),
+                    {light},
                     glm::dvec3(0.0)};
     SurfaceHit hit;
     ASSERT_TRUE(boundary.intersect({0, 0, 10}, {0, 0, -1}, kInfinity, hit));

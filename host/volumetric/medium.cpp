@@ -9,7 +9,8 @@ namespace tsis {
 Medium::Medium(const Material& m)
     : sigmaS(m.sigmaSPrime), sigmaA(m.sigmaA), sigmaT(m.sigmaSPrime + m.sigmaA), eta(m.eta) {}
 
-SpectralWeight::SpectralWeight(Rng& rng) : hero_(std::min(2, static_cast<int>(rng.uniform() * 3))) {}
+SpectralWeight::SpectralWeight(Rng& rng)
+    : hero_(std::min(2, static_cast<int>(rng.uniform() * 3))) {}
 
 void SpectralWeight::sampled(const glm::dvec3& f, const glm::dvec3& pdf) {
     const double ph = pdf[hero_];

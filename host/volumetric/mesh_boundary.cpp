@@ -20,14 +20,17 @@ struct MeshBoundary::Scene {
 
 MeshBoundary::MeshBoundary(const Mesh& mesh) : scene_(std::make_unique<Scene>()), mesh_(mesh) {
     scene_->device = rtcNewDevice("threads=1");
-    if (!scene_->device) fail("Embree: cannot create a device (error ", rtcGetDeviceError(nullptr), ")");
+    if (!scene_->device)
+        fail("Embree: cannot create a device (error ", rtcGetDeviceError(nullptr), ")");
     scene_->scene = rtcNewScene(scene_->device);
     rtcSetSceneBuildQuality(scene_->scene, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geom = rtcNewGeometry(scene_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                          mesh.positions.size()));
+    auto* idx = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), mesh.triangles.size()));
     double extent = 0;
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
@@ -39,7 +42,8 @@ MeshBoundary::MeshBoundary(const Mesh& mesh) : scene_(std::make_unique<Scene>())
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
         for (int c = 0; c < 3; ++c) idx[3 * t + static_cast<size_t>(c)] = tri[c];
-        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
+        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]),
+            c(mesh.positions[tri.z]);
         glm::dvec3 n = glm::cross(b - a, c - a);
         const double len = glm::length(n);
         n = len > 0 ? n / len : glm::dvec3(0.0);
@@ -82,7 +86,8 @@ bool MeshBoundary::intersect(const glm::dvec3& origin, const glm::dvec3& dir, do
     hit.u = rh.hit.u;
     hit.v = rh.hit.v;
     hit.position = (1.0 - hit.u - hit.v) * glm::dvec3(mesh_.positions[tri.x]) +
-                   hit.u * glm::dvec3(mesh_.positions[tri.y]) + hit.v * glm::dvec3(mesh_.positions[tri.z]);
+                   hit.u * glm::dvec3(mesh_.positions[tri.y]) +
+                   hit.v * glm::dvec3(mesh_.positions[tri.z]);
     hit.t = glm::dot(hit.position - origin, dir);
     hit.normal = facetNormals_[rh.hit.primID];
     return true;

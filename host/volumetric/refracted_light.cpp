@@ -11,7 +11,7 @@ namespace tsis {
 namespace {
 
 // Facets tried before giving up: on smooth meshes the iteration settles in 1–3.
-constexpr int kMaxFacetIterations = 8;
+constexpr int kMaxFacetIterations = 32;
 
 }  // namespace
 
@@ -34,8 +34,8 @@ double pointRefractedSpreading(double h1, double h2, double cosI, double cosT, d
     return rhoOverSin * cosT * dRho;
 }
 
-bool refractedLight(const Boundary& boundary, const Light& light, double eta, const glm::dvec3& x,
-                    RefractedLight& out, const SurfaceHit* straight) {
+LightPath refractedLight(const Boundary& boundary, const Light& light, double eta,
+                         const glm::dvec3& x, RefractedLight& out, const SurfaceHit* straight) {
     const bool point = light.type == Light::Type::Point;
     const glm::dvec3 lightPos(light.vec);
     const glm::dvec3 travel = point ? glm::dvec3(0.0) : glm::normalize(glm::dvec3(light.vec));
@@ -45,17 +45,17 @@ bool refractedLight(const Boundary& boundary, const Light& light, double eta, co
         facet = *straight;
     } else {
         const glm::dvec3 towardLight = point ? glm::normalize(lightPos - x) : -travel;
-        if (!boundary.intersect(x, towardLight, kInfinity, facet)) return false;
+        if (!boundary.intersect(x, towardLight, kInfinity, facet)) return LightPath::Blocked;
     }
     for (int iter = 0; iter < kMaxFacetIterations; ++iter) {
         const glm::dvec3 n = facet.normal;
         const double h2 = glm::dot(facet.position - x, n);  // depth of x below the plane
-        if (h2 <= 0) return false;
+        if (h2 <= 0) return LightPath::Unsettled;
         glm::dvec3 y;
         double cosI, cosT;
         if (point) {
             const double h1 = glm::dot(lightPos - facet.position, n);
-            if (h1 <= 0) return false;  // the light is behind this facet's plane
+            if (h1 <= 0) return LightPath::Blocked;  // the light is behind this facet's plane
             const glm::dvec3 foot = lightPos - h1 * n, xOnPlane = x + h2 * n;
             const glm::dvec3 across = xOnPlane - foot;
             const double d = glm::length(across);
@@ -65,7 +65,7 @@ bool refractedLight(const Boundary& boundary, const Light& light, double eta, co
             y = d > 0 ? foot + across * (h1 * s / (cosI * d)) : foot;
         } else {
             cosI = -glm::dot(travel, n);
-            if (cosI <= 0) return false;
+            if (cosI <= 0) return LightPath::Blocked;
             glm::dvec3 t;
             refract(travel, n, eta, t);
             cosT = -glm::dot(t, n);
@@ -75,8 +75,9 @@ bool refractedLight(const Boundary& boundary, const Light& light, double eta, co
         const glm::dvec3 toY = y - x;
         const double dist = glm::length(toY);
         SurfaceHit next;
-        if (!boundary.intersect(x, toY / dist, kInfinity, next)) return false;
-        if (!(samePlane(next, facet, eps * 10) && std::abs(next.t - dist) < eps * 10 + 1e-7 * dist)) {
+        if (!boundary.intersect(x, toY / dist, kInfinity, next)) return LightPath::Unsettled;
+        if (!(samePlane(next, facet, eps * 10) &&
+              std::abs(next.t - dist) < eps * 10 + 1e-7 * dist)) {
             facet = next;
             continue;
         }
@@ -86,17 +87,17 @@ bool refractedLight(const Boundary& boundary, const Light& light, double eta, co
         const double lightDist = point ? glm::length(toLight) : kInfinity;
         SurfaceHit blocker;
         if (boundary.intersect(above, toLight / (point ? lightDist : 1.0), lightDist, blocker))
-            return false;
+            return LightPath::Blocked;
         const double ft = fresnelTransmittance(eta, cosI);
-        const double spread = point ? 1.0 / pointRefractedSpreading(glm::dot(lightPos - y, n), h2, cosI,
-                                                                      cosT, eta)
-                                    : cosI / cosT;
+        const double spread =
+            point ? 1.0 / pointRefractedSpreading(glm::dot(lightPos - y, n), h2, cosI, cosT, eta)
+                  : cosI / cosT;
         out.entry = next.position;
         out.distance = dist;
         out.irradiance = glm::dvec3(light.rgb) * (ft * spread);
-        return true;
+        return LightPath::Reached;
     }
-    return false;
+    return LightPath::Unsettled;
 }
 
 }  // namespace tsis

@@ -23,19 +23,24 @@
 namespace tsis {
 
 struct RefractedLight {
-    glm::dvec3 entry{0.0};       // y, on the surface
-    double distance = 0;         // |x − y|, inside the medium
+    glm::dvec3 entry{0.0};  // y, on the surface
+    double distance = 0;    // |x − y|, inside the medium
     // Irradiance at x on a plane perpendicular to the refracted ray (W/mm²),
     // Fresnel transmittance at y included, before the medium's attenuation.
     glm::dvec3 irradiance{0.0};
 };
 
-// False when no unshadowed entry point is found (shadowed, the light behind
-// the facet, or the iteration did not settle).
+enum class LightPath {
+    Reached,    // `out` holds the entry point and irradiance
+    Blocked,    // no light: behind the facet or shadowed outside
+    Unsettled,  // the facet iteration did not settle (light missed: a bias)
+};
+
 // `straight`: the first hit from x straight towards the light when the caller
 // has it (the iteration's start), else null.
-bool refractedLight(const Boundary& boundary, const Light& light, double eta, const glm::dvec3& x,
-                    RefractedLight& out, const SurfaceHit* straight = nullptr);
+LightPath refractedLight(const Boundary& boundary, const Light& light, double eta,
+                         const glm::dvec3& x, RefractedLight& out,
+                         const SurfaceHit* straight = nullptr);
 
 // The point light's refracted irradiance through a plane, perpendicular to the
 // ray (W/mm² per W/sr): the light h1 above the plane, x h2 below, incidence

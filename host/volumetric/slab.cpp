@@ -35,7 +35,8 @@ double SlabResult::profile(int channel, double rMm, const Medium& m) const {
 
 SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
     SlabResult result;
-    const int bins = static_cast<int>(std::round(std::log10(o.maxMfp / o.minMfp) * o.binsPerDecade));
+    const int bins =
+        static_cast<int>(std::round(std::log10(o.maxMfp / o.minMfp) * o.binsPerDecade));
     for (int b = 0; b <= bins; ++b)
         result.edges.push_back(o.minMfp * std::pow(10.0, static_cast<double>(b) / o.binsPerDecade));
     const double coneCos = std::cos(o.coneDegrees * M_PI / 180.0);
@@ -86,8 +87,8 @@ SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
                         const double k = std::floor(std::log10(rm / o.minMfp) * o.binsPerDecade);
                         if (k >= 0 && k < bins) t.bins[static_cast<size_t>(k)][ch] += out[ch];
                     }
-                    const double cosOut = std::sqrt(
-                        std::max(0.0, 1.0 - m.eta * m.eta * (1.0 - cosI * cosI)));
+                    const double cosOut =
+                        std::sqrt(std::max(0.0, 1.0 - m.eta * m.eta * (1.0 - cosI * cosI)));
                     if (cosOut > coneCos) cone = out;
                     break;
                 }
