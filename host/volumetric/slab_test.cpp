@@ -40,6 +40,18 @@ class HFunction {
     std::vector<double> h_;
 };
 
+// The camera walk at the half-space's origin, seen along the normal.
+MeanEstimate normalView(const WalkScene& scene, int paths, WalkCounters& counters) {
+    SurfaceHit hit;
+    hit.normal = {0, 1, 0};
+    MeanEstimate walk;
+    for (int i = 0; i < paths; ++i) {
+        Rng rng(7, static_cast<uint64_t>(i));
+        walk.add(exitantRadiance(scene, hit, {0, 1, 0}, rng, counters));
+    }
+    return walk;
+}
+
 TEST(Slab, IndexMatchedAlbedoProblemMatchesChandrasekhar) {
     // η = 1, light straight down: R = 1 − H(1)·√(1 − a) (the albedo problem of
     // a semi-infinite isotropic medium, Chandrasekhar 1960).
@@ -76,16 +88,8 @@ TEST(Slab, LightTracerAndSkyLitCameraWalkAgree) {
     o.photons = 100000;
     const SlabResult light = traceSlab(m, o);
     const HalfSpace slab;
-    WalkScene scene{&slab, m, {}, glm::dvec3(1.0)};
-    SurfaceHit hit;
-    hit.normal = {0, 1, 0};
     WalkCounters counters;
-    MeanEstimate walk;
-    const int n = 100000;
-    for (int i = 0; i < n; ++i) {
-        Rng rng(7, static_cast<uint64_t>(i));
-        walk.add(exitantRadiance(scene, hit, {0, 1, 0}, rng, counters));
-    }
+    const MeanEstimate walk = normalView({&slab, m, {}, glm::dvec3(1.0)}, 100000, counters);
     const double ft = fresnelTransmittance(1.3, 1.0);
     for (int c = 0; c < 3; ++c) {
         const double mean = walk.mean()[c], err = walk.error(c);
@@ -109,16 +113,8 @@ TEST(Slab, DirectionalNextEventMatchesLightTracer) {
     sun.type = Light::Type::Directional;
     sun.vec = {0.0f, -1.0f, 0.0f};
     sun.rgb = glm::vec3(1.0f);
-    WalkScene scene{&slab, m, {sun}, glm::dvec3(0.0)};
-    SurfaceHit hit;
-    hit.normal = {0, 1, 0};
     WalkCounters counters;
-    MeanEstimate walk;
-    const int n = 40000;
-    for (int i = 0; i < n; ++i) {
-        Rng rng(3, static_cast<uint64_t>(i));
-        walk.add(exitantRadiance(scene, hit, {0, 1, 0}, rng, counters));
-    }
+    const MeanEstimate walk = normalView({&slab, m, {sun}, glm::dvec3(0.0)}, 40000, counters);
     EXPECT_EQ(counters.neeUnsettled, 0);
     const double ft = fresnelTransmittance(1.3, 1.0);
     for (int c = 0; c < 3; ++c) {
