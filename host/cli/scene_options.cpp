@@ -49,7 +49,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"width", true, false, "W  image width" + byDefault(d.width)},
         {"height", true, false, "H  image height" + byDefault(d.height)},
         {"method", true, false,
-         "NAME  pyramid, tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference; see README" +
+         "NAME  pyramid, tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference, volumetric; "
+         "see README" +
              byDefault(d.method)},
         {"samples", true, false,
          "N  importance samples; lss: samples per pixel" + byDefault(d.samples)},
@@ -84,6 +85,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
          "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding "
          "radius" +
              byDefault(d.tsmRadius)},
+        {"spp", true, false,
+         "N  volumetric: paths per pixel (default 16; with --time: until the time is up)"},
+        {"time", true, false, "S  volumetric: stop after S seconds of paths (whole passes)"},
         {"atlas-res", true, false,
          "R  atlas resolution, a power of two" + byDefault(d.atlasResolution)},
         {"atlas", true, false,
@@ -252,6 +256,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.ltsmPerRing = args.getInt("ltsm-per-ring", o.ltsmPerRing, 1, 256);
     o.misDistanceSamples = args.getInt("mis-distance", o.misDistanceSamples, 0, 1 << 16);
     o.tsmRadius = args.getDouble("tsm-radius", o.tsmRadius, 1e-3, 1e3);
+    o.spp = args.getInt("spp", o.spp, 1, 1 << 20);
+    o.timeSeconds = args.getDouble("time", o.timeSeconds, 1e-3, 1e6);
     o.key = static_cast<float>(args.getDouble("key", o.key, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
     o.reuseLighting = !args.flag("no-reuse-lighting");

@@ -29,10 +29,11 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     h.add(c.eye).add(c.target).add(c.up).add(c.fovYDegrees);
     h.add(o.method).add(o.rdPart);
     for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples,
-                  o.pyramidStride})
+                  o.pyramidStride, o.spp})
         h.add(v);
     for (double v :
-         {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon), o.tsmRadius})
+         {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon), o.tsmRadius,
+                     o.timeSeconds})
         h.add(v);
     return h.add(o.seed).digest();
 }

@@ -9,6 +9,7 @@
 #include "render/method_pyramid.h"
 #include "render/method_tsis.h"
 #include "render/method_tsm.h"
+#include "render/method_volumetric.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -30,6 +31,8 @@ const Entry kMethods[] = {
     {"reference", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<ReferenceMethod>(cl); }},
     {"tsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsmMethod>(cl); }},
     {"lss", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LssMethod>(cl); }},
+    {"volumetric",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<VolumetricMethod>(cl); }},
 };
 
 }  // namespace

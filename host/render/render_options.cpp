@@ -32,6 +32,8 @@ void validateRenderOptions(const RenderOptions& o) {
     if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
         fail("image size ", o.width, "x", o.height, " is outside 1 to 8192");
     if (o.samples < 1) fail("--samples ", o.samples, " must be at least 1");
+    if (o.spp < 0 || o.spp > (1 << 20)) fail("--spp ", o.spp, " is outside 1 to 1048576");
+    if (!(o.timeSeconds >= 0)) fail("--time ", o.timeSeconds, " must be a number of seconds ≥ 0");
     const int res = o.atlasResolution;
     if (res < 16 || res > 4096 || (res & (res - 1)))
         fail("--atlas-res ", res, " must be a power of two from 16 to 4096");

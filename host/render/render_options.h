@@ -40,6 +40,10 @@ struct RenderOptions {
     // pixel's size (method_pyramid.h), 1 = every pixel
     int pyramidStride = 0;
     double tsmRadius = 2.0;  // tsm: filter radius in 1/σtr of the widest channel
+    // volumetric: paths per pixel (0 = 16, or unbounded with timeSeconds) and
+    // a time budget in seconds (0 = none); render/method_volumetric.h.
+    int spp = 0;
+    double timeSeconds = 0;
     // Copy radiosity/radiance/position/normal/coverage/atlas to the host result.
     bool keepAovs = false;
     // Average this frame's radiosity with the frames before it while nothing

@@ -1,0 +1,111 @@
+#include "render/method_volumetric.h"
+
+#include <atomic>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "physics/fresnel.h"
+#include "render/frame_keys.h"
+#include "util/parallel.h"
+#include "util/progress.h"
+#include "util/timer.h"
+#include "volumetric/camera_walk.h"
+
+namespace tsis {
+
+VolumetricMethod::VolumetricMethod(ClRuntime& cl) : cl_(cl) {}
+
+void VolumetricMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+    graph.addPass(
+        "volumetric",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.points);
+            b.write(ctx.radiosity);
+        },
+        [this, &ctx](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            render(ctx, points, ctx.radiosityBuffer(res, points.count), res.stats());
+        });
+}
+
+void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& points,
+                              cl::Buffer& radiosity, FrameStats& stats) {
+    Timer timer;
+    const Scene& scene = *ctx.scene;
+    const uint64_t key = meshHash(scene.mesh);
+    if (!boundary_ || key != meshKey_) {
+        boundary_ = std::make_unique<MeshBoundary>(scene.mesh);
+        meshKey_ = key;
+    }
+    WalkScene walk{boundary_.get(), Medium(scene.material), scene.lights, glm::dvec3(0.0)};
+    const size_t count = static_cast<size_t>(points.count);
+    const glm::dvec3 eye(ctx.eye);
+
+    // The camera ray of each covered pixel, through its G-buffer point.
+    std::vector<SurfaceHit> hits(count);
+    std::vector<char> seen(count, 0);
+    parallelFor(count, 256, [&](size_t begin, size_t end) {
+        for (size_t k = begin; k < end; ++k) {
+            const float* p = &points.host[k * 4];
+            const glm::dvec3 dir = glm::normalize(glm::dvec3(p[0], p[1], p[2]) - eye);
+            seen[k] = boundary_->intersect(eye, dir, kInfinity, hits[k]) &&
+                      glm::dot(hits[k].normal, dir) < 0;
+        }
+    });
+
+    const RenderOptions& o = *ctx.options;
+    const int spp = o.spp > 0 ? o.spp : (o.timeSeconds > 0 ? (1 << 20) : kDefaultSpp);
+    const uint64_t seed = frameSeed(ctx);
+    std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
+    std::atomic<long long> vertices{0}, nee{0}, unsettled{0};
+    const bool timed = o.timeSeconds > 0;
+    Progress progress("volumetric: " + std::to_string(count) + " pixels",
+                      timed ? static_cast<long long>(o.timeSeconds * 1000) : spp);
+    int done = 0;
+    while (done < spp) {
+        const auto s = static_cast<uint64_t>(done);
+        parallelFor(count, 64, [&](size_t begin, size_t end) {
+            WalkCounters c;
+            for (size_t k = begin; k < end; ++k) {
+                if (!seen[k]) continue;
+                Rng rng(seed, (static_cast<uint64_t>(k) << 20u) | s);
+                const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
+                sum[k] += exitantRadiance(walk, hits[k], toEye, rng, c);
+            }
+            vertices += c.vertices;
+            nee += c.nee;
+            unsettled += c.neeUnsettled;
+        });
+        ++done;
+        const double seconds = timer.ms() / 1000.0;
+        progress.update(timed ? static_cast<long long>(std::min(seconds, o.timeSeconds) * 1000)
+                              : done);
+        if (timed && seconds >= o.timeSeconds) break;
+    }
+    progress.finish();
+
+    // B_eq: what the composite's exit term turns into the volumetric radiance.
+    const double eta = scene.material.eta;
+    std::vector<float> out(count * 4, 0.0f);
+    for (size_t k = 0; k < count; ++k) {
+        if (!seen[k]) continue;
+        const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
+        const double ft =
+            fresnelTransmittance(eta, std::abs(glm::dot(boundary_->shadingNormal(hits[k]), toEye)));
+        const glm::dvec3 b =
+            ft > 0 ? sum[k] / static_cast<double>(done) * (M_PI / ft) : glm::dvec3(0.0);
+        for (int c = 0; c < 3; ++c) out[k * 4 + static_cast<size_t>(c)] = static_cast<float>(b[c]);
+    }
+    if (count > 0)
+        cl_.queue().enqueueWriteBuffer(radiosity, CL_TRUE, 0, out.size() * sizeof(float),
+                                       out.data());
+    stats.set("volumetric_spp", done);
+    stats.set("volumetric_vertices", static_cast<double>(vertices.load()));
+    stats.set("volumetric_nee", static_cast<double>(nee.load()));
+    stats.set("volumetric_nee_unsettled", static_cast<double>(unsettled.load()));
+    stats.set("rd_evaluations", 0.0);
+}
+
+}  // namespace tsis

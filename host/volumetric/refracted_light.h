@@ -1,0 +1,55 @@
+// Next-event estimation through the smooth boundary: the light that reaches an
+// interior point x straight from the point y where it entered, refracted once.
+//
+// A point or directional light seen through a smooth dielectric cannot be
+// connected to x by a straight shadow ray; the connection is the specular
+// path light → y → x, which Snell's law fixes. On a flat facet it is solved
+// in closed form (directional: the refracted direction is the facet's; point:
+// one monotone equation in the angle of incidence), and the facet is found by
+// iterating "cast from x towards the solution, take the facet hit" from the
+// straight line towards the light. On a mesh this is exact for flat facets
+// (the transport of the faceted mesh); it misses entry points whose iteration
+// does not settle within a few facets (near edges where the refracted beams of
+// two facets overlap, and the second of two solutions where beams cross deep
+// inside a convex lens: light that has travelled several mean free paths
+// unscattered) and light reflected inside before x: see method_volumetric.h.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+#include "volumetric/boundary.h"
+
+namespace tsis {
+
+struct RefractedLight {
+    glm::dvec3 entry{0.0};  // y, on the surface
+    double distance = 0;    // |x − y|, inside the medium
+    // Irradiance at x on a plane perpendicular to the refracted ray (W/mm²),
+    // Fresnel transmittance at y included, before the medium's attenuation.
+    glm::dvec3 irradiance{0.0};
+};
+
+enum class LightPath {
+    Reached,    // `out` holds the entry point and irradiance
+    Blocked,    // no light: behind the facet or shadowed outside
+    Unsettled,  // the facet iteration did not settle (light missed: a bias)
+};
+
+// `straight`: the first hit from x straight towards the light when the caller
+// has it (the iteration's start), else null.
+LightPath refractedLight(const Boundary& boundary, const Light& light, double eta,
+                         const glm::dvec3& x, RefractedLight& out,
+                         const SurfaceHit* straight = nullptr);
+
+// The point light's refracted irradiance through a plane, perpendicular to the
+// ray (W/mm² per W/sr): the light h1 above the plane, x h2 below, incidence
+// cosine cosI, refracted cosine cosT, relative index eta; Fresnel excluded.
+// dA⊥/dΩ = (ρ/sinθi)·cosθt·dρ/dθi with ρ = h1·tanθi + h2·tanθt.
+double pointRefractedSpreading(double h1, double h2, double cosI, double cosT, double eta);
+
+// Incidence sine on a plane for a point light h1 above it and a point h2 below
+// it at horizontal distance d: h1·tanθi + h2·tanθt = d (bisection).
+double solveRefractionSine(double h1, double h2, double d, double eta);
+
+}  // namespace tsis
