@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "cli/args.h"
-#include "compare/image_compare.h"
 #include "cli/scene_options.h"
+#include "compare/image_compare.h"
 #include "util/error.h"
 #include "util/output_file.h"
 
@@ -132,8 +132,7 @@ std::string fmt(double v, int decimals) {
 }
 
 std::string fmtRange(const Summary& s, int decimals) {
-    return fmt(s.median, decimals) + " (" + fmt(s.min, decimals) + "–" + fmt(s.max, decimals) +
-           ")";
+    return fmt(s.median, decimals) + " (" + fmt(s.min, decimals) + "–" + fmt(s.max, decimals) + ")";
 }
 
 std::string resultsDir() {

@@ -42,7 +42,6 @@ struct ReferenceImage {
 ReferenceImage renderReference(Renderer& renderer, BenchCase c);
 double relativeRmse(const FrameResult& frame, const ReferenceImage& ref);
 
-
 // The 1-minute load average (/proc/loadavg), and a one-line description of the
 // machine: CPU model, cores, OpenCL device.
 double loadAverage();
@@ -67,7 +66,8 @@ std::string fmtRange(const Summary& s, int decimals = 2);  // "median (min–max
 
 // bench/results/ in the source tree, or $TSIS_BENCH_RESULTS when set.
 std::string resultsDir();
-void writeResult(const std::string& name, const std::string& text);  // atomically, into resultsDir()
+void writeResult(const std::string& name,
+                 const std::string& text);  // atomically, into resultsDir()
 
 // Common command-line handling: `--quick` (fewer configurations) and `--frames N`.
 struct BenchArgs {

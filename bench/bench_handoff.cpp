@@ -7,11 +7,10 @@
 //      encodings: RGB half floats, and only the non-empty texels; with the
 //      change of the atlas' total flux (the flux invariant) each causes.
 // Writes handoff.{md,csv}.
-#include <glm/gtc/packing.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 #include <map>
 
 #include "bench_common.h"
@@ -22,10 +21,10 @@
 namespace tsis::bench {
 namespace {
 
-const char* kTransfers[] = {"gl_to_cl_flux_atlas",   "gl_to_cl_position_atlas",
-                            "gl_to_cl_normal_atlas", "gl_to_cl_points",
-                            "gl_to_cl_gbuffer",      "gl_to_cl_light_maps",
-                            "lss_upload",            "read_radiosity"};
+const char* kTransfers[] = {
+    "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "gl_to_cl_normal_atlas",
+    "gl_to_cl_points",     "gl_to_cl_gbuffer",        "gl_to_cl_light_maps",
+    "lss_upload",          "read_radiosity"};
 
 long long stageBytes(const FrameStats& f, const std::string& name) {
     for (const FrameStats::Stage& s : f.stages)
@@ -45,8 +44,8 @@ int run(const BenchArgs& a) {
     std::vector<std::string> methods = {"tsis", "hybrid", "lss", "ltsm", "tsm", "hierarchical"};
     Table csv({"method", "transfer", "bytes", "ms_median", "ms_min", "ms_max", "share_of_frame",
                "frame_ms_median", "load1"});
-    Table md({"method", "frame ms", "transfer", "bytes/frame", "ms median (min–max)",
-              "share of frame"});
+    Table md(
+        {"method", "frame ms", "transfer", "bytes/frame", "ms median (min–max)", "share of frame"});
     Table total({"method", "all transfers ms", "share of frame", "bytes/frame"});
     BenchCase c = makeCase({"--mesh", "cow", "--material", "marble", "--samples", "900"});
     for (const std::string& m : methods) {
@@ -170,9 +169,10 @@ int run(const BenchArgs& a) {
                  fmt(rd.median + pk.median + wr.median, 3), "", "", "", "", fmt(loadAverage())});
     }
 
-    std::string text = "# GL↔CL hand-off\n\nMade by `bench/run.sh handoff` "
-                       "(`build-bench/bench/bench_handoff`) on " +
-                       timestamp() + ".\nMachine: " + machine + ".\n\n";
+    std::string text =
+        "# GL↔CL hand-off\n\nMade by `bench/run.sh handoff` "
+        "(`build-bench/bench/bench_handoff`) on " +
+        timestamp() + ".\nMachine: " + machine + ".\n\n";
     text += std::string("cl_khr_gl_sharing on this device: ") +
             (hasGlSharing(renderer.cl()) ? "yes" : "**no**") +
             " (and OSMesa has no GLX/EGL context to share with), so every crossing is staged "
@@ -180,14 +180,14 @@ int run(const BenchArgs& a) {
     text += "## Per frame, cow, marble, 10 mm, N = 900, 512², atlas 1024² (median of " +
             std::to_string(a.frames) + " frames after a warm-up)\n\n" + total.markdown() + "\n" +
             md.markdown() + "\n";
-    text += "The position atlas (16 MB) crosses only when the mesh or the atlas resolution "
-            "changes (the warm-up frame), not in these frames; the camera points cross packed "
-            "(covered pixels only, " +
-            fmt(f.stats.number("covered_pixels"), 0) +
-            " here), and so does the radiosity back.\n\n";
+    text +=
+        "The position atlas (16 MB) crosses only when the mesh or the atlas resolution "
+        "changes (the warm-up frame), not in these frames; the camera points cross packed "
+        "(covered pixels only, " +
+        fmt(f.stats.number("covered_pixels"), 0) + " here), and so does the radiosity back.\n\n";
     text += "## The flux atlas in other encodings (" + std::to_string(res) + "², " +
-            std::to_string(nonEmpty) + " non-empty texels = " +
-            fmt(100.0 * nonEmpty / texels, 1) + "%)\n\n" + enc.markdown() + "\n";
+            std::to_string(nonEmpty) + " non-empty texels = " + fmt(100.0 * nonEmpty / texels, 1) +
+            "%)\n\n" + enc.markdown() + "\n";
     writeResult("handoff.csv", csv.csv());
     writeResult("handoff.md", text);
     std::printf("%s", text.c_str());
@@ -197,4 +197,6 @@ int run(const BenchArgs& a) {
 }  // namespace
 }  // namespace tsis::bench
 
-int main(int argc, char** argv) { return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 5); }
+int main(int argc, char** argv) {
+    return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 5);
+}

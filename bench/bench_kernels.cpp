@@ -110,7 +110,8 @@ int run(const BenchArgs& a) {
         int width;
         bool interleaved;
     };
-    const std::vector<Layout> layouts = {{1, false}, {8, false}, {16, false}, {8, true}, {16, true}};
+    const std::vector<Layout> layouts = {
+        {1, false}, {8, false}, {16, false}, {8, true}, {16, true}};
     std::vector<Gatherer> gatherers;
     for (const Layout& l : layouts) gatherers.emplace_back(cl, l.width, l.interleaved);
 
@@ -130,7 +131,8 @@ int run(const BenchArgs& a) {
     BenchCase frame = makeCase({"--mesh", "cow", "--material", "marble", "--samples", "900"});
 
     std::vector<Gauge> gauges;
-    gauges.push_back({"FMA float16 chains", "GFLOP/s", {}, double(fmaItems) * fmaIters * 8 * 16 * 2});
+    gauges.push_back(
+        {"FMA float16 chains", "GFLOP/s", {}, double(fmaItems) * fmaIters * 8 * 16 * 2});
     gauges.push_back({"FMA float8 chains", "GFLOP/s", {}, double(fmaItems) * fmaIters * 8 * 8 * 2});
     gauges.push_back({"copy 128 MiB (read + write)", "GB/s", {}, 2.0 * bwBytes});
     gauges.push_back({"read-sum 128 MiB", "GB/s", {}, double(bwBytes)});
@@ -138,11 +140,15 @@ int run(const BenchArgs& a) {
         gauges.push_back({"gather " + std::to_string(l.width) + " points/item" +
                               (l.width > 1 ? (l.interleaved ? ", interleaved rows" : ", split rows")
                                            : ", float4 table"),
-                          "G eval/s", {}, double(kPoints) * kSamples});
+                          "G eval/s",
+                          {},
+                          double(kPoints) * kSamples});
     // Diagnostic: the same kernel with a 1024-entry table (24 KB, fits L1)
     // instead of 8192 (192 KB): how much the table's cache footprint costs.
     gauges.push_back({"gather 8 points/item, split rows, 1024-entry table (diagnostic)",
-                      "G eval/s", {}, double(kPoints) * kSamples});
+                      "G eval/s",
+                      {},
+                      double(kPoints) * kSamples});
     gauges.push_back({"CDF pyramid 1024²", "GB/s", {}, pyramidBytes});
     gauges.push_back({"draw 900 samples", "M samples/s", {}, double(kSamples)});
     gauges.push_back({"gather in a frame (cow, marble, N=900)", "G eval/s", {}, 0});
@@ -184,9 +190,7 @@ int run(const BenchArgs& a) {
     progress.finish();
 
     // Throughput per gauge: work / time, in the unit's scale.
-    auto scale = [](const std::string& unit) {
-        return unit == "M samples/s" ? 1e6 : 1e9;
-    };
+    auto scale = [](const std::string& unit) { return unit == "M samples/s" ? 1e6 : 1e9; };
     Table csv({"what", "unit", "ms_median", "ms_min", "ms_max", "throughput_median",
                "throughput_at_min_ms"});
     Table md({"what", "ms median (min–max)", "throughput (median; best)"});
@@ -204,23 +208,24 @@ int run(const BenchArgs& a) {
     const double peak = rate[0], bandwidth = std::max(rate[2], rate[3]);
     const size_t g8 = 5, gFrame = gauges.size() - 2;  // gather 8 split; in a frame
     Summary load = summarize(loads);
-    std::string text = "# Kernel efficiency\n\nMade by `bench/run.sh kernels` "
-                       "(`build-bench/bench/bench_kernels`) on " +
-                       timestamp() + ".\nMachine: " + machine + ".\nLoad average (1 min) " +
-                       fmtRange(load, 2) + " over the runs (" + fmt(load0, 2) +
-                       " at start). Median of " + std::to_string(runs) +
-                       " interleaved runs, CL profiling.\n\n" + md.markdown() + "\n";
+    std::string text =
+        "# Kernel efficiency\n\nMade by `bench/run.sh kernels` "
+        "(`build-bench/bench/bench_kernels`) on " +
+        timestamp() + ".\nMachine: " + machine + ".\nLoad average (1 min) " + fmtRange(load, 2) +
+        " over the runs (" + fmt(load0, 2) + " at start). Median of " + std::to_string(runs) +
+        " interleaved runs, CL profiling.\n\n" + md.markdown() + "\n";
     text += "Ratios (medians of the same runs):\n\n";
     text += "* Operation count assumed: " + fmt(kFlopsPerEvaluation, 0) +
             " flops per Rd evaluation (FMA = 2): distance 3 sub + 5, sqrt 1, index 2, "
             "interpolation 3 FMA, accumulation 3 FMA; table reads not counted.\n";
     for (size_t i = 4; i < 4 + layouts.size(); ++i)
-        text += "* " + gauges[i].name + ": " + fmt(rate[i], 2) + " G eval/s = " +
-                fmt(100 * rate[i] * kFlopsPerEvaluation / peak, 1) + "% of the float16 FMA peak (" +
-                fmt(peak, 0) + " GFLOP/s)\n";
-    text += "* gather in a frame: " + fmt(rate[gFrame], 2) + " G eval/s = " +
-            fmt(100 * rate[gFrame] * kFlopsPerEvaluation / peak, 1) + "% of FMA peak (" +
-            fmt(rate[gFrame] / rate[g8], 2) + "× the synthetic 8-lane figure)\n";
+        text += "* " + gauges[i].name + ": " + fmt(rate[i], 2) +
+                " G eval/s = " + fmt(100 * rate[i] * kFlopsPerEvaluation / peak, 1) +
+                "% of the float16 FMA peak (" + fmt(peak, 0) + " GFLOP/s)\n";
+    text += "* gather in a frame: " + fmt(rate[gFrame], 2) +
+            " G eval/s = " + fmt(100 * rate[gFrame] * kFlopsPerEvaluation / peak, 1) +
+            "% of FMA peak (" + fmt(rate[gFrame] / rate[g8], 2) +
+            "× the synthetic 8-lane figure)\n";
     text += "* the same 8-lane gather with a 1024-entry table (fits L1): " + fmt(rate[9], 2) +
             " G eval/s, " + fmt(rate[9] / rate[g8], 2) + "× the 8192-entry table\n";
     text += "* CDF pyramid: " + fmt(rate[10], 2) + " GB/s = " + fmt(100 * rate[10] / bandwidth, 1) +
@@ -238,4 +243,6 @@ int run(const BenchArgs& a) {
 }  // namespace
 }  // namespace tsis::bench
 
-int main(int argc, char** argv) { return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 7); }
+int main(int argc, char** argv) {
+    return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 7);
+}

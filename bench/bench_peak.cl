@@ -8,10 +8,17 @@
 kernel void bench_fma16(__global float* out, const int iters, const float a, const float b) {
     const float g = (float)get_global_id(0) * 1e-7f;
     float16 x0 = (float16)(g), x1 = (float16)(g + 1), x2 = (float16)(g + 2), x3 = (float16)(g + 3);
-    float16 x4 = (float16)(g + 4), x5 = (float16)(g + 5), x6 = (float16)(g + 6), x7 = (float16)(g + 7);
+    float16 x4 = (float16)(g + 4), x5 = (float16)(g + 5), x6 = (float16)(g + 6),
+            x7 = (float16)(g + 7);
     for (int i = 0; i < iters; ++i) {
-        x0 = fma(x0, a, b); x1 = fma(x1, a, b); x2 = fma(x2, a, b); x3 = fma(x3, a, b);
-        x4 = fma(x4, a, b); x5 = fma(x5, a, b); x6 = fma(x6, a, b); x7 = fma(x7, a, b);
+        x0 = fma(x0, a, b);
+        x1 = fma(x1, a, b);
+        x2 = fma(x2, a, b);
+        x3 = fma(x3, a, b);
+        x4 = fma(x4, a, b);
+        x5 = fma(x5, a, b);
+        x6 = fma(x6, a, b);
+        x7 = fma(x7, a, b);
     }
     const float16 s = ((x0 + x1) + (x2 + x3)) + ((x4 + x5) + (x6 + x7));
     out[get_global_id(0)] = dot(s.lo.lo, (float4)(1.0f)) + dot(s.hi.hi, (float4)(1.0f));
@@ -22,8 +29,14 @@ kernel void bench_fma8(__global float* out, const int iters, const float a, cons
     float8 x0 = (float8)(g), x1 = (float8)(g + 1), x2 = (float8)(g + 2), x3 = (float8)(g + 3);
     float8 x4 = (float8)(g + 4), x5 = (float8)(g + 5), x6 = (float8)(g + 6), x7 = (float8)(g + 7);
     for (int i = 0; i < iters; ++i) {
-        x0 = fma(x0, a, b); x1 = fma(x1, a, b); x2 = fma(x2, a, b); x3 = fma(x3, a, b);
-        x4 = fma(x4, a, b); x5 = fma(x5, a, b); x6 = fma(x6, a, b); x7 = fma(x7, a, b);
+        x0 = fma(x0, a, b);
+        x1 = fma(x1, a, b);
+        x2 = fma(x2, a, b);
+        x3 = fma(x3, a, b);
+        x4 = fma(x4, a, b);
+        x5 = fma(x5, a, b);
+        x6 = fma(x6, a, b);
+        x7 = fma(x7, a, b);
     }
     const float8 s = ((x0 + x1) + (x2 + x3)) + ((x4 + x5) + (x6 + x7));
     out[get_global_id(0)] = dot(s.lo, (float4)(1.0f)) + dot(s.hi, (float4)(1.0f));

@@ -71,8 +71,8 @@ int run(const BenchArgs& a) {
     const int spp = static_cast<int>(optionValue(a.rest, "--spp", a.quick ? 16 : 1024));
     const int size = static_cast<int>(optionValue(a.rest, "--size", a.quick ? 32 : 64));
     std::string md = "# Physical accuracy: the dipole against volumetric transport\n\n";
-    md += "Made by `build/bench/bench_physical` (bench/bench_physical.cpp) on " + timestamp() + "; " +
-          std::to_string(photons) + " photons per slab, " + std::to_string(spp) +
+    md += "Made by `build/bench/bench_physical` (bench/bench_physical.cpp) on " + timestamp() +
+          "; " + std::to_string(photons) + " photons per slab, " + std::to_string(spp) +
           " paths per pixel at " + std::to_string(size) + "² for the scenes.\n\n";
 
     Table slab({"material", "channel", "R dipole", "R volumetric", "± (1σ)", "dipole / vol.",

@@ -13,11 +13,13 @@
 namespace tsis::bench {
 namespace {
 
-const std::vector<std::string> kPre = {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "cdf", "sample"};
+const std::vector<std::string> kPre = {"gl_flux_atlas", "gl_to_cl_flux_atlas",
+                                       "gl_to_cl_position_atlas", "cdf", "sample"};
 
 int run(const BenchArgs& a) {
-    std::vector<std::string> meshes = {"head",      "elephant", "cow",       "fandisk",  "lion-head",
-                                       "ChineseDragon-10kv", "builtin:sphere", "armadillo", "bunny00"};
+    std::vector<std::string> meshes = {"head",           "elephant",  "cow",
+                                       "fandisk",        "lion-head", "ChineseDragon-10kv",
+                                       "builtin:sphere", "armadillo", "bunny00"};
     std::vector<int> sizes = {128, 256, 512, 768, 1024};
     std::vector<int> atlases = {16, 32, 64, 128, 256, 512, 1024};
     if (a.quick) {
@@ -34,8 +36,8 @@ int run(const BenchArgs& a) {
                  "preprocessing ms", "frame ms"});
     Table mdPix({"pixels", "covered", "gather ms", "ns / evaluation", "frame ms"});
     Table mdAtlas({"atlas", "preprocessing ms", "cdf ms", "gather ms", "rel. RMSE"});
-    Progress progress("scaling", static_cast<long long>(meshes.size() + sizes.size() +
-                                                         atlases.size()));
+    Progress progress("scaling",
+                      static_cast<long long>(meshes.size() + sizes.size() + atlases.size()));
     long long done = 0;
     auto measure = [&](const std::string& sweep, BenchCase& c, const std::string& mesh,
                        const ReferenceImage* ref) {
@@ -88,16 +90,18 @@ int run(const BenchArgs& a) {
         measure("atlas", c, "cow", &ref);
     }
     progress.finish();
-    std::string text = "# Scaling (tsis, marble, 10 mm, N = 900)\n\nMade by `bench/run.sh "
-                       "scaling` (`build-bench/bench/bench_scaling`) on " +
-                       timestamp() + ".\nMachine: " + machine + ".\nMedian (min–max) of " +
-                       std::to_string(a.frames) +
-                       " frames; load average per row in scaling.csv. Plots: scaling_*.png.\n\n";
-    text += "## Against triangle count (512², atlas 1024²)\n\nThe gather costs covered pixels "
-            "× N evaluations whatever the mesh: ns per evaluation is the figure to compare.\n\n" +
-            mdTri.markdown() + "\n## Against pixel count (cow)\n\n" + mdPix.markdown() +
-            "\n## Against atlas resolution (cow, 512²; error against --method reference)\n\n" +
-            mdAtlas.markdown();
+    std::string text =
+        "# Scaling (tsis, marble, 10 mm, N = 900)\n\nMade by `bench/run.sh "
+        "scaling` (`build-bench/bench/bench_scaling`) on " +
+        timestamp() + ".\nMachine: " + machine + ".\nMedian (min–max) of " +
+        std::to_string(a.frames) +
+        " frames; load average per row in scaling.csv. Plots: scaling_*.png.\n\n";
+    text +=
+        "## Against triangle count (512², atlas 1024²)\n\nThe gather costs covered pixels "
+        "× N evaluations whatever the mesh: ns per evaluation is the figure to compare.\n\n" +
+        mdTri.markdown() + "\n## Against pixel count (cow)\n\n" + mdPix.markdown() +
+        "\n## Against atlas resolution (cow, 512²; error against --method reference)\n\n" +
+        mdAtlas.markdown();
     writeResult("scaling.csv", csv.csv());
     writeResult("scaling.md", text);
     std::printf("%s", text.c_str());
@@ -107,4 +111,6 @@ int run(const BenchArgs& a) {
 }  // namespace
 }  // namespace tsis::bench
 
-int main(int argc, char** argv) { return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3); }
+int main(int argc, char** argv) {
+    return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3);
+}

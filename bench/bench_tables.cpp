@@ -1,9 +1,10 @@
 // Tables 4.1–4.4 of the thesis on this machine: preprocessing ms and
 // integration fps against N for each model, for tsis, lss and hybrid.
 // One Renderer for everything; medians of repeated frames with min/max.
-//   tsis:   preprocessing = gl_flux_atlas + gl_to_cl_flux_atlas + gl_to_cl_position_atlas + cdf + sample; integration = gather
-//   hybrid: the same for its global part + gl_to_cl_light_maps; integration = global_gather + local_ltsm
-//   lss:    preprocessing = gl_gbuffer + gl_to_cl_gbuffer + lss_prepare + lss_upload;
+//   tsis:   preprocessing = gl_flux_atlas + gl_to_cl_flux_atlas + gl_to_cl_position_atlas + cdf +
+//   sample; integration = gather hybrid: the same for its global part + gl_to_cl_light_maps;
+//   integration = global_gather + local_ltsm lss:    preprocessing = gl_gbuffer + gl_to_cl_gbuffer
+//   + lss_prepare + lss_upload;
 //           integration = lss_gather (N = samples per pixel)
 #include <cstdio>
 #include <map>
@@ -21,16 +22,19 @@ struct MethodStages {
 };
 
 const MethodStages kMethods[] = {
-    {"tsis", {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "cdf", "sample"}, {"gather"}},
+    {"tsis",
+     {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "cdf", "sample"},
+     {"gather"}},
     {"lss", {"gl_gbuffer", "gl_to_cl_gbuffer", "lss_prepare", "lss_upload"}, {"lss_gather"}},
     {"hybrid",
-     {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "gl_to_cl_light_maps", "global_cdf", "global_sample"},
+     {"gl_flux_atlas", "gl_to_cl_flux_atlas", "gl_to_cl_position_atlas", "gl_to_cl_light_maps",
+      "global_cdf", "global_sample"},
      {"global_gather", "local_ltsm"}},
 };
 
 int run(const BenchArgs& a) {
     // The thesis' sphere and five real meshes of 2.9K–20K triangles.
-    std::vector<std::string> meshes = {"builtin:sphere", "cow",    "head", "elephant",
+    std::vector<std::string> meshes = {"builtin:sphere",     "cow",      "head", "elephant",
                                        "ChineseDragon-10kv", "lion-head"};
     std::vector<int> ns = {49, 100, 169, 256, 400, 900, 1600, 2500};
     std::vector<std::string> lssMeshes = {"cow", "head"};
@@ -78,10 +82,9 @@ int run(const BenchArgs& a) {
                          fmt(pre.min), fmt(pre.max), fmt(integ.median), fmt(integ.min),
                          fmt(integ.max), fmt(1000.0 / integ.median, 1), fmt(total.median, 1),
                          std::to_string(frames), fmt(load)});
-                cells[m.method][mesh][n] = {fmtRange(pre, 1),
-                                            fmt(1000.0 / integ.median, 1) + " (" +
-                                                fmt(1000.0 / integ.max, 1) + "–" +
-                                                fmt(1000.0 / integ.min, 1) + ")"};
+                cells[m.method][mesh][n] = {fmtRange(pre, 1), fmt(1000.0 / integ.median, 1) + " (" +
+                                                                  fmt(1000.0 / integ.max, 1) + "–" +
+                                                                  fmt(1000.0 / integ.min, 1) + ")"};
                 progress.update(++done);
             }
         }
@@ -130,4 +133,6 @@ int run(const BenchArgs& a) {
 }  // namespace
 }  // namespace tsis::bench
 
-int main(int argc, char** argv) { return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3); }
+int main(int argc, char** argv) {
+    return tsis::bench::guardedMain(tsis::bench::run, argc, argv, 3);
+}

@@ -10,8 +10,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 old=$1 new=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-# The methods, as the binary's own error for an unknown one lists them.
-methods=$({ "$new" render --method '?' 2>&1 || true; } | sed -n 's/.*available: //p' | tr -d ',')
+# The old binary's methods, as its own error for an unknown one lists them.
+methods=$({ "$old" render --method '?' 2>&1 || true; } | sed -n 's/.*available: //p' | tr -d ',')
 differ=0
 for scene in builtin:default cow; do
     mesh=$scene

@@ -117,16 +117,18 @@ static inline float tsis_hmin8(const float8 v) {
  * tsis_profile_split in gather.cl); evaluations[item] = nodes used whole.
  * Global size = ceil(count / 8). */
 /* Lane k's point through the order (past count: the last one, never stored). */
-#define TSIS_LOAD_ORDERED(k) const int i##k = order[min(base + 0x##k, count - 1)]; const float4 q##k = points[i##k];
-#define TSIS_STORE_ORDERED(k) if (base + 0x##k < count) out[i##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
+#define TSIS_LOAD_ORDERED(k)                              \
+    const int i##k = order[min(base + 0x##k, count - 1)]; \
+    const float4 q##k = points[i##k];
+#define TSIS_STORE_ORDERED(k) \
+    if (base + 0x##k < count) out[i##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
 
 kernel void tsis_flux_pyramid_gather(const __global float4* points, const __global int* order,
-                                     const int count,
-                                     const __global TsisFluxNode* nodes,
+                                     const int count, const __global TsisFluxNode* nodes,
                                      const __global int4* topology, const float epsilon,
-                                     const float ell2,
-                                     const __global float2* split, const TsisTableInfo info,
-                                     __global float4* out, __global int* evaluations) {
+                                     const float ell2, const __global float2* split,
+                                     const TsisTableInfo info, __global float4* out,
+                                     __global int* evaluations) {
     const int item = get_global_id(0);
     const int base = item * TSIS_LANE_WIDTH;
     if (base >= count) return;

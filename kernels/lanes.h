@@ -17,14 +17,21 @@
 #define floatW float16
 #define intW int16
 #define profile_indexW tsis_profile_index16
-#define TSIS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7) F(8) F(9) F(a) F(b) F(c) F(d) F(e) F(f)
-#define TSIS_VEC(P, m) (float16)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m), TSIS_LANE(P, 8, m), TSIS_LANE(P, 9, m), TSIS_LANE(P, a, m), TSIS_LANE(P, b, m), TSIS_LANE(P, c, m), TSIS_LANE(P, d, m), TSIS_LANE(P, e, m), TSIS_LANE(P, f, m))
+#define TSIS_LANES(F) \
+    F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7) F(8) F(9) F(a) F(b) F(c) F(d) F(e) F(f)
+#define TSIS_VEC(P, m)                                                                        \
+    (float16)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), \
+              TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m), \
+              TSIS_LANE(P, 8, m), TSIS_LANE(P, 9, m), TSIS_LANE(P, a, m), TSIS_LANE(P, b, m), \
+              TSIS_LANE(P, c, m), TSIS_LANE(P, d, m), TSIS_LANE(P, e, m), TSIS_LANE(P, f, m))
 #elif TSIS_LANE_WIDTH == 8
 #define floatW float8
 #define intW int8
 #define profile_indexW tsis_profile_index8
 #define TSIS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7)
-#define TSIS_VEC(P, m) (float8)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m))
+#define TSIS_VEC(P, m)                                                                       \
+    (float8)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), \
+             TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m))
 #else
 #error "TSIS_LANE_WIDTH must be 8 or 16"
 #endif
@@ -35,9 +42,16 @@
  * repeat the last point (computed, never stored). Needs base, count, points. */
 #define TSIS_LOAD_POINT(k) const float4 q##k = points[min(base + 0x##k, count - 1)];
 /* The lanes' coordinates px, py, pz from the loaded q0, q1, ..., and the sums br, bg, bb. */
-#define TSIS_LANES_XYZ const floatW px = TSIS_VEC(q, x); const floatW py = TSIS_VEC(q, y); const floatW pz = TSIS_VEC(q, z);
-#define TSIS_LANES_SUMS floatW br = (floatW)(0.0f); floatW bg = (floatW)(0.0f); floatW bb = (floatW)(0.0f);
-#define TSIS_STORE(k) if (base + 0x##k < count) out[base + 0x##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
+#define TSIS_LANES_XYZ                \
+    const floatW px = TSIS_VEC(q, x); \
+    const floatW py = TSIS_VEC(q, y); \
+    const floatW pz = TSIS_VEC(q, z);
+#define TSIS_LANES_SUMS         \
+    floatW br = (floatW)(0.0f); \
+    floatW bg = (floatW)(0.0f); \
+    floatW bb = (floatW)(0.0f);
+#define TSIS_STORE(k) \
+    if (base + 0x##k < count) out[base + 0x##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
 /* One (value, step) pair per lane and channel from the split table (profile.h):
  * OpenCL C has no gather load. Need split, size, idx. */
 #define TSIS_LOAD_R(k) const float2 cr##k = split[idx.s##k];

@@ -40,10 +40,16 @@ kernel void tsis_lss_prepare(const __global float4* gpos, const __global float4*
  * One line per macro: the embedding breaks continued macros. */
 #define LSS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7)
 #define LSS_LANE(P, k, m) P##k.m
-#define LSS_VEC(P, m) (float8)(LSS_LANE(P, 0, m), LSS_LANE(P, 1, m), LSS_LANE(P, 2, m), LSS_LANE(P, 3, m), LSS_LANE(P, 4, m), LSS_LANE(P, 5, m), LSS_LANE(P, 6, m), LSS_LANE(P, 7, m))
+#define LSS_VEC(P, m)                                                                    \
+    (float8)(LSS_LANE(P, 0, m), LSS_LANE(P, 1, m), LSS_LANE(P, 2, m), LSS_LANE(P, 3, m), \
+             LSS_LANE(P, 4, m), LSS_LANE(P, 5, m), LSS_LANE(P, 6, m), LSS_LANE(P, 7, m))
 #define LSS_LOAD_RADII(k) const float2 ra##k = (float2)(radii[i.s##k], radii[i.s##k + 1]);
-#define LSS_LOAD_PIXEL(k) const float4 p##k = pos[q.s##k]; const float4 e##k = ea[q.s##k];
-#define LSS_LOAD_ROWS(k) const float4 ta##k = rd[row.s##k]; const float4 tb##k = rd[next.s##k];
+#define LSS_LOAD_PIXEL(k)            \
+    const float4 p##k = pos[q.s##k]; \
+    const float4 e##k = ea[q.s##k];
+#define LSS_LOAD_ROWS(k)               \
+    const float4 ta##k = rd[row.s##k]; \
+    const float4 tb##k = rd[next.s##k];
 
 static inline float lss_sum8(const float8 v) {
     const float4 a = v.lo + v.hi;
@@ -65,11 +71,10 @@ static inline float lss_sum8(const float8 v) {
  * u_k = (k + xi) / M and direction k rotated by phi, (xi, phi) hashed from
  * (pixel, seed): a rotated, shifted spiral lattice per pixel, deterministic
  * for a seed. */
-kernel void tsis_lss_gather(const __global int* pixels, const int count,
-                            const __global float4* pos, const __global float4* ea,
-                            const int width, const int height, const __global float2* dirs,
-                            const int m, const __global float* radii, const int entries,
-                            const __global float4* rd, const TsisTableInfo info,
+kernel void tsis_lss_gather(const __global int* pixels, const int count, const __global float4* pos,
+                            const __global float4* ea, const int width, const int height,
+                            const __global float2* dirs, const int m, const __global float* radii,
+                            const int entries, const __global float4* rd, const TsisTableInfo info,
                             const TsisCamera cam, const uint seed, __global float4* out) {
     const int j = get_global_id(0);
     if (j >= count) return;
@@ -77,7 +82,8 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count,
     const float px = (float)(pix % width) + 0.5f;
     const float py = (float)(pix / width) + 0.5f;
     const float3 xo = pos[pix].xyz;
-    const float depth = dot(xo - (float3)(cam.ex, cam.ey, cam.ez), (float3)(cam.fx, cam.fy, cam.fz));
+    const float depth =
+        dot(xo - (float3)(cam.ex, cam.ey, cam.ez), (float3)(cam.fx, cam.fy, cam.fz));
     const float per_mm = 1.0f / (depth * cam.pixel_angle); /* pixels per mm at xo */
     const uint h1 = tsis_hash((uint)pix ^ tsis_hash(seed));
     const uint h2 = tsis_hash(h1 + 0x9e3779b9U);

@@ -86,8 +86,10 @@ static inline float mis_cdf(const __global float* radii, const int segments, con
     int lo = 0, hi = segments;
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
-        if (radii[mid] <= s) lo = mid;
-        else hi = mid;
+        if (radii[mid] <= s)
+            lo = mid;
+        else
+            hi = mid;
     }
     return ((float)lo + (s - radii[lo]) / (radii[lo + 1] - radii[lo])) / (float)segments;
 }

@@ -9,7 +9,8 @@
 
 /* f(r) from the float4 table: linear interpolation, 0 at and beyond r_max and
  * for NaN (the negated comparison catches both). */
-static inline float4 tsis_profile(const __global float4* table, const TsisTableInfo info, const float r) {
+static inline float4 tsis_profile(const __global float4* table, const TsisTableInfo info,
+                                  const float r) {
     const float x = r * info.inv_step;
     if (!(x < (float)(info.size - 1))) return (float4)(0.0f);
     const int i = (int)x;

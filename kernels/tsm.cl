@@ -98,7 +98,8 @@ kernel void tsis_tsm_filter(const __global float4* points, const int count,
             ring = (int)tap.ring;
             footprint = tap.area * rt * rt; /* level-0 texels the tap stands for */
             /* Cells half the footprint's side: the bilinear tent spans about the footprint. */
-            const int lod = clamp((int)rint(0.5f * log2(max(footprint, 1.0f))) - 1, 0, level_count - 1);
+            const int lod =
+                clamp((int)rint(0.5f * log2(max(footprint, 1.0f))) - 1, 0, level_count - 1);
             level = levels[lod];
             scale = 1.0f / (float)(1 << lod);
             /* Mean flux per level-0 texel (a level-l cell sums 4^l) times the footprint. */

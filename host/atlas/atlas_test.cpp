@@ -73,7 +73,8 @@ double minChartGap(const Mesh& m, int resolution) {
     for (const auto& [e, c] : count)
         if (c == 1)
             segs.push_back({glm::dvec2(m.uvs[e.first]) * double(resolution),
-                            glm::dvec2(m.uvs[e.second]) * double(resolution), charts.find(e.first)});
+                            glm::dvec2(m.uvs[e.second]) * double(resolution),
+                            charts.find(e.first)});
     // Grid of 4-texel cells; only neighbouring cells can hold pairs closer than 4.
     std::map<std::pair<int, int>, std::vector<size_t>> grid;
     for (size_t i = 0; i < segs.size(); ++i) {

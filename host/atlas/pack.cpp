@@ -18,7 +18,8 @@ double cross(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
 }
 
 std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> p) {
-    std::sort(p.begin(), p.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(p.begin(), p.end(),
+              [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     if (p.size() < 3) return p;
     std::vector<glm::dvec2> h(2 * p.size());
     size_t k = 0;
@@ -82,8 +83,8 @@ glm::dvec2 quarterTurns(glm::dvec2 p, int o) {
     return p;
 }
 
-Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& tris, double scale, int o,
-                    int dilate) {
+Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& tris, double scale,
+                    int o, int dilate) {
     constexpr double kEps = 1e-3;  // texels: float rounding of the final UVs stays inside
     Outline out;
     out.orientation = o;
@@ -102,8 +103,10 @@ Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& 
     std::vector<uint8_t> mask(size_t(out.w) * out.h, 0);
     for (const Tri& t : tris) {
         const glm::dvec2 v[3] = {q[t[0]], q[t[1]], q[t[2]]};
-        const double ymin = std::min({v[0].y, v[1].y, v[2].y}), ymax = std::max({v[0].y, v[1].y, v[2].y});
-        const int ylo = std::max(0, int(std::floor(ymin - kEps))), yhi = std::min(out.h - 1, int(std::floor(ymax + kEps)));
+        const double ymin = std::min({v[0].y, v[1].y, v[2].y}),
+                     ymax = std::max({v[0].y, v[1].y, v[2].y});
+        const int ylo = std::max(0, int(std::floor(ymin - kEps))),
+                  yhi = std::min(out.h - 1, int(std::floor(ymax + kEps)));
         for (int y = ylo; y <= yhi; ++y) {
             // x-extent of the triangle within the slab [y, y+1] (widened by kEps).
             const double y0 = y - kEps, y1 = y + 1 + kEps;
@@ -124,7 +127,8 @@ Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& 
             if (!(xmin <= xmax)) continue;
             const int x0 = std::max(0, int(std::floor(xmin - kEps)));
             const int x1 = std::min(out.w - 1, int(std::floor(xmax + kEps)));
-            std::fill(mask.begin() + size_t(y) * out.w + x0, mask.begin() + size_t(y) * out.w + x1 + 1, 1);
+            std::fill(mask.begin() + size_t(y) * out.w + x0,
+                      mask.begin() + size_t(y) * out.w + x1 + 1, 1);
         }
     }
     // Chebyshev dilation: rows, then columns.
@@ -133,13 +137,15 @@ Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& 
         for (int y = 0; y < out.h; ++y)
             for (int x = 0; x < out.w; ++x)
                 if (mask[size_t(y) * out.w + x])
-                    for (int xd = std::max(0, x - dilate); xd <= std::min(out.w - 1, x + dilate); ++xd)
+                    for (int xd = std::max(0, x - dilate); xd <= std::min(out.w - 1, x + dilate);
+                         ++xd)
                         tmp[size_t(y) * out.w + xd] = 1;
         std::fill(mask.begin(), mask.end(), 0);
         for (int y = 0; y < out.h; ++y)
             for (int x = 0; x < out.w; ++x)
                 if (tmp[size_t(y) * out.w + x])
-                    for (int yd = std::max(0, y - dilate); yd <= std::min(out.h - 1, y + dilate); ++yd)
+                    for (int yd = std::max(0, y - dilate); yd <= std::min(out.h - 1, y + dilate);
+                         ++yd)
                         mask[size_t(yd) * out.w + x] = 1;
     }
     out.runs.resize(size_t(out.h));
@@ -170,7 +176,8 @@ Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& 
 // free run (an upper bound is enough: it only prunes).
 class Occupancy {
   public:
-    Occupancy(int W, int H) : W_(W), H_(H), words_((W + 63) / 64), bits_(size_t(words_) * H, 0), free_(size_t(H), W) {}
+    Occupancy(int W, int H)
+        : W_(W), H_(H), words_((W + 63) / 64), bits_(size_t(words_) * H, 0), free_(size_t(H), W) {}
 
     // The last occupied column in [a, b) of row y, or -1.
     int lastOccupied(int y, int a, int b) const {
@@ -192,8 +199,10 @@ class Occupancy {
         int best = 0, run = 0;
         const uint64_t* row = &bits_[size_t(y) * words_];
         for (int x = 0; x < W_; ++x) {
-            if (row[x >> 6] >> (x & 63) & 1) run = 0;
-            else best = std::max(best, ++run);
+            if (row[x >> 6] >> (x & 63) & 1)
+                run = 0;
+            else
+                best = std::max(best, ++run);
         }
         free_[y] = best;
     }
@@ -261,9 +270,13 @@ struct Placed {
 // when first asked for (shared by the orders tried at that density).
 class Outlines {
   public:
-    Outlines(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts, double scale,
-             int dilate)
-        : pts_(pts), charts_(charts), scale_(scale), dilate_(dilate), made_(4 * charts.size(), 0),
+    Outlines(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
+             double scale, int dilate)
+        : pts_(pts),
+          charts_(charts),
+          scale_(scale),
+          dilate_(dilate),
+          made_(4 * charts.size(), 0),
           outlines_(4 * charts.size()) {}
     const Outline& get(size_t c, int o) {
         const size_t i = 4 * c + size_t(o);
@@ -284,8 +297,8 @@ class Outlines {
 };
 
 // Packs all charts into W×H in one order; false when one does not fit.
-bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, int H, std::vector<Placed>& placed,
-                 double* footprint) {
+bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, int H,
+                 std::vector<Placed>& placed, double* footprint) {
     Occupancy occ(W, H);
     placed.assign(order.size(), Placed());
     long long used = 0;
@@ -333,7 +346,8 @@ bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<P
 
 }  // namespace
 
-PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels, int threads) {
+PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels,
+                      int threads) {
     TSIS_CHECK_GT(resolution, 8);
     TSIS_CHECK_GE(gutterTexels, 0);
     PackResult result;
@@ -348,7 +362,8 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     double totalArea = 0;
     for (size_t c = 0; c < charts.size(); ++c) {
         const glm::dvec2 r = minAreaRectRotation(*charts[c].uv);
-        for (glm::dvec2 p : *charts[c].uv) pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
+        for (glm::dvec2 p : *charts[c].uv)
+            pts[c].emplace_back(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
         for (const Tri& t : *charts[c].triangles) {
             const glm::dvec2 a = pts[c][t[0]], b = pts[c][t[1]], d = pts[c][t[2]];
             totalArea += 0.5 * std::abs(cross(a, b, d));
@@ -373,7 +388,8 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     for (const std::vector<double>* key : {&key1, &key2}) {
         std::vector<size_t> order(charts.size());
         std::iota(order.begin(), order.end(), size_t(0));
-        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return (*key)[a] > (*key)[b]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](size_t a, size_t b) { return (*key)[a] > (*key)[b]; });
         orders.push_back(std::move(order));
     }
 
@@ -389,8 +405,10 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     double lo = 0, hi = INFINITY;
     Probe best;
     const double s0 = std::sqrt(0.7 * double(W) * H / std::max(totalArea, 1e-300));
-    auto run = [&](Probe& p) { p.fits = packAt(pts, charts, orders, p.scale, W, H, dilate, p.placed, &p.footprint); };
-    auto runBoth = [&](Probe (&probe)[2]) {
+    auto run = [&](Probe& p) {
+        p.fits = packAt(pts, charts, orders, p.scale, W, H, dilate, p.placed, &p.footprint);
+    };
+    auto runBoth = [&](Probe(&probe)[2]) {
         if (parallel) {
             std::thread other(run, std::ref(probe[1]));
             run(probe[0]);
@@ -402,10 +420,14 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     };
     for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.003); ++round) {
         Probe probe[2];
-        if (lo == 0 && hi == INFINITY) probe[0].scale = s0, probe[1].scale = 0.88 * s0;
-        else if (lo == 0) probe[0].scale = 0.88 * hi, probe[1].scale = 0.77 * hi;
-        else if (hi == INFINITY) probe[0].scale = 1.12 * lo, probe[1].scale = 1.25 * lo;
-        else probe[0].scale = lo + (hi - lo) / 3, probe[1].scale = lo + 2 * (hi - lo) / 3;
+        if (lo == 0 && hi == INFINITY)
+            probe[0].scale = s0, probe[1].scale = 0.88 * s0;
+        else if (lo == 0)
+            probe[0].scale = 0.88 * hi, probe[1].scale = 0.77 * hi;
+        else if (hi == INFINITY)
+            probe[0].scale = 1.12 * lo, probe[1].scale = 1.25 * lo;
+        else
+            probe[0].scale = lo + (hi - lo) / 3, probe[1].scale = lo + 2 * (hi - lo) / 3;
         runBoth(probe);
         for (Probe& p : probe)
             if (p.fits && p.scale > lo) {
@@ -417,7 +439,8 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
         if (hi <= lo) hi = lo * 1.01;  // a fit above a failure: packing is not monotone
         if (lo == 0 && hi < 1e-12 * s0) break;
     }
-    if (lo == 0) fail("atlas: cannot pack ", charts.size(), " charts into ", resolution, "² texels");
+    if (lo == 0)
+        fail("atlas: cannot pack ", charts.size(), " charts into ", resolution, "² texels");
     const std::vector<Placed>& bestPlaced = best.placed;
     const double bestFoot = best.footprint;
 

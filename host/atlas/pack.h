@@ -15,10 +15,9 @@
 // and every chart is at least 1 texel from the [0,1] border.
 #pragma once
 
-#include <vector>
-
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "atlas/chart.h"
 
@@ -40,6 +39,7 @@ struct PackResult {
 glm::dvec2 minAreaRectRotation(const std::vector<glm::dvec2>& uv);
 
 // threads: 2 or more runs two trial densities side by side.
-PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels, int threads = 1);
+PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int gutterTexels,
+                      int threads = 1);
 
 }  // namespace tsis::atlas

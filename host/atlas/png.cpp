@@ -1,9 +1,8 @@
 // The atlas picture of `tsis atlas -o FILE.png`.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-
 #include <glm/geometric.hpp>
+#include <numeric>
 
 #include "atlas/atlas.h"
 #include "atlas/chart.h"
@@ -16,8 +15,9 @@ namespace tsis {
 namespace {
 
 glm::vec3 hsv(float h, float s, float v) {
-    const float c = v * s, hp = std::fmod(h, 1.0f) * 6.0f, x = c * (1 - std::abs(std::fmod(hp, 2.0f) - 1));
-    glm::vec3 rgb = hp < 1 ? glm::vec3(c, x, 0)
+    const float c = v * s, hp = std::fmod(h, 1.0f) * 6.0f,
+                x = c * (1 - std::abs(std::fmod(hp, 2.0f) - 1));
+    glm::vec3 rgb = hp < 1   ? glm::vec3(c, x, 0)
                     : hp < 2 ? glm::vec3(x, c, 0)
                     : hp < 3 ? glm::vec3(0, c, x)
                     : hp < 4 ? glm::vec3(0, x, c)
@@ -37,7 +37,8 @@ glm::vec3 diverging(double t) {
 
 void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
     if (mesh.uvs.size() != mesh.positions.size()) fail(mesh.name, ": no UVs to draw");
-    if (resolution < 1 || resolution > 16384) fail("atlas image: resolution ", resolution, " out of range");
+    if (resolution < 1 || resolution > 16384)
+        fail("atlas image: resolution ", resolution, " out of range");
     const size_t n = mesh.triangles.size();
 
     // Chart id per triangle (connected through shared vertices) and r.
@@ -46,10 +47,12 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
     double s3 = 0, suv = 0;
     for (size_t i = 0; i < n; ++i) {
         const glm::uvec3 t = mesh.triangles[i];
-        const glm::dvec3 p0 = mesh.positions[t.x], p1 = mesh.positions[t.y], p2 = mesh.positions[t.z];
+        const glm::dvec3 p0 = mesh.positions[t.x], p1 = mesh.positions[t.y],
+                         p2 = mesh.positions[t.z];
         const glm::dvec2 u0 = mesh.uvs[t.x], u1 = mesh.uvs[t.y], u2 = mesh.uvs[t.z];
         const double a3 = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-        const double auv = 0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
+        const double auv =
+            0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
         if (auv > 0) ratio[i] = a3 / auv;
         s3 += a3;
         suv += auv;

@@ -7,7 +7,8 @@
 
 namespace tsis {
 
-Mesh ensureAtlas(const Mesh& mesh, const std::string& mode, const AtlasOptions& opt, AtlasStats* stats) {
+Mesh ensureAtlas(const Mesh& mesh, const std::string& mode, const AtlasOptions& opt,
+                 AtlasStats* stats) {
     if (mode != "auto" && mode != "file" && mode != "build")
         fail("--atlas ", mode, ": expected auto, file or build");
     if (mode != "build") {

@@ -61,7 +61,7 @@ class ClRuntime {
     cl::Context context_;
     cl::CommandQueue queue_;
     std::string name_;
-    std::string cacheDir_;  // read once, at construction
+    std::string cacheDir_;               // read once, at construction
     std::vector<EmbeddedFile> sources_;  // embeddedKernels() + addKernelFiles()
 
     mutable std::mutex mutex_;

@@ -1,13 +1,15 @@
-#include "util/embedded.h"
-
 #include <gtest/gtest.h>
+
+#include "util/embedded.h"
 
 namespace tsis {
 namespace {
 
 TEST(EmbeddedSource, InlinesIncludesOnceWithLineMarkers) {
     const std::vector<EmbeddedFile> files = {
-        {"a.cl", "#include \"b.h\"\n#define M(x) \\\n  (x)\nkernel void k() {} // [0,1)\n  #  include \"b.h\"\n"},
+        {"a.cl",
+         "#include \"b.h\"\n#define M(x) \\\n  (x)\nkernel void k() {} // [0,1)\n  #  include "
+         "\"b.h\"\n"},
         {"b.h", "int b; // a;b\n"},
     };
     EXPECT_EQ(embeddedSource(files, "a.cl"),

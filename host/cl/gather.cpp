@@ -44,9 +44,9 @@ void Gatherer::run(const cl::Buffer& points, int count, const cl::Buffer& sample
         // table's contents may change under the same buffer.
         if (splitEntries_ < info.size) {
             // 3 float2 per entry, or one float8 row when interleaved.
-            splitTable_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE,
-                                     size_t(info.size) * (interleaved_ ? sizeof(cl_float8)
-                                                                       : 3 * sizeof(cl_float2)));
+            splitTable_ = cl::Buffer(
+                cl_.context(), CL_MEM_READ_WRITE,
+                size_t(info.size) * (interleaved_ ? sizeof(cl_float8) : 3 * sizeof(cl_float2)));
             splitEntries_ = info.size;
         }
         setKernelArgs(split_, table, info, splitTable_);

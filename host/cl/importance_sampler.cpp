@@ -98,7 +98,8 @@ void ImportanceSampler::drawWithOffset(const cl::Buffer& flux, const cl::Buffer&
     if (n == 0) return;
     TSIS_CHECK_GE(bufferBytes(samples), size_t(n) * sizeof(TsisSample));
     setKernelArgs(draw_, pyramid_, flux, position,
-                  static_cast<cl_int>(std::countr_zero(static_cast<unsigned>(res))), n, xi, samples);
+                  static_cast<cl_int>(std::countr_zero(static_cast<unsigned>(res))), n, xi,
+                  samples);
     enqueue1D(cl_.queue(), draw_, size_t(n), kLocalSize, &drawEvent_);
 }
 

@@ -24,7 +24,9 @@ constexpr char kMagic[8] = {'T', 'S', 'I', 'S', 'C', 'L', 'B', '1'};
 
 ProgramCache::ProgramCache(std::string dir) : dir_(std::move(dir)) {}
 
-std::string ProgramCache::defaultDir() { return cacheDirectory(); }
+std::string ProgramCache::defaultDir() {
+    return cacheDirectory();
+}
 
 std::string ProgramCache::key(const std::vector<std::string_view>& parts) {
     // Two independent 64-bit FNV-1a streams: 128 bits against accidental collisions.

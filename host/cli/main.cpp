@@ -2,4 +2,6 @@
 
 #include "cli/commands.h"
 
-int main(int argc, char** argv) { return tsis::runCli(argc, argv); }
+int main(int argc, char** argv) {
+    return tsis::runCli(argc, argv);
+}

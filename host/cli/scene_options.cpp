@@ -2,9 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <sstream>
 
 #include "atlas/atlas.h"
 #include "mesh/mesh_io.h"
@@ -282,8 +282,7 @@ std::string exact3(const V& v) {
 
 }  // namespace
 
-std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec,
-                                   double sizeMm) {
+std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec, double sizeMm) {
     std::vector<std::string> a = {"--mesh", meshSpec, "--size-mm", exact(sizeMm)};
     const Material& m = scene.material;
     for (const Material& p : presetMaterials())
@@ -291,34 +290,53 @@ std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSp
     a.insert(a.end(), {"--sigma-s", exact3(m.sigmaSPrime), "--sigma-a", exact3(m.sigmaA), "--eta",
                        exact(m.eta)});
     for (const Light& l : scene.lights)
-        a.insert(a.end(), {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
-                                          exact3(l.vec) + ":" + exact3(l.rgb)});
+        a.insert(a.end(),
+                 {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
+                                 exact3(l.vec) + ":" + exact3(l.rgb)});
     const Camera& c = scene.camera;
-    a.insert(a.end(), {"--eye", exact3(c.eye), "--target", exact3(c.target), "--up",
-                       exact3(c.up), "--fov", exact(c.fovYDegrees)});
+    a.insert(a.end(), {"--eye", exact3(c.eye), "--target", exact3(c.target), "--up", exact3(c.up),
+                       "--fov", exact(c.fovYDegrees)});
     return a;
 }
 
 std::vector<std::string> renderOptionArgs(const RenderOptions& o) {
     std::vector<std::string> a = {
-        "--method",          o.method,
-        "--width",           exact(o.width),
-        "--height",          exact(o.height),
-        "--samples",         exact(o.samples),
-        "--seed",            exact(o.seed),
-        "--atlas-res",       exact(o.atlasResolution),
-        "--light-res",       exact(o.lightResolution),
-        "--key",             exact(o.key),
-        "--rp-bound",        exact(o.rpBound),
-        "--rp-k",            exact(o.rpK),
-        "--rd-part",         rdPartName(o.rdPart),
-        "--ltsm-rings",      exact(o.ltsmRings),
-        "--ltsm-per-ring",   exact(o.ltsmPerRing),
-        "--mis-distance",    exact(o.misDistanceSamples),
-        "--epsilon",         exact(o.epsilon),
-        "--pyramid-epsilon", exact(o.pyramidEpsilon),
-        "--pyramid-stride",  exact(o.pyramidStride),
-        "--tsm-radius",      exact(o.tsmRadius),
+        "--method",
+        o.method,
+        "--width",
+        exact(o.width),
+        "--height",
+        exact(o.height),
+        "--samples",
+        exact(o.samples),
+        "--seed",
+        exact(o.seed),
+        "--atlas-res",
+        exact(o.atlasResolution),
+        "--light-res",
+        exact(o.lightResolution),
+        "--key",
+        exact(o.key),
+        "--rp-bound",
+        exact(o.rpBound),
+        "--rp-k",
+        exact(o.rpK),
+        "--rd-part",
+        rdPartName(o.rdPart),
+        "--ltsm-rings",
+        exact(o.ltsmRings),
+        "--ltsm-per-ring",
+        exact(o.ltsmPerRing),
+        "--mis-distance",
+        exact(o.misDistanceSamples),
+        "--epsilon",
+        exact(o.epsilon),
+        "--pyramid-epsilon",
+        exact(o.pyramidEpsilon),
+        "--pyramid-stride",
+        exact(o.pyramidStride),
+        "--tsm-radius",
+        exact(o.tsmRadius),
     };
     if (o.spacingMm > 0) a.insert(a.end(), {"--spacing", exact(o.spacingMm)});
     if (!o.specular) a.push_back("--no-specular");

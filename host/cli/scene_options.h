@@ -60,8 +60,7 @@ RenderOptions renderOptionsFromArgs(const Args& args);
 // this scene's material, lights and camera on the mesh `meshSpec` at sizeMm,
 // and these render options: every number printed exactly (the shortest text
 // that parses to the same value).
-std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec,
-                                   double sizeMm);
+std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec, double sizeMm);
 std::vector<std::string> renderOptionArgs(const RenderOptions& options);
 
 }  // namespace tsis

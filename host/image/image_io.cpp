@@ -69,5 +69,4 @@ ImageF readImageF(const std::string& path) {
     return img;
 }
 
-
 }  // namespace tsis

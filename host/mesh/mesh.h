@@ -11,7 +11,7 @@
 namespace tsis {
 
 struct Mesh {
-    std::string name;                 // for messages: file path or "builtin:NAME"
+    std::string name;                  // for messages: file path or "builtin:NAME"
     std::vector<glm::vec3> positions;  // mm after normalizeMesh()
     std::vector<glm::vec3> normals;    // empty, or one per vertex
     std::vector<glm::vec2> uvs;        // empty, or one per vertex (atlas coordinates)
@@ -19,7 +19,7 @@ struct Mesh {
 
     bool hasNormals() const { return !normals.empty(); }
     bool hasUVs() const { return !uvs.empty(); }
-    double surfaceArea() const;       // Σ triangle areas (mm²)
+    double surfaceArea() const;  // Σ triangle areas (mm²)
     double triangleArea(size_t t) const;
     double triangleUVArea(size_t t) const;  // unsigned
 };

@@ -13,8 +13,8 @@ namespace tsis {
 struct DipoleChannel {
     DipoleChannel(double sigmaSPrime, double sigmaA, double eta);
 
-    double Rd(double r) const;          // mm⁻²
-    double totalReflectance() const;    // closed-form ∫ Rd 2πr dr
+    double Rd(double r) const;                                 // mm⁻²
+    double totalReflectance() const;                           // closed-form ∫ Rd 2πr dr
     double meanFreePath() const { return 1.0 / sigmaTPrime; }  // ℓ = 1/σt' (mm)
 
     double sigmaSPrime, sigmaA, eta;

@@ -76,7 +76,8 @@ TEST(Progressive, AChangeStartsANewMean) {
     scene.material = presetMaterial("skin1");
     EXPECT_EQ(test::renderWith(scene, opt, "tsis").stats.number("accumulated_frames"), 1);
     opt.progressive = false;
-    EXPECT_TRUE(std::isnan(test::renderWith(scene, opt, "tsis").stats.number("accumulated_frames")));
+    EXPECT_TRUE(
+        std::isnan(test::renderWith(scene, opt, "tsis").stats.number("accumulated_frames")));
 }
 
 }  // namespace

@@ -29,10 +29,10 @@ void* FrameGraph::resolve(size_t pass, int index, bool write) const {
     const bool ok = std::count(declared.begin(), declared.end(), index) > 0 ||
                     (!write && std::count(p.writes.begin(), p.writes.end(), index) > 0);
     if (!ok)
-        checkFailed(__FILE__, __LINE__,
-                    concat("frame graph: pass '", p.name, "' ", write ? "writes" : "reads", " '",
-                           resources_.at(static_cast<size_t>(index)).name,
-                           "' without declaring it"));
+        checkFailed(
+            __FILE__, __LINE__,
+            concat("frame graph: pass '", p.name, "' ", write ? "writes" : "reads", " '",
+                   resources_.at(static_cast<size_t>(index)).name, "' without declaring it"));
     return resources_[static_cast<size_t>(index)].value;
 }
 

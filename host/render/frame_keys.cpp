@@ -31,9 +31,8 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples,
                   o.pyramidStride, o.spp})
         h.add(v);
-    for (double v :
-         {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon), o.tsmRadius,
-                     o.timeSeconds})
+    for (double v : {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon),
+                     o.tsmRadius, o.timeSeconds})
         h.add(v);
     return h.add(o.seed).digest();
 }

@@ -35,9 +35,9 @@ struct AtlasCl {
 // The covered camera pixels, packed.
 struct SurfacePoints {
     int count = 0;
-    cl::Buffer xyz;              // count float4 (xyz of each covered pixel)
-    std::vector<float> host;     // the same float4s on the host
-    std::vector<int> pixel;      // GL pixel index y*width+x (row 0 = bottom)
+    cl::Buffer xyz;           // count float4 (xyz of each covered pixel)
+    std::vector<float> host;  // the same float4s on the host
+    std::vector<int> pixel;   // GL pixel index y*width+x (row 0 = bottom)
 };
 
 // The camera's G-buffer on the CL side: width*height float4 each, GL row order.

@@ -12,9 +12,9 @@
 #include "cl/cl_runtime.h"
 #include "physics/dipole.h"
 #include "render/frame_graph.h"
+#include "render/frame_resources.h"
 #include "render/frame_stats.h"
 #include "render/render_options.h"
-#include "render/frame_resources.h"
 #include "scene/projection.h"
 #include "scene/scene.h"
 
@@ -30,7 +30,7 @@ struct FrameContext {
     FrameStats* stats = nullptr;  // setup-time values; passes report through Resources
     float boundingRadius = 0;     // the object fits in a sphere of this radius at the origin
     int atlasResolution = 0;
-    int width = 0, height = 0;    // the camera image
+    int width = 0, height = 0;  // the camera image
     glm::mat4 viewProj{1.0f};
     glm::vec3 eye{0.0f};
     int lightResolution = 0;

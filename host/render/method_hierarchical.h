@@ -11,9 +11,9 @@
 // Samples and tree are rebuilt only when the mesh, lights, η or s change.
 #pragma once
 
-#include "render/profile_table_cache.h"
 #include "render/flux_octree.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 #include "render/surface_points.h"
 
 namespace tsis {

@@ -92,9 +92,8 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                 surfaceCapacity_ = pixels;
             }
             const CameraBuffersCl& g = res.read(ctx.gbuffer);
-            setKernelArgs(prepare_, g.position, g.normal, g.irradiance,
-                          static_cast<cl_int>(pixels), camera(ctx.scene->camera, ctx.height), pos_,
-                          ea_);
+            setKernelArgs(prepare_, g.position, g.normal, g.irradiance, static_cast<cl_int>(pixels),
+                          camera(ctx.scene->camera, ctx.height), pos_, ea_);
             cl::Event e;
             enqueue1D(cl_.queue(), prepare_, pixels, kLocalSize, &e);
             res.setDeviceMs(eventMilliseconds(e));
@@ -125,8 +124,8 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
                           static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
                           static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries),
                           table_.device(cl_.context()), table_.table().info,
-                          camera(ctx.scene->camera, ctx.height), static_cast<cl_uint>(frameSeed(ctx)),
-                          out);
+                          camera(ctx.scene->camera, ctx.height),
+                          static_cast<cl_uint>(frameSeed(ctx)), out);
             cl::Event e;
             enqueue1D(cl_.queue(), gather_, static_cast<size_t>(count), kLocalSize, &e);
             res.setDeviceMs(eventMilliseconds(e));

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "render/profile_table_cache.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 #include "render/radial_importance.h"
 #include "tsis_shared.h"
 

@@ -93,7 +93,8 @@ void MisMethod::gather(const FrameContext& ctx, const SurfacePoints& points, cl:
     info_.n_dist = ctx.options->misDistanceSamples;
     info_.tex_scale = sumY > 0.0 ? static_cast<float>(n / sumY) : 0.0f;
     info_.seed = frameSeed(ctx);
-    setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_, texDensity_);
+    setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_,
+                  texDensity_);
     gatherEvents_.emplace_back();
     enqueue1D(q, prepare_, static_cast<size_t>(n), kLocalSize, &gatherEvents_.back());
     if (points.count == 0) return;

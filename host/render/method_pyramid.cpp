@@ -66,15 +66,14 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
         Timer t;
         const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
         std::vector<float> positions(texels * 4);
-        cl_.queue().enqueueReadBuffer(position.buffer, CL_TRUE, 0,
-                                      positions.size() * sizeof(float), positions.data());
+        cl_.queue().enqueueReadBuffer(position.buffer, CL_TRUE, 0, positions.size() * sizeof(float),
+                                      positions.data());
         pyramid_.setLeaves(positions);
         leavesVersion_ = position.version;
         stats.addStage("pyramid_order", t.ms());
     }
     // The sums change only with the flux (a camera-only frame keeps them).
-    const bool current =
-        flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
+    const bool current = flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
         pyramid_.build(flux.buffer, position.buffer, normal.buffer);
         builtFluxVersion_ = flux.version;

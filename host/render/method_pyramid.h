@@ -23,8 +23,8 @@
 #pragma once
 
 #include "cl/flux_pyramid.h"
-#include "render/profile_table_cache.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 
 namespace tsis {
 

@@ -66,8 +66,8 @@ TEST(Pyramid, GridInterpolationStaysCloseToEveryPixel) {
         const FrameResult every = test::renderWith(scene, opt, "pyramid");
         const double diff = test::relativeRmse(sparse, every);
         const double stride = sparse.stats.number("pyramid_stride");
-        const double evaluated = sparse.stats.number("pyramid_evaluated_pixels") /
-                                 sparse.stats.number("covered_pixels");
+        const double evaluated =
+            sparse.stats.number("pyramid_evaluated_pixels") / sparse.stats.number("covered_pixels");
         std::printf("%s: stride %.0f, %.1f%% of the pixels evaluated, %.3f%% from every pixel\n",
                     material, stride, 100 * evaluated, 100 * diff);
         EXPECT_GE(stride, 2) << material;

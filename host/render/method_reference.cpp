@@ -31,29 +31,28 @@ void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     graph.addPass(
         "reference_points", [&](FrameGraph::Builder& b) { b.write(samples); },
         [this, &ctx, spacing](FrameGraph::Resources& res) {
-                       const bool built = points_.update(*ctx.scene, spacing, "reference");
-                       const std::vector<SurfacePoint>& pts = points_.points();
-                       if (built) {
-                           // At least one (zero) sample: a CL buffer cannot be empty.
-                           std::vector<TsisSample> s(std::max<size_t>(1, pts.size()), TsisSample{});
-                           for (size_t i = 0; i < pts.size(); ++i) {
-                               const glm::vec3 w = pts[i].irradiance * pts[i].area;
-                               s[i] = {pts[i].position.x,
-                                       pts[i].position.y,
-                                       pts[i].position.z,
-                                       -1.0f,
-                                       w.x,
-                                       w.y,
-                                       w.z,
-                                       0.0f};
-                           }
-                           samples_ =
-                               cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                          s.size() * sizeof(TsisSample), s.data());
-                       }
-                       res.stats().set("reference_spacing_mm", spacing);
-                       res.stats().set("reference_point_count", static_cast<double>(pts.size()));
-                       res.stats().set("reference_points_cached", !built);
+            const bool built = points_.update(*ctx.scene, spacing, "reference");
+            const std::vector<SurfacePoint>& pts = points_.points();
+            if (built) {
+                // At least one (zero) sample: a CL buffer cannot be empty.
+                std::vector<TsisSample> s(std::max<size_t>(1, pts.size()), TsisSample{});
+                for (size_t i = 0; i < pts.size(); ++i) {
+                    const glm::vec3 w = pts[i].irradiance * pts[i].area;
+                    s[i] = {pts[i].position.x,
+                            pts[i].position.y,
+                            pts[i].position.z,
+                            -1.0f,
+                            w.x,
+                            w.y,
+                            w.z,
+                            0.0f};
+                }
+                samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                      s.size() * sizeof(TsisSample), s.data());
+            }
+            res.stats().set("reference_spacing_mm", spacing);
+            res.stats().set("reference_point_count", static_cast<double>(pts.size()));
+            res.stats().set("reference_points_cached", !built);
         });
     graph.addPass(
         "reference_gather",

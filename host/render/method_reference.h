@@ -17,8 +17,8 @@
 #pragma once
 
 #include "cl/gather.h"
-#include "render/profile_table_cache.h"
 #include "render/method.h"
+#include "render/profile_table_cache.h"
 #include "render/surface_points.h"
 
 namespace tsis {

@@ -1,12 +1,12 @@
 // The methods `--method` can name (docs/design.md §4). Add a method here.
 #include "render/method.h"
 #include "render/method_hierarchical.h"
-#include "render/method_reference.h"
 #include "render/method_hybrid.h"
 #include "render/method_lss.h"
 #include "render/method_ltsm.h"
 #include "render/method_mis.h"
 #include "render/method_pyramid.h"
+#include "render/method_reference.h"
 #include "render/method_tsis.h"
 #include "render/method_tsm.h"
 #include "render/method_volumetric.h"
@@ -22,17 +22,32 @@ struct Entry {
 };
 
 const Entry kMethods[] = {
-    {"pyramid", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<PyramidMethod>(cl); }},
-    {"tsis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
-    {"hybrid", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HybridMethod>(cl); }},
-    {"ltsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LtsmMethod>(cl); }},
-    {"mis", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<MisMethod>(cl); }},
-    {"hierarchical", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HierarchicalMethod>(cl); }},
-    {"reference", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<ReferenceMethod>(cl); }},
-    {"tsm", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsmMethod>(cl); }},
-    {"lss", [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LssMethod>(cl); }},
+    {"pyramid",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<PyramidMethod>(cl); }},
+    {"tsis",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsisMethod>(cl); }},
+    {"hybrid",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<HybridMethod>(cl); }},
+    {"ltsm",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LtsmMethod>(cl); }},
+    {"mis",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<MisMethod>(cl); }},
+    {"hierarchical",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> {
+         return std::make_unique<HierarchicalMethod>(cl);
+     }},
+    {"reference",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> {
+         return std::make_unique<ReferenceMethod>(cl);
+     }},
+    {"tsm",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<TsmMethod>(cl); }},
+    {"lss",
+     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<LssMethod>(cl); }},
     {"volumetric",
-     [](ClRuntime& cl) -> std::unique_ptr<Method> { return std::make_unique<VolumetricMethod>(cl); }},
+     [](ClRuntime& cl) -> std::unique_ptr<Method> {
+         return std::make_unique<VolumetricMethod>(cl);
+     }},
 };
 
 }  // namespace

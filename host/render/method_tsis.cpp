@@ -8,8 +8,7 @@ TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
 void TsisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    addGlobalPasses(graph, ctx, dipoleProfile(ctx.scene->material, o.rdPart, o.rpBound, o.rpK),
-                    "");
+    addGlobalPasses(graph, ctx, dipoleProfile(ctx.scene->material, o.rdPart, o.rpBound, o.rpK), "");
 }
 
 void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
@@ -45,8 +44,8 @@ void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const Key
 }
 
 void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
-                         cl::Buffer& samples, const std::string& prefix, FrameGraphId<Marker> pyramid,
-                         FrameGraphId<Marker> drawn) {
+                         cl::Buffer& samples, const std::string& prefix,
+                         FrameGraphId<Marker> pyramid, FrameGraphId<Marker> drawn) {
     graph.addPass(
         prefix + "cdf",
         [&](FrameGraph::Builder& b) {

@@ -38,7 +38,7 @@ class TsisMethod : public Method {
 // flux atlas' CDF pyramid (writes `pyramid`), <prefix>sample draws
 // ctx.options->samples samples from it into `samples` (writes `drawn`).
 void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
-                         cl::Buffer& samples, const std::string& prefix, FrameGraphId<Marker> pyramid,
-                         FrameGraphId<Marker> drawn);
+                         cl::Buffer& samples, const std::string& prefix,
+                         FrameGraphId<Marker> pyramid, FrameGraphId<Marker> drawn);
 
 }  // namespace tsis

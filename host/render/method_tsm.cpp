@@ -179,11 +179,11 @@ double TsmMethod::filter(const FrameContext& ctx, const LightMapsCl& maps,
         const LightView& lv = (*maps.views)[l];
         const bool point = lv.light.type == Light::Type::Point;
         const glm::vec3 s = point ? lv.light.vec : glm::normalize(lv.light.vec);
-        setKernelArgs(filter_, points.xyz, static_cast<cl_int>(count), lightMapInfo(lv, ctx.lightResolution),
-                      cl_float4{{s.x, s.y, s.z, point ? 1.0f : 0.0f}}, F_[l], P_[l], levels_,
-                      static_cast<cl_int>(levelsHost_.size()), taps_, static_cast<cl_int>(taps), rings_,
-                      ringInfo_, static_cast<cl_float>(radiusMm_), static_cast<cl_int>(l > 0),
-                      out);
+        setKernelArgs(
+            filter_, points.xyz, static_cast<cl_int>(count), lightMapInfo(lv, ctx.lightResolution),
+            cl_float4{{s.x, s.y, s.z, point ? 1.0f : 0.0f}}, F_[l], P_[l], levels_,
+            static_cast<cl_int>(levelsHost_.size()), taps_, static_cast<cl_int>(taps), rings_,
+            ringInfo_, static_cast<cl_float>(radiusMm_), static_cast<cl_int>(l > 0), out);
         events.emplace_back();
         enqueue1D(cl_.queue(), filter_, static_cast<size_t>(count), kLocalSize, &events.back());
     }

@@ -61,7 +61,8 @@ std::vector<float> RadialImportance::inverseTable(int entries) const {
     TSIS_CHECK_GE(entries, 1);
     std::vector<float> radii(static_cast<size_t>(entries) + 1);
     for (int k = 0; k <= entries; ++k)
-        radii[static_cast<size_t>(k)] = static_cast<float>(inverse(static_cast<double>(k) / entries));
+        radii[static_cast<size_t>(k)] =
+            static_cast<float>(inverse(static_cast<double>(k) / entries));
     return radii;
 }
 

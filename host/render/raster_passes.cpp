@@ -25,9 +25,8 @@ void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
     meshHash_ = hash;
 }
 
-RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx,
-                                      uint64_t meshHash, uint64_t lighting,
-                                      FrameGraphId<LightMapsCl> lightMapsCl,
+RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx, uint64_t meshHash,
+                                      uint64_t lighting, FrameGraphId<LightMapsCl> lightMapsCl,
                                       FrameGraphId<CameraBuffersCl> gbufferCl) {
     RasterHandles h;
     h.mesh = graph.create<const GpuMesh*>("mesh", nullptr);

@@ -31,9 +31,9 @@ struct GlLights {
 
 // The tone-mapped frame and the radiance it was made from.
 struct FrameImage {
-    std::vector<uint8_t> rgb8;      // sRGB, row 0 = top
-    std::vector<float> radiance;    // RGBA, GL row order
-    float lavg = 1;                 // log-average luminance of the radiance
+    std::vector<uint8_t> rgb8;    // sRGB, row 0 = top
+    std::vector<float> radiance;  // RGBA, GL row order
+    float lavg = 1;               // log-average luminance of the radiance
 };
 
 struct RasterHandles {

@@ -16,9 +16,12 @@ RdPart parseRdPart(const std::string& name) {
 
 const char* rdPartName(RdPart part) {
     switch (part) {
-        case RdPart::Local: return "local";
-        case RdPart::Global: return "global";
-        default: return "full";
+        case RdPart::Local:
+            return "local";
+        case RdPart::Global:
+            return "global";
+        default:
+            return "full";
     }
 }
 

@@ -29,7 +29,7 @@ struct RenderOptions {
     double rpBound = 0.1;
     double rpK = 1.5;
     RdPart rdPart = RdPart::Full;  // tsis/ltsm: Rd, Rd·Wl or Rd·Wg
-    int ltsmRings = 4;            // ltsm / hybrid local part: L rings of C samples + the centre
+    int ltsmRings = 4;             // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule

@@ -124,7 +124,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     // method computes B, B comes back (and is averaged), GL composites.
     FrameGraph graph;
     staging_.declare(graph, ctx);
-    const RasterHandles gl = raster_.addPasses(graph, ctx, mesh, lighting, ctx.lightMaps, ctx.gbuffer);
+    const RasterHandles gl =
+        raster_.addPasses(graph, ctx, mesh, lighting, ctx.lightMaps, ctx.gbuffer);
     staging_.addUploads(graph, ctx, gl);
     m.addPasses(graph, ctx);
     const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, ctx);

@@ -56,8 +56,7 @@ TEST(Renderer, LightResolutionFollowsTheObjectsSizeInDiffusionLengths) {
     EXPECT_EQ(autoLightResolution(large), 2048);
     RenderOptions opt = test::smallOptions(16, 64);
     opt.lightResolution = 0;
-    EXPECT_EQ(test::renderWith(small, opt, "pyramid").stats.number("light_resolution"),
-              1024);
+    EXPECT_EQ(test::renderWith(small, opt, "pyramid").stats.number("light_resolution"), 1024);
 }
 
 }  // namespace

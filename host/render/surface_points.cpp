@@ -8,8 +8,8 @@
 #include <unordered_map>
 
 #include "physics/fresnel.h"
-#include "render/ray_caster.h"
 #include "render/frame_keys.h"
+#include "render/ray_caster.h"
 #include "tsis_shared.h"
 #include "util/error.h"
 #include "util/parallel.h"

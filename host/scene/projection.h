@@ -15,7 +15,9 @@ float boundingRadius(const Mesh& mesh);
 
 // The longest distance between two surface points of an object of bounding
 // radius `radius`, with the margin the profile tables are built to.
-inline double maxSurfaceDistance(float radius) { return 2.0 * radius * 1.001; }
+inline double maxSurfaceDistance(float radius) {
+    return 2.0 * radius * 1.001;
+}
 
 // Camera projection × view for an image of aspect width/height, its near and
 // far planes fitted around the bounding sphere.

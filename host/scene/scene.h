@@ -17,7 +17,8 @@ struct Light {
     Type type = Type::Point;
     glm::vec3 vec{0.0f};  // point: position (mm); directional: direction the light travels
     glm::vec3 rgb{1.0f};  // point: intensity (W/sr); directional: irradiance (W/mm²)
-    bool shadows = true;  // V from the shadow map; false: V = 1 (tests against unshadowed integrals)
+    bool shadows =
+        true;  // V from the shadow map; false: V = 1 (tests against unshadowed integrals)
 };
 
 struct Camera {

@@ -81,9 +81,7 @@ TEST(Progress, ObserverOfTheCreatingThreadSeesEveryUpdate) {
         {"gather", 0.0}, {"gather", 0.25}, {"gather", 0.75}, {"gather", 1.0}};
     EXPECT_EQ(seen, expected);
     // Gone with its scope, and never seen by another thread's Progress.
-    {
-        Progress after("after", 1);
-    }
+    { Progress after("after", 1); }
     std::thread other;
     {
         ScopedProgressObserver observer(

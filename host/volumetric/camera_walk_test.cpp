@@ -8,8 +8,8 @@
 #include "mesh/builtin.h"
 #include "mesh/mesh.h"
 #include "physics/fresnel.h"
-#include "volumetric/mesh_boundary.h"
 #include "support/volumetric_walk.h"
+#include "volumetric/mesh_boundary.h"
 
 namespace tsis {
 namespace {

@@ -14,9 +14,9 @@
 #include "mesh/mesh_io.h"
 #include "physics/fresnel.h"
 #include "physics/material.h"
+#include "support/volumetric_walk.h"
 #include "volumetric/camera_walk.h"
 #include "volumetric/mesh_boundary.h"
-#include "support/volumetric_walk.h"
 
 namespace tsis {
 namespace {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "physics/fresnel.h"
+#include "support/volumetric_walk.h"
 #include "volumetric/boundary.h"
 #include "volumetric/camera_walk.h"
-#include "support/volumetric_walk.h"
 
 namespace tsis {
 namespace {

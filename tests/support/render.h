@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "compare/image_compare.h"
 #include "mesh/builtin.h"
 #include "physics/dipole.h"
 #include "physics/fresnel.h"
 #include "physics/material.h"
-#include "compare/image_compare.h"
 #include "render/renderer.h"
 
 namespace tsis::test {
