@@ -78,9 +78,11 @@ void FrameGraph::executeIndices(FrameStats& stats, const std::vector<int>& outpu
         if (!keep[k]) continue;
         Resources res(*this, k);
         Timer t;
+        CpuTimer cpu;
         passes_[k].run(res);
         const double wall = t.ms();
-        stats.addStage(passes_[k].name, res.deviceMs_ >= 0 ? res.deviceMs_ : wall, res.bytes_);
+        stats.addStage(passes_[k].name, res.deviceMs_ >= 0 ? res.deviceMs_ : wall, res.bytes_,
+                       cpu.ms());
         executed_.push_back(passes_[k].name);
     }
 }

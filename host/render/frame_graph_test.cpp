@@ -85,6 +85,7 @@ TEST(FrameGraph, RecordsOneStagePerPassRunWithDeviceTimeAndBytes) {
     EXPECT_EQ(stats.stages[0].name, "upload");
     EXPECT_EQ(stats.stages[0].ms, 7.5);
     EXPECT_EQ(stats.stages[0].bytes, 1024);
+    EXPECT_GE(stats.stages[0].cpuMs, 0.0) << "the process' CPU time over the pass";
 }
 
 TEST(FrameGraph, ImportedResourcesCountAsWrittenAndKeepTheirValue) {

@@ -4,14 +4,15 @@
 
 namespace tsis {
 
-void FrameStats::addStage(const std::string& name, double ms, long long bytes) {
+void FrameStats::addStage(const std::string& name, double ms, long long bytes, double cpuMs) {
     for (Stage& s : stages)
         if (s.name == name) {
             s.ms += ms;
             if (bytes >= 0) s.bytes = (s.bytes < 0 ? 0 : s.bytes) + bytes;
+            if (cpuMs >= 0) s.cpuMs = (s.cpuMs < 0 ? 0 : s.cpuMs) + cpuMs;
             return;
         }
-    stages.push_back({name, ms, bytes});
+    stages.push_back({name, ms, bytes, cpuMs});
 }
 
 void FrameStats::set(const std::string& key, Json value) {
@@ -54,12 +55,15 @@ Json FrameStats::toJson() const {
     for (const auto& [k, v] : values) root[k] = v;
     Json ms = Json::object();
     Json bytes = Json::object();
+    Json cpu = Json::object();
     for (const Stage& s : stages) {
         ms[s.name] = s.ms;
         if (s.bytes >= 0) bytes[s.name] = s.bytes;
+        if (s.cpuMs >= 0) cpu[s.name] = s.cpuMs;
     }
     root["ms"] = ms;
     root["bytes"] = bytes;
+    root["cpu_ms"] = cpu;
     return root;
 }
 

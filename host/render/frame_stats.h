@@ -15,11 +15,12 @@ struct FrameStats {
         std::string name;
         double ms = 0;
         long long bytes = -1;  // transfers only
+        double cpuMs = -1;     // process CPU time (all threads) over the stage; -1: not measured
     };
     std::vector<Stage> stages;  // in execution order
     std::vector<std::pair<std::string, Json>> values;
 
-    void addStage(const std::string& name, double ms, long long bytes = -1);
+    void addStage(const std::string& name, double ms, long long bytes = -1, double cpuMs = -1);
     void set(const std::string& key, Json value);
     double stageMs(const std::string& name) const;  // 0 when absent
     // A number set with set(); NaN when absent or not a number.

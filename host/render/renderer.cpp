@@ -106,6 +106,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     Timer total;
+    CpuTimer totalCpu;
     FrameResult result;
     FrameStats& stats = result.stats;
     Method& m = method(opt.method);
@@ -150,7 +151,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     result.rgb8 = std::move(graph.get(image).rgb8);
     result.lavg = graph.get(image).lavg;
     if (opt.keepAovs) collectAovs(graph, gl, radiosity, image, ctx, result);
-    stats.addStage("total", total.ms());
+    stats.addStage("total", total.ms(), -1, totalCpu.ms());
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());
     recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);

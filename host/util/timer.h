@@ -1,5 +1,7 @@
 #pragma once
 
+#include <time.h>
+
 #include <chrono>
 
 namespace tsis {
@@ -16,6 +18,23 @@ class Timer {
 
   private:
     std::chrono::steady_clock::time_point start_;
+};
+
+// CPU time of the whole process (every thread: llvmpipe's and PoCL's too) in
+// milliseconds: against a Timer's wall time it tells how many cores a stage
+// kept busy.
+class CpuTimer {
+  public:
+    CpuTimer() : start_(now()) {}
+    double ms() const { return now() - start_; }
+
+  private:
+    static double now() {
+        timespec t{};
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+        return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+    }
+    double start_;
 };
 
 }  // namespace tsis
