@@ -5,42 +5,29 @@
  * FMA: independent chains of x = x * a + b per work-item (enough of them to
  * cover the FMA latency); 2 flops per lane per FMA. The sum is written so the
  * chains are not optimised away. */
-kernel void bench_fma16(__global float* out, const int iters, const float a, const float b) {
-    const float g = (float)get_global_id(0) * 1e-7f;
-    float16 x0 = (float16)(g), x1 = (float16)(g + 1), x2 = (float16)(g + 2), x3 = (float16)(g + 3);
-    float16 x4 = (float16)(g + 4), x5 = (float16)(g + 5), x6 = (float16)(g + 6),
-            x7 = (float16)(g + 7);
-    for (int i = 0; i < iters; ++i) {
-        x0 = fma(x0, a, b);
-        x1 = fma(x1, a, b);
-        x2 = fma(x2, a, b);
-        x3 = fma(x3, a, b);
-        x4 = fma(x4, a, b);
-        x5 = fma(x5, a, b);
-        x6 = fma(x6, a, b);
-        x7 = fma(x7, a, b);
+#define BENCH_FMA(W, floatW, LO, HI)                                                               \
+    kernel void bench_fma##W(__global float* out, const int iters, const float a, const float b) { \
+        const float g = (float)get_global_id(0) * 1e-7f;                                           \
+        floatW x0 = (floatW)(g), x1 = (floatW)(g + 1), x2 = (floatW)(g + 2), x3 = (floatW)(g + 3); \
+        floatW x4 = (floatW)(g + 4), x5 = (floatW)(g + 5), x6 = (floatW)(g + 6),                   \
+               x7 = (floatW)(g + 7);                                                               \
+        for (int i = 0; i < iters; ++i) {                                                          \
+            x0 = fma(x0, a, b);                                                                    \
+            x1 = fma(x1, a, b);                                                                    \
+            x2 = fma(x2, a, b);                                                                    \
+            x3 = fma(x3, a, b);                                                                    \
+            x4 = fma(x4, a, b);                                                                    \
+            x5 = fma(x5, a, b);                                                                    \
+            x6 = fma(x6, a, b);                                                                    \
+            x7 = fma(x7, a, b);                                                                    \
+        }                                                                                          \
+        const floatW s = ((x0 + x1) + (x2 + x3)) + ((x4 + x5) + (x6 + x7));                        \
+        out[get_global_id(0)] = dot(s.LO, (float4)(1.0f)) + dot(s.HI, (float4)(1.0f));             \
     }
-    const float16 s = ((x0 + x1) + (x2 + x3)) + ((x4 + x5) + (x6 + x7));
-    out[get_global_id(0)] = dot(s.lo.lo, (float4)(1.0f)) + dot(s.hi.hi, (float4)(1.0f));
-}
 
-kernel void bench_fma8(__global float* out, const int iters, const float a, const float b) {
-    const float g = (float)get_global_id(0) * 1e-7f;
-    float8 x0 = (float8)(g), x1 = (float8)(g + 1), x2 = (float8)(g + 2), x3 = (float8)(g + 3);
-    float8 x4 = (float8)(g + 4), x5 = (float8)(g + 5), x6 = (float8)(g + 6), x7 = (float8)(g + 7);
-    for (int i = 0; i < iters; ++i) {
-        x0 = fma(x0, a, b);
-        x1 = fma(x1, a, b);
-        x2 = fma(x2, a, b);
-        x3 = fma(x3, a, b);
-        x4 = fma(x4, a, b);
-        x5 = fma(x5, a, b);
-        x6 = fma(x6, a, b);
-        x7 = fma(x7, a, b);
-    }
-    const float8 s = ((x0 + x1) + (x2 + x3)) + ((x4 + x5) + (x6 + x7));
-    out[get_global_id(0)] = dot(s.lo, (float4)(1.0f)) + dot(s.hi, (float4)(1.0f));
-}
+/* One kernel per vector width: bench_fma16, bench_fma8. */
+BENCH_FMA(16, float16, lo.lo, hi.hi)
+BENCH_FMA(8, float8, lo, hi)
 
 /* Bandwidth: a copy (read + write) and a read-sum, each work-item over its own
  * contiguous chunk of `per` float16s (contiguous per work-item is what a CPU
