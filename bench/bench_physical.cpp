@@ -11,10 +11,15 @@
 //     (radiance, relative RMSE over covered pixels, also after one global
 //     scale), default lights and camera, small images.
 //
-// bench_physical [--quick] [--photons N] [--spp N] [--size W]
+//  --models (item 4): instead, per radial profile model (--profile) and exit
+//     term (--exit), the same slab and scenes against volumetric transport:
+//     bench/results/physical_models.md.
+//
+// bench_physical [--quick] [--models] [--photons N] [--spp N] [--size W]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +28,7 @@
 #include "physics/dipole.h"
 #include "physics/fresnel.h"
 #include "physics/material.h"
+#include "render/profiles.h"
 #include "util/error.h"
 #include "volumetric/slab.h"
 
@@ -33,30 +39,84 @@ const double kRadiiMfp[] = {0.1, 0.3, 1.0, 3.0, 10.0};
 constexpr double kEventBudget = 2e8;  // scattering events per slab
 
 // ∫ Rd 2πr dr over [r0, r1] (Simpson in r).
-double integrateRd(const DipoleChannel& d, double r0, double r1) {
+double integrateRd(const std::function<double(double)>& rd, double r0, double r1) {
     const int n = 200;
     const double h = (r1 - r0) / n;
     double s = 0;
     for (int k = 0; k <= n; ++k) {
         const double r = r0 + k * h;
         const double w = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
-        s += w * d.Rd(r) * 2.0 * M_PI * r;
+        s += w * rd(r) * 2.0 * M_PI * r;
     }
     return s * h / 3.0;
 }
 
-// Fresnel's first moment ∫₀¹ Fr(η, μ)μ dμ over the outside angles, by
-// Simpson: c = 1 − 2·moment makes ∫(1 − Fr)/(cπ)·cosθ dω = 1 (pbrt's c, so the
-// exitance equals B).
-double fresnelMoment1(double eta) {
-    const int n = 4000;
-    double s = 0;
-    for (int k = 0; k <= n; ++k) {
-        const double mu = static_cast<double>(k) / n;
-        const double w = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
-        s += w * fresnelReflectance(eta, mu) * mu;
+// A slab's volumetric trace within the event budget.
+SlabResult traceBudgeted(const Material& m, long long photons) {
+    const Medium medium(m);
+    // A pilot for the walks' length, then photons within an event budget
+    // (cream's walks are ~100× skin1's).
+    SlabOptions o;
+    o.photons = 2000;
+    const double events = std::max(1.0, traceSlab(medium, o).meanEvents);
+    o.photons = std::clamp(static_cast<long long>(kEventBudget / events), 20000LL, photons);
+    const SlabResult r = traceSlab(medium, o);
+    std::fprintf(stderr, "slab %s: %lld photons, %.1f events each\n", m.name.c_str(), o.photons,
+                 r.meanEvents);
+    return r;
+}
+
+// The slab materials: spectralon (σa = 0: R = 1 in both) left out.
+bool slabMaterial(const BenchArgs& a, const Material& m) {
+    if (a.quick && m.name != "marble" && m.name != "skin1") return false;
+    return m.sigmaA != glm::dvec3(0.0);
+}
+
+// A method's radiance against the volumetric one over the covered pixels:
+// relative RMSE, after the least-squares global scale, and that scale.
+struct SceneError {
+    double err, errScaled, scale;
+};
+SceneError sceneError(const ImageF& ref, const ImageF& vol, const ImageF& coverage) {
+    const double err =
+        compareImages(ref, vol, &coverage, "reference", "volumetric").metrics.relRmse;
+    double num = 0, den = 0;
+    for (size_t i = 0; i < vol.pixels.size(); ++i)
+        if (coverage.pixels[i / 3] > 0.5) {
+            num += vol.pixels[i] * ref.pixels[i];
+            den += ref.pixels[i] * ref.pixels[i];
+        }
+    const double scale = den > 0 ? num / den : 0;
+    ImageF scaled = ref;
+    for (float& p : scaled.pixels) p = static_cast<float>(p * scale);
+    return {err, compareImages(scaled, vol, &coverage, "reference", "volumetric").metrics.relRmse,
+            scale};
+}
+
+struct SceneCase {
+    std::string mesh, material, sizeMm;
+    std::vector<std::string> args(int size) const {
+        return {"--mesh", mesh,      "--material",         material,   "--size-mm",
+                sizeMm,   "--width", std::to_string(size), "--height", std::to_string(size)};
     }
-    return s / (3.0 * n);
+    std::string name() const { return mesh + " " + material + " " + sizeMm + " mm"; }
+};
+
+std::vector<SceneCase> sceneCases(const BenchArgs& a) {
+    std::vector<SceneCase> scenes = {{"builtin:sphere", "marble", "10"},
+                                     {"builtin:sphere", "skin1", "30"},
+                                     {"builtin:default", "marble", "10"},
+                                     {"builtin:default", "skin1", "10"}};
+    if (a.quick) scenes.resize(1);
+    return scenes;
+}
+
+FrameResult renderVolumetric(Renderer& renderer, BenchCase c, int spp, uint32_t seed) {
+    c.options.method = "volumetric";
+    c.options.keepAovs = true;
+    c.options.spp = spp;
+    c.options.seed = seed;
+    return renderer.render(c.scene, c.options);
 }
 
 long long optionValue(const std::vector<std::string>& rest, const std::string& name,
@@ -66,10 +126,131 @@ long long optionValue(const std::vector<std::string>& rest, const std::string& n
     return def;
 }
 
+const ProfileModel kModels[] = {ProfileModel::Dipole, ProfileModel::BetterDipole,
+                                ProfileModel::Pbd};
+const ExitTerm kExits[] = {ExitTerm::Jensen, ExitTerm::Normalized};
+
+std::string combination(ProfileModel m, ExitTerm e) {
+    return std::string(profileModelName(m)) + " + " + exitTermName(e);
+}
+
+// Item 4: every profile model and exit term against volumetric transport.
+int runModels(const BenchArgs& a, long long photons, int spp, int size) {
+    std::string md = "# Physical accuracy of the profile models and exit terms\n\n";
+    md += "Made by `build/bench/bench_physical --models --photons " + std::to_string(photons) +
+          " --spp " + std::to_string(spp) + " --size " + std::to_string(size) +
+          "` (bench/bench_physical.cpp) on " + timestamp() +
+          "; the slab and scenes of [physical.md](physical.md), each profile (`--profile`) and "
+          "exit term (`--exit`) against `--method volumetric`.\n\n";
+    std::vector<std::string> header = {"material", "channel", "R vol."};
+    for (ProfileModel m : kModels)
+        header.push_back(std::string("R ") + profileModelName(m) + " / vol.");
+    for (ProfileModel m : kModels) header.push_back(std::string("shape ") + profileModelName(m));
+    for (ProfileModel m : kModels)
+        for (ExitTerm e : kExits) header.push_back("normal L " + combination(m, e) + " / vol.");
+    Table slab(header);
+    // Per combination: the sum of |normal L / vol. − 1| over the slab rows.
+    std::vector<double> slabError(std::size(kModels) * std::size(kExits), 0.0);
+    int rows = 0;
+    const char* channels[] = {"R", "G", "B"};
+    for (const Material& m : presetMaterials()) {
+        if (!slabMaterial(a, m)) continue;
+        const SlabResult r = traceBudgeted(m, photons);
+        const Medium medium(m);
+        const double ft0 = fresnelTransmittance(m.eta, 1.0);
+        const double exits[] = {1.0, normalizedExitScale(m.eta)};
+        for (int ch = 0; ch < 3; ++ch) {
+            std::vector<std::string> row = {m.name, channels[ch], fmt(r.reflectance[ch], 4)};
+            std::vector<std::string> shapes, normal;
+            const double mfp = 1.0 / medium.sigmaT[ch];
+            for (size_t mi = 0; mi < std::size(kModels); ++mi) {
+                const KeyedProfile p = radialProfile(m, kModels[mi]);
+                auto rd = [&](double x) { return p.f(x)[ch]; };
+                // Total: geometric segments from 1e-4 to 300 free paths.
+                double total = 0;
+                for (double r0 = 1e-4; r0 < 300.0; r0 *= 1.5)
+                    total += integrateRd(rd, r0 * mfp, 1.5 * r0 * mfp);
+                row.push_back(fmt(total / r.reflectance[ch], 3));
+                // Shape: exp(RMS of ln(vol./model)) over the bins in 0.1–10 ℓ.
+                double sum = 0;
+                int n = 0;
+                for (size_t b = 0; b + 1 < r.edges.size(); ++b) {
+                    if (r.edges[b] < 0.1 || r.edges[b + 1] > 10.0) continue;
+                    const double model = integrateRd(rd, r.edges[b] * mfp, r.edges[b + 1] * mfp);
+                    if (model <= 0 || r.binFlux[b][ch] <= 0) continue;
+                    sum += std::pow(std::log(r.binFlux[b][ch] / model), 2);
+                    ++n;
+                }
+                shapes.push_back(n ? fmt(std::exp(std::sqrt(sum / n)), 3) : "–");
+                // Normal view, normal light of unit irradiance: L = Ft·B·(exit term).
+                const double volL = ft0 * r.normalRadiance[ch];
+                for (size_t e = 0; e < std::size(kExits); ++e) {
+                    const double ratio = ft0 / M_PI * exits[e] * ft0 * total / volL;
+                    normal.push_back(fmt(ratio, 3));
+                    slabError[mi * std::size(kExits) + e] += std::abs(ratio - 1.0);
+                }
+            }
+            row.insert(row.end(), shapes.begin(), shapes.end());
+            row.insert(row.end(), normal.begin(), normal.end());
+            slab.add(row);
+            ++rows;
+        }
+    }
+
+    // Scenes: one volumetric image each; a reference per model. The exit term
+    // scales every pixel's radiance by its constant (1 or 1/c, the shader's
+    // u_exitScale), so one reference per model gives both.
+    Renderer renderer;
+    std::vector<std::string> sceneHeader = {"combination", "slab: mean |normal L / vol. − 1|"};
+    const std::vector<SceneCase> scenes = sceneCases(a);
+    for (const SceneCase& s : scenes) sceneHeader.push_back(s.name() + ": rel. RMSE (scaled)");
+    Table summary(sceneHeader);
+    std::vector<std::vector<std::string>> cells(slabError.size());
+    for (size_t k = 0; k < cells.size(); ++k)
+        cells[k] = {combination(kModels[k / 2], kExits[k % 2]),
+                    fmt(100 * slabError[k] / std::max(rows, 1), 1) + "%"};
+    for (const SceneCase& s : scenes) {
+        BenchCase c = makeCase(s.args(size));
+        const FrameResult vol = renderVolumetric(renderer, c, spp, 1);
+        const double exits[] = {1.0, normalizedExitScale(c.scene.material.eta)};
+        for (size_t mi = 0; mi < std::size(kModels); ++mi) {
+            c.options.profile = kModels[mi];
+            const ReferenceImage ref = renderReference(renderer, c);
+            for (size_t e = 0; e < std::size(kExits); ++e) {
+                ImageF radiance = ref.radiance;
+                for (float& p : radiance.pixels) p = static_cast<float>(p * exits[e]);
+                const SceneError err = sceneError(radiance, vol.radiance, ref.coverage);
+                cells[mi * 2 + e].push_back(fmt(100 * err.err, 1) + "% (" +
+                                            fmt(100 * err.errScaled, 1) + "%)");
+                std::fprintf(stderr, "%s %s: %.3f\n", s.name().c_str(),
+                             combination(kModels[mi], kExits[e]).c_str(), err.err);
+            }
+        }
+    }
+    for (const auto& row : cells) summary.add(row);
+    md +=
+        "## Which combination is closest\n\n"
+        "Slab: the normal-view radiance under a normal light (as physical.md), mean over the "
+        "presets' channels. Scenes: relative RMSE of `--method reference --profile P --exit E` "
+        "against `--method volumetric` (radiance, covered pixels; after one global scale in "
+        "parentheses), default lights and camera, " +
+        std::to_string(size) + "², `--spp " + std::to_string(spp) + "`.\n\n" + summary.markdown() +
+        "\n## Semi-infinite slab per preset\n\n"
+        "R: total reflectance per entered flux (each model's ∫Rd 2πr dr, numerically). Shape: "
+        "exp(RMS of ln(volumetric / model)) over the 1/10-decade annuli in 0.1–10 ℓ (1 = the "
+        "same shape). Normal L: as physical.md, per model and exit term.\n\n" +
+        slab.markdown() + "\n";
+    writeResult("physical_models.md", md);
+    std::printf("wrote %s/physical_models.md\n", resultsDir().c_str());
+    return 0;
+}
+
 int run(const BenchArgs& a) {
     const long long photons = optionValue(a.rest, "--photons", a.quick ? 20000 : 400000);
     const int spp = static_cast<int>(optionValue(a.rest, "--spp", a.quick ? 16 : 1024));
     const int size = static_cast<int>(optionValue(a.rest, "--size", a.quick ? 32 : 64));
+    if (std::find(a.rest.begin(), a.rest.end(), "--models") != a.rest.end())
+        return runModels(a, photons, spp, size);
     std::string md = "# Physical accuracy: the dipole against volumetric transport\n\n";
     md += "Made by `build/bench/bench_physical` (bench/bench_physical.cpp) on " + timestamp() +
           "; " + std::to_string(photons) + " photons per slab, " + std::to_string(spp) +
@@ -80,19 +261,12 @@ int run(const BenchArgs& a) {
                 "normalised / vol."});
     const char* channels[] = {"R", "G", "B"};
     for (const Material& m : presetMaterials()) {
-        if (a.quick && m.name != "marble" && m.name != "skin1") continue;
-        if (m.sigmaA == glm::dvec3(0.0)) continue;  // spectralon: R = 1 in both (σa = 0)
+        if (!slabMaterial(a, m)) continue;
         const Medium medium(m);
-        // A pilot for the walks' length, then photons within an event budget
-        // (cream's walks are ~100× skin1's).
-        SlabOptions o;
-        o.photons = 2000;
-        const double events = std::max(1.0, traceSlab(medium, o).meanEvents);
-        o.photons = std::clamp(static_cast<long long>(kEventBudget / events), 20000LL, photons);
-        const SlabResult r = traceSlab(medium, o);
+        const SlabResult r = traceBudgeted(m, photons);
         const Dipole dipole(m);
         // pbrt's normalised exit term: (1 − Fr(η, cosθo)) / (c·π), c = 1 − 2·FM1(1/η).
-        const double c = 1.0 - 2.0 * fresnelMoment1(m.eta);
+        const double c = 1.0 / normalizedExitScale(m.eta);
         const double ft0 = fresnelTransmittance(m.eta, 1.0);
         for (int ch = 0; ch < 3; ++ch) {
             const DipoleChannel& d = dipole.ch[ch];
@@ -109,7 +283,7 @@ int run(const BenchArgs& a) {
                 while (b + 1 < r.edges.size() && r.edges[b + 1] <= mfp) ++b;
                 const double r0 = r.edges[b] / medium.sigmaT[ch],
                              r1 = r.edges[b + 1] / medium.sigmaT[ch];
-                const double dip = integrateRd(d, r0, r1);
+                const double dip = integrateRd([&](double x) { return d.Rd(x); }, r0, r1);
                 row.push_back(dip > 0 ? fmt(r.binFlux[b][ch] / dip, 3) : "–");
             }
             // Normal view, normal light of unit irradiance: L = Ft·B·(exit term).
@@ -119,8 +293,6 @@ int run(const BenchArgs& a) {
             row.push_back(fmt(ft0 / (c * M_PI) * b0 / volL, 3));
             slab.add(row);
         }
-        std::fprintf(stderr, "slab %s: %lld photons, %.1f events each\n", m.name.c_str(), o.photons,
-                     r.meanEvents);
     }
     md +=
         "## Semi-infinite slab, beam straight down\n\n"
@@ -132,49 +304,21 @@ int run(const BenchArgs& a) {
         slab.markdown() + "\n";
 
     // Scenes: reference (dipole) against volumetric, default lights and camera.
-    struct SceneCase {
-        std::string mesh, material, sizeMm;
-    };
-    std::vector<SceneCase> scenes = {{"builtin:sphere", "marble", "10"},
-                                     {"builtin:sphere", "skin1", "30"},
-                                     {"builtin:default", "marble", "10"},
-                                     {"builtin:default", "skin1", "10"}};
-    if (a.quick) scenes.resize(1);
     Renderer renderer;
     Table t({"scene", "rel. RMSE reference vs volumetric", "after one global scale",
              "scale (vol./ref.)", "volumetric noise (rel. RMSE)", "volumetric s"});
-    for (const SceneCase& s : scenes) {
-        const std::vector<std::string> args = {
-            "--mesh", s.mesh,    "--material",         s.material, "--size-mm",
-            s.sizeMm, "--width", std::to_string(size), "--height", std::to_string(size)};
-        BenchCase c = makeCase(args);
+    for (const SceneCase& s : sceneCases(a)) {
+        BenchCase c = makeCase(s.args(size));
         const ReferenceImage ref = renderReference(renderer, c);
-        c.options.method = "volumetric";
-        c.options.keepAovs = true;
-        c.options.spp = spp;
-        const FrameResult vol = renderer.render(c.scene, c.options);
-        c.options.seed = 2;
-        const FrameResult vol2 = renderer.render(c.scene, c.options);
+        const FrameResult vol = renderVolumetric(renderer, c, spp, 1);
+        const FrameResult vol2 = renderVolumetric(renderer, c, spp, 2);
         const ImageF& v = vol.radiance;
-        const double err = compareImages(ref.radiance, v, &ref.coverage, "reference", "volumetric")
-                               .metrics.relRmse;
-        double num = 0, den = 0;
-        for (size_t i = 0; i < v.pixels.size(); ++i)
-            if (ref.coverage.pixels[i / 3] > 0.5) {
-                num += v.pixels[i] * ref.radiance.pixels[i];
-                den += ref.radiance.pixels[i] * ref.radiance.pixels[i];
-            }
-        const double scale = den > 0 ? num / den : 0;
-        ImageF scaled = ref.radiance;
-        for (float& p : scaled.pixels) p = static_cast<float>(p * scale);
-        const double errScaled =
-            compareImages(scaled, v, &ref.coverage, "reference", "volumetric").metrics.relRmse;
+        const auto [err, errScaled, scale] = sceneError(ref.radiance, v, ref.coverage);
         const double noise =
             compareImages(vol2.radiance, v, &ref.coverage, "a", "b").metrics.relRmse /
             std::sqrt(2.0);
-        t.add({s.mesh + " " + s.material + " " + s.sizeMm + " mm", fmt(100 * err, 1) + "%",
-               fmt(100 * errScaled, 1) + "%", fmt(scale, 3), fmt(100 * noise, 2) + "%",
-               fmt(vol.stats.stageMs("volumetric") / 1000.0, 1)});
+        t.add({s.name(), fmt(100 * err, 1) + "%", fmt(100 * errScaled, 1) + "%", fmt(scale, 3),
+               fmt(100 * noise, 2) + "%", fmt(vol.stats.stageMs("volumetric") / 1000.0, 1)});
         std::fprintf(stderr, "%s %s: %.3f (%.3f scaled)\n", s.mesh.c_str(), s.material.c_str(), err,
                      errScaled);
     }

@@ -114,7 +114,7 @@ CompositePass::CompositePass()
 }
 
 void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbuffer,
-                             const glm::vec3& eye, float eta) {
+                             const glm::vec3& eye, float eta, float exitScale) {
     int w = gbuffer.width(), h = gbuffer.height();
     ensureTarget(radianceTarget_, w, h, {GL_RGBA32F}, false);
     if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
@@ -124,6 +124,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbu
     radianceProgram_.use();
     radianceProgram_.set("u_eta", eta);
     radianceProgram_.set("u_eye", eye);
+    radianceProgram_.set("u_exitScale", exitScale);
     bindTexture(radianceProgram_, "u_radiosity", 0, radiosity_->id());
     bindTexture(radianceProgram_, "u_position", 1, gbuffer.color(0));
     bindTexture(radianceProgram_, "u_normal", 2, gbuffer.color(1));

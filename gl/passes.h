@@ -78,14 +78,15 @@ class GBufferPass {
     int current_ = 0;
 };
 
-// Composite: radiance L = Ft/π·B, then tone map + specular + sRGB.
+// Composite: radiance L = Ft/π·B (× the exit term's scale), then tone map + specular + sRGB.
 class CompositePass {
   public:
     CompositePass();
     // radiosity: width*height RGBA floats, GL row order. Returns nothing; read
     // radiance() after it, then call toneMap().
+    // `exitScale`: the exit term's factor over Ft/π (render_options.h exitScale).
     void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
-                  float eta);
+                  float eta, float exitScale);
     void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
                  const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key,
                  float lavg, float specular, float shininess);

@@ -122,6 +122,9 @@ const BadInput kBadInputs[] = {
     {"UnknownMethodFirst", "render --method magic --mesh @DIR@/nope.off", "", "magic"},
     {"RdPartOfHybridFirst", "render --method hybrid --rd-part local --mesh @DIR@/nope.off", "",
      "--rd-part"},
+    {"UnknownProfileFirst", "render --profile multipole --mesh @DIR@/nope.off", "",
+     "--profile 'multipole'"},
+    {"UnknownExitFirst", "render --exit pbrt --mesh @DIR@/nope.off", "", "--exit 'pbrt'"},
     {"NineLightsFirst",
      "render --mesh @DIR@/nope.off" +
          [] {

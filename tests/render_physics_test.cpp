@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/better_dipole.h"
 #include "support/render.h"
 
 namespace tsis {
@@ -25,6 +26,28 @@ TEST(RenderPhysics, PlaneMarbleMatchesClosedForm) {
 }
 TEST(RenderPhysics, PlaneSkin1MatchesClosedForm) {
     checkPlane("skin1", 0.02);
+}
+
+// The better dipole through a whole frame with the normalised exit term: B is
+// the better dipole's closed form, and L = Ft(η, cosθo)/(cπ)·B, whose exitance
+// is B (physics/fresnel_test.cpp). The camera looks straight down (cosθo ≈ 1).
+TEST(RenderPhysics, PlaneBetterDipoleNormalizedExit) {
+    const Scene scene = test::planeScene("marble");
+    RenderOptions opt = test::smallOptions(48, 1024, 1 << 18);
+    opt.profile = ProfileModel::BetterDipole;
+    opt.exit = ExitTerm::Normalized;
+    const FrameResult f = test::renderWith(scene, opt, "tsis");
+    const Material& m = scene.material;
+    const double ft = fresnelTransmittance(m.eta, 1.0);
+    glm::dvec3 closed;
+    for (int c = 0; c < 3; ++c)
+        closed[c] =
+            ft * BetterDipoleChannel(m.sigmaSPrime[c], m.sigmaA[c], m.eta).totalReflectance();
+    const glm::dvec3 b = test::meanRadiosity(f);
+    test::expectNearClosedForm(b, closed, 0.02, "plane better dipole");
+    const glm::dvec3 l = test::meanCovered(f, f.radiance);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(l[c] / b[c] * M_PI / ft, normalizedExitScale(m.eta), 2e-3) << c;
 }
 
 // RMSE against a high-N render falls as N^-1/2 (or faster: the low-discrepancy

@@ -75,6 +75,13 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         {"rd-part", true, false,
          "P  tsis, ltsm: integrate Rd (full), Rd·Wl (local) or Rd·Wg (global)" +
              byDefault(rdPartName(d.rdPart))},
+        {"profile", true, false,
+         "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's) or pbd (photon beam "
+         "diffusion); README \"Physical accuracy\"" +
+             byDefault(profileModelName(d.profile))},
+        {"exit", true, false,
+         "E  the exit term: jensen (Ft/pi·B) or normalized (Ft/(c·pi)·B, exitance B)" +
+             byDefault(exitTermName(d.exit))},
         {"ltsm-rings", true, false,
          "L  ltsm, hybrid: rings of the light-view filter" + byDefault(d.ltsmRings)},
         {"ltsm-per-ring", true, false,
@@ -252,6 +259,8 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.rpBound = args.getDouble("rp-bound", o.rpBound, 1e-9, 1e9);
     o.rpK = args.getDouble("rp-k", o.rpK, 0.0, 1e6);
     o.rdPart = parseRdPart(args.getString("rd-part", rdPartName(o.rdPart)));
+    o.profile = parseProfileModel(args.getString("profile", profileModelName(o.profile)));
+    o.exit = parseExitTerm(args.getString("exit", exitTermName(o.exit)));
     o.ltsmRings = args.getInt("ltsm-rings", o.ltsmRings, 0, 64);
     o.ltsmPerRing = args.getInt("ltsm-per-ring", o.ltsmPerRing, 1, 256);
     o.misDistanceSamples = args.getInt("mis-distance", o.misDistanceSamples, 0, 1 << 16);
@@ -323,6 +332,10 @@ std::vector<std::string> renderOptionArgs(const RenderOptions& o) {
         exact(o.rpK),
         "--rd-part",
         rdPartName(o.rdPart),
+        "--profile",
+        profileModelName(o.profile),
+        "--exit",
+        exitTermName(o.exit),
         "--ltsm-rings",
         exact(o.ltsmRings),
         "--ltsm-per-ring",

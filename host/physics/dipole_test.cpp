@@ -6,24 +6,16 @@
 #include <cstdio>
 #include <numbers>
 
+#include "support/plane_integral.h"
+
 namespace tsis {
 namespace {
 
-// ∫0^∞ Rd(r) 2πr dr by composite Simpson in s = ln r: the peak (width ~zr near
-// 0) and the exponential tail (scale 1/σtr) both get evenly spaced nodes. The
-// integrand Rd·2πr² vanishes like r² at the lower end; the upper end is 60
-// decay lengths out. Needs σa > 0 (a 1/r² importance tail is not integrable here).
+// ∫0^∞ Rd(r) 2πr dr from 1e-9·zr (the integrand vanishes like r² there) to
+// 60 decay lengths out. Needs σa > 0 (a 1/r² importance tail is not integrable here).
 double integrateRd(const DipoleChannel& d) {
-    const double a = std::log(1e-9 * d.zr), b = std::log(d.zv + 60.0 / d.sigmaTr);
-    const int n = 20000;  // even
-    const double h = (b - a) / n;
-    auto f = [&](double s) {
-        const double r = std::exp(s);
-        return d.Rd(r) * 2.0 * std::numbers::pi * r * r;
-    };
-    double sum = f(a) + f(b);
-    for (int k = 1; k < n; ++k) sum += (k % 2 ? 4.0 : 2.0) * f(a + k * h);
-    return sum * h / 3.0;
+    return test::planeIntegral([&](double r) { return d.Rd(r); }, 1e-9 * d.zr,
+                               d.zv + 60.0 / d.sigmaTr);
 }
 
 TEST(Dipole, NumericIntegralEqualsClosedForm) {

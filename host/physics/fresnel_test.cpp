@@ -65,5 +65,37 @@ TEST(Fresnel, HemisphericalAverageMatchesFdrFit) {
     }
 }
 
+// Moments from the air side and from inside obey reciprocity: the
+// transmitted fractions of diffuse light differ by η², 1 − 2FM1(1/η) =
+// (1 − 2FM1(η)) / η²; and diffuse light on glass (η = 1.5) reflects 9.2%.
+TEST(Fresnel, MomentsReciprocityAndGlass) {
+    EXPECT_NEAR(fresnelMoment(1.0, 1), 0.0, 1e-12);
+    for (double eta : {1.3, 1.44, 1.5, 2.0}) {
+        const double outside = 1.0 - 2.0 * fresnelMoment(eta, 1);
+        const double inside = 1.0 - 2.0 * fresnelMoment(1.0 / eta, 1);
+        EXPECT_NEAR(inside, outside / (eta * eta), 1e-5) << eta;
+    }
+    EXPECT_NEAR(2.0 * fresnelMoment(1.5, 1), 0.092, 1e-3);
+    // μ² weights grazing angles less: the second moment is below the first.
+    EXPECT_LT(fresnelMoment(1.3, 2), fresnelMoment(1.3, 1));
+}
+
+// The normalised exit term's exitance is B: ∫ Ft(η, μ)/(cπ) μ dω = 1, here by
+// the midpoint rule (not the Simpson of fresnelMoment).
+TEST(Fresnel, NormalizedExitTermConservesExitance) {
+    for (double eta : {1.0, 1.3, 1.5, 2.4}) {
+        const int n = 100000;
+        const double scale = normalizedExitScale(eta);
+        double exitance = 0;
+        for (int k = 0; k < n; ++k) {
+            const double mu = (k + 0.5) / n;
+            // dω = 2π dμ around the normal.
+            exitance += fresnelTransmittance(eta, mu) * scale / std::numbers::pi * mu * 2.0 *
+                        std::numbers::pi / n;
+        }
+        EXPECT_NEAR(exitance, 1.0, 1e-6) << eta;
+    }
+}
+
 }  // namespace
 }  // namespace tsis

@@ -27,7 +27,9 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     h.add(scene.material.sigmaSPrime).add(scene.material.sigmaA);
     const Camera& c = scene.camera;
     h.add(c.eye).add(c.target).add(c.up).add(c.fovYDegrees);
-    h.add(o.method).add(o.rdPart);
+    // The exit term changes only the radiance, but volumetric's radiosity is
+    // divided by it.
+    h.add(o.method).add(o.rdPart).add(o.profile).add(o.exit);
     for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples,
                   o.pyramidStride, o.spp})
         h.add(v);

@@ -7,8 +7,8 @@ HybridMethod::HybridMethod(ClRuntime& cl) : global_(cl), local_(cl) {}
 void HybridMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
     const Material& m = ctx.scene->material;
-    const KeyedProfile global = dipoleProfile(m, RdPart::Global, o.rpBound, o.rpK);
-    const KeyedProfile local = dipoleProfile(m, RdPart::Local, o.rpBound, o.rpK);
+    const KeyedProfile global = radialProfile(m, o, RdPart::Global);
+    const KeyedProfile local = radialProfile(m, o, RdPart::Local);
     // The global part writes B, the local part adds to it.
     global_.addGlobalPasses(graph, ctx, global, "global_");
     local_.addLocalPasses(graph, ctx, local, "local_", true);

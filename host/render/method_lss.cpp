@@ -21,7 +21,6 @@
 #include <glm/trigonometric.hpp>
 
 #include "cl/launch.h"
-#include "physics/dipole.h"
 #include "util/error.h"
 #include "util/timer.h"
 
@@ -51,11 +50,9 @@ TsisCamera LssMethod::camera(const Camera& c, int height) {
 void LssMethod::updateTables(FrameContext& ctx) {
     const double rMax = ctx.maxDistance();
     Timer t;
-    if (table_.update(ctx.scene->material, rMax)) {
-        const Dipole dipole(ctx.scene->material);
-        std::vector<float> radii =
-            RadialImportance([&dipole](double r) { return dipole.Rd(r); }, rMax)
-                .inverseTable(kRadiusEntries);
+    const KeyedProfile rd = radialProfile(ctx.scene->material, ctx.options->profile);
+    if (table_.update(rd, rMax)) {
+        std::vector<float> radii = RadialImportance(rd.f, rMax).inverseTable(kRadiusEntries);
         radii_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                             radii.size() * sizeof(float), radii.data());
         ctx.stats->addStage("lss_tables", t.ms());

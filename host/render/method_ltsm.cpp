@@ -11,8 +11,7 @@ LtsmMethod::LtsmMethod(ClRuntime& cl) : cl_(cl), kernel_(cl.kernel("ltsm.cl", "t
 
 void LtsmMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    addLocalPasses(graph, ctx, dipoleProfile(ctx.scene->material, o.rdPart, o.rpBound, o.rpK), "",
-                   false);
+    addLocalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "", false);
 }
 
 void LtsmMethod::prepare(FrameContext& ctx, const KeyedProfile& profile,

@@ -22,7 +22,7 @@ MisMethod::MisMethod(ClRuntime& cl)
 
 void MisMethod::prepareTables(FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    const KeyedProfile rd = dipoleProfile(ctx.scene->material, RdPart::Full, o.rpBound, o.rpK);
+    const KeyedProfile rd = radialProfile(ctx.scene->material, o.profile);
     const double rMax = ctx.maxDistance();
     Timer t;
     if (!table_.update(rd, rMax)) return;

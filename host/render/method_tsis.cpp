@@ -8,7 +8,7 @@ TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
 void TsisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    addGlobalPasses(graph, ctx, dipoleProfile(ctx.scene->material, o.rdPart, o.rpBound, o.rpK), "");
+    addGlobalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "");
 }
 
 void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,

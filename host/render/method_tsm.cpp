@@ -102,7 +102,7 @@ void TsmMethod::updateTables(FrameContext& ctx) {
     const double diameter = ctx.maxDistance();
     const double radius =
         filterRadiusMm(ctx.scene->material, ctx.options->tsmRadius, ctx.boundingRadius);
-    const KeyedProfile rd = dipoleProfile(ctx.scene->material, RdPart::Full, 0.0, 0.0);
+    const KeyedProfile rd = radialProfile(ctx.scene->material, ctx.options->profile);
     const std::string key = exactKey(rd.key + " R z", {radius, diameter});
     if (key == tableKey_) return;
     Timer t;

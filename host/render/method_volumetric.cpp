@@ -86,14 +86,16 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     }
     progress.finish();
 
-    // B_eq: what the composite's exit term turns into the volumetric radiance.
+    // B_eq: what the composite's exit term (either) turns into the volumetric radiance.
     const double eta = scene.material.eta;
+    const double exit = exitScale(o.exit, eta);
     std::vector<float> out(count * 4, 0.0f);
     for (size_t k = 0; k < count; ++k) {
         if (!seen[k]) continue;
         const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
-        const double ft =
-            fresnelTransmittance(eta, std::abs(glm::dot(boundary_->shadingNormal(hits[k]), toEye)));
+        const double ft = fresnelTransmittance(
+                              eta, std::abs(glm::dot(boundary_->shadingNormal(hits[k]), toEye))) *
+                          exit;
         const glm::dvec3 b =
             ft > 0 ? sum[k] / static_cast<double>(done) * (M_PI / ft) : glm::dvec3(0.0);
         for (int c = 0; c < 3; ++c) out[k * 4 + static_cast<size_t>(c)] = static_cast<float>(b[c]);

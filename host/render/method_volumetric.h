@@ -33,9 +33,10 @@
 // objects; the semi-infinite slab is exact (volumetric_test.cpp checks it
 // against an independent light tracer and closed forms).
 //
-// Variance falls as 1/√spp (tested). The output: B_eq = π·L / Ft(η, cos θo)
-// with cos θo at the interpolated normal, the radiosity that the renderer's
-// exit term (L = Ft/π·B) turns into the path-traced radiance L; so
+// Variance falls as 1/√spp (tested). The output: B_eq = π·L / (Ft(η, cos θo)·s)
+// with cos θo at the interpolated normal and s the --exit term's scale, the
+// radiosity that the renderer's exit term (L = Ft/π·s·B) turns into the
+// path-traced radiance L; so
 // radiance.exr is the volumetric radiance and `tsis compare` of radiance.exr
 // (or radiosity.exr) against another method measures the whole model's error.
 //

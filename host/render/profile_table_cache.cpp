@@ -11,8 +11,8 @@ bool ProfileTableCache::update(const KeyedProfile& profile, double rMax, const s
     return true;
 }
 
-bool ProfileTableCache::update(const Material& material, double rMax) {
-    return update(dipoleProfile(material, RdPart::Full, 0.0, 0.0), rMax);
+bool ProfileTableCache::update(const Material& material, ProfileModel model, double rMax) {
+    return update(radialProfile(material, model), rMax);
 }
 
 const cl::Buffer& ProfileTableCache::device(const cl::Context& context) {

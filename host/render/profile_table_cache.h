@@ -19,8 +19,8 @@ class ProfileTableCache {
     // names anything else the caller's table depends on. Returns true when it
     // tabulated again.
     bool update(const KeyedProfile& profile, double rMax, const std::string& extra = "");
-    // The full dipole Rd of `material`.
-    bool update(const Material& material, double rMax);
+    // The full Rd of `material` under `model`.
+    bool update(const Material& material, ProfileModel model, double rMax);
     const ProfileTable& table() const { return table_; }
     // The table's float4 entries on the device, uploaded again after update()
     // tabulated again.

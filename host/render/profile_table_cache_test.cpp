@@ -17,8 +17,8 @@ namespace {
 // beyond, Rd is < 1e-9 of its peak for these materials).
 double worstRelativeError(const Material& m, double rMax) {
     ProfileTableCache t;
-    EXPECT_TRUE(t.update(m, rMax));
-    EXPECT_FALSE(t.update(m, rMax)) << "unchanged material: kept";
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, rMax));
+    EXPECT_FALSE(t.update(m, ProfileModel::Dipole, rMax)) << "unchanged material: kept";
     const Dipole d(m);
     double worst = 0;
     for (int i = 0; i <= 200000; ++i) {
@@ -46,23 +46,28 @@ TEST(ProfileTableCache, KeysKeepEveryDigit) {
     // is a new range, and a new table.
     ProfileTableCache t;
     const Material m = presetMaterial("marble");
-    EXPECT_TRUE(t.update(m, 10.0));
-    EXPECT_TRUE(t.update(m, 10.0000001));
-    EXPECT_TRUE(t.update(m, std::nextafter(10.0000001, 11.0)));
-    EXPECT_FALSE(t.update(m, std::nextafter(10.0000001, 11.0)));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 10.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 10.0000001));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, std::nextafter(10.0000001, 11.0)));
+    EXPECT_FALSE(t.update(m, ProfileModel::Dipole, std::nextafter(10.0000001, 11.0)));
     Material n = m;
     n.sigmaA.y = std::nextafter(n.sigmaA.y, 1.0);
-    EXPECT_TRUE(t.update(n, std::nextafter(10.0000001, 11.0)));
+    EXPECT_TRUE(t.update(n, ProfileModel::Dipole, std::nextafter(10.0000001, 11.0)));
 }
 
 TEST(ProfileTableCache, RetabulatesWhenMaterialOrRangeChanges) {
     ProfileTableCache t;
     Material m = presetMaterial("marble");
-    EXPECT_TRUE(t.update(m, 10.0));
-    EXPECT_TRUE(t.update(m, 20.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 10.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 20.0));
     m.sigmaA.x *= 2;
-    EXPECT_TRUE(t.update(m, 20.0));
-    EXPECT_FALSE(t.update(m, 20.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 20.0));
+    EXPECT_FALSE(t.update(m, ProfileModel::Dipole, 20.0));
+    // Another model (--profile) is another table, and back again.
+    EXPECT_TRUE(t.update(m, ProfileModel::BetterDipole, 20.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Pbd, 20.0));
+    EXPECT_FALSE(t.update(m, ProfileModel::Pbd, 20.0));
+    EXPECT_TRUE(t.update(m, ProfileModel::Dipole, 20.0));
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "physics/beam_diffusion.h"
+#include "physics/better_dipole.h"
 #include "physics/dipole.h"
 #include "physics/split.h"
 #include "util/error.h"
@@ -16,22 +18,41 @@ std::string exactKey(const std::string& base, std::initializer_list<double> valu
     return key.str();
 }
 
-KeyedProfile dipoleProfile(const Material& m, RdPart part, double rpBound, double rpK) {
-    const Dipole dipole(m);
-    const std::string rd = exactKey("rd", {m.sigmaSPrime.x, m.sigmaSPrime.y, m.sigmaSPrime.z,
-                                           m.sigmaA.x, m.sigmaA.y, m.sigmaA.z, m.eta});
+KeyedProfile radialProfile(const Material& m, ProfileModel model) {
+    validateMaterial(m);
+    // The classical dipole's key is unchanged from before the models: "rd …".
+    const std::string name = model == ProfileModel::Dipole ? "rd" : profileModelName(model);
     KeyedProfile p;
-    if (part == RdPart::Full) {
-        p.f = [dipole](double r) { return dipole.Rd(r); };
-        p.key = rd;
-        return p;
+    p.key = exactKey(name, {m.sigmaSPrime.x, m.sigmaSPrime.y, m.sigmaSPrime.z, m.sigmaA.x,
+                            m.sigmaA.y, m.sigmaA.z, m.eta});
+    switch (model) {
+        case ProfileModel::BetterDipole: {
+            const BetterDipoleChannel ch[] = {{m.sigmaSPrime.x, m.sigmaA.x, m.eta},
+                                              {m.sigmaSPrime.y, m.sigmaA.y, m.eta},
+                                              {m.sigmaSPrime.z, m.sigmaA.z, m.eta}};
+            p.f = [r = ch[0], g = ch[1], b = ch[2]](double d) {
+                return glm::dvec3(r.Rd(d), g.Rd(d), b.Rd(d));
+            };
+            break;
+        }
+        case ProfileModel::Pbd:
+            p.f = [pbd = BeamDiffusion(m)](double r) { return pbd.Rd(r); };
+            break;
+        default:
+            p.f = [dipole = Dipole(m)](double r) { return dipole.Rd(r); };
     }
-    p.Rp = importanceRadius(dipole, rpBound);
+    return p;
+}
+
+KeyedProfile radialProfile(const Material& m, const RenderOptions& o, RdPart part) {
+    KeyedProfile p = radialProfile(m, o.profile);
+    if (part == RdPart::Full) return p;
+    p.Rp = importanceRadius(Dipole(m), o.rpBound);
     const bool local = part == RdPart::Local;
-    p.key = exactKey(rd + (local ? " local" : " global"), {p.Rp.x, p.Rp.y, p.Rp.z, rpK});
-    p.f = [dipole, Rp = p.Rp, rpK, local](double r) {
+    p.key = exactKey(p.key + (local ? " local" : " global"), {p.Rp.x, p.Rp.y, p.Rp.z, o.rpK});
+    p.f = [rd = p.f, Rp = p.Rp, rpK = o.rpK, local](double r) {
         const glm::dvec3 wl = localWeight(r, Rp, rpK);
-        return dipole.Rd(r) * (local ? wl : 1.0 - wl);
+        return rd(r) * (local ? wl : 1.0 - wl);
     };
     return p;
 }

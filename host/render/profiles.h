@@ -1,6 +1,10 @@
-// The radial profiles the methods integrate: the dipole Rd, or one of the
-// hybrid's parts Rd·Wl, Rd·Wg (physics/split.h, docs/design.md §4), each with a key
-// that changes whenever its values do (methods cache tables under it).
+// The radial profiles the methods integrate: Rd of the --profile model
+// (classical dipole, better dipole, photon beam diffusion), or one of the
+// hybrid's parts Rd·Wl, Rd·Wg (physics/split.h, docs/design.md §4), each with a
+// key that changes whenever its values do (methods cache tables under it, so
+// a model costs only its tabulation). The split radius Rp, tsm's filter
+// radius and the automatic light-map size stay on the classical dipole's
+// closed forms (σtr, mean free path): they only set a scale.
 #pragma once
 
 #include <functional>
@@ -25,7 +29,10 @@ struct KeyedProfile {
 // never merge two values that differ in the last bit of a double.
 std::string exactKey(const std::string& base, std::initializer_list<double> values);
 
-// Rd of `m`, or Rd·Wl / Rd·Wg with Rp = importanceRadius(rpBound) and K = rpK.
-KeyedProfile dipoleProfile(const Material& m, RdPart part, double rpBound, double rpK);
+// Rd of `m` under o.profile, or Rd·Wl / Rd·Wg with Rp = importanceRadius of
+// the classical dipole at o.rpBound and K = o.rpK.
+KeyedProfile radialProfile(const Material& m, const RenderOptions& o, RdPart part);
+// Rd alone of `m` under `model`, and its key.
+KeyedProfile radialProfile(const Material& m, ProfileModel model);
 
 }  // namespace tsis

@@ -133,7 +133,8 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             const RenderTarget& gbuffer = *res.read(gl.gbuffer).target;
             const GlLights& lights = res.read(gl.lights);
             FrameImage& out = res.write(image);
-            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, eta);
+            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, eta,
+                                    static_cast<float>(exitScale(o.exit, eta)));
             out.radiance = compositePass_.radianceTarget().readRGBA(0);
             out.lavg = logAverageLuminance(out.radiance);
             compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, eta, o.key,

@@ -53,7 +53,8 @@ class RasterPasses {
     RasterHandles addPasses(FrameGraph& graph, const FrameContext& ctx, uint64_t meshHash,
                             uint64_t lightingKey, FrameGraphId<LightMapsCl> lightMapsCl,
                             FrameGraphId<CameraBuffersCl> gbufferCl);
-    // Radiance L = Ft/π·B, then tone mapping, the Phong highlight and sRGB.
+    // Radiance L = Ft/π·B (× the exit term's scale), then tone mapping, the Phong highlight and
+    // sRGB.
     FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
                                           const RasterHandles& gl,
                                           FrameGraphId<RadiosityImage> radiosity);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "physics/fresnel.h"
 #include "render/method.h"
 #include "util/error.h"
 
@@ -23,6 +24,38 @@ const char* rdPartName(RdPart part) {
         default:
             return "full";
     }
+}
+
+ProfileModel parseProfileModel(const std::string& name) {
+    if (name == "dipole") return ProfileModel::Dipole;
+    if (name == "better-dipole") return ProfileModel::BetterDipole;
+    if (name == "pbd") return ProfileModel::Pbd;
+    fail("--profile '", name, "': expected dipole, better-dipole or pbd");
+}
+
+const char* profileModelName(ProfileModel model) {
+    switch (model) {
+        case ProfileModel::BetterDipole:
+            return "better-dipole";
+        case ProfileModel::Pbd:
+            return "pbd";
+        default:
+            return "dipole";
+    }
+}
+
+ExitTerm parseExitTerm(const std::string& name) {
+    if (name == "jensen") return ExitTerm::Jensen;
+    if (name == "normalized") return ExitTerm::Normalized;
+    fail("--exit '", name, "': expected jensen or normalized");
+}
+
+const char* exitTermName(ExitTerm exit) {
+    return exit == ExitTerm::Normalized ? "normalized" : "jensen";
+}
+
+double exitScale(ExitTerm exit, double eta) {
+    return exit == ExitTerm::Normalized ? normalizedExitScale(eta) : 1.0;
 }
 
 void validateRenderOptions(const RenderOptions& o) {

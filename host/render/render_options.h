@@ -12,6 +12,24 @@ enum class RdPart { Full, Local, Global };
 RdPart parseRdPart(const std::string& name);
 const char* rdPartName(RdPart part);
 
+// The radial profile Rd every method integrates (render/profiles.h): the
+// classical dipole (Jensen et al. 2001), d'Eon's better dipole
+// (physics/better_dipole.h) or photon beam diffusion (physics/beam_diffusion.h).
+enum class ProfileModel { Dipole, BetterDipole, Pbd };
+// "dipole", "better-dipole" or "pbd"; throws tsis::Error for anything else.
+ProfileModel parseProfileModel(const std::string& name);
+const char* profileModelName(ProfileModel model);
+
+// The composite's exit term, radiance from radiosity: Jensen's Ft(η, cosθo)/π
+// or pbrt's normalised Ft(η, cosθo)/(c·π), whose exitance is B
+// (physics/fresnel.h normalizedExitScale).
+enum class ExitTerm { Jensen, Normalized };
+// "jensen" or "normalized"; throws tsis::Error for anything else.
+ExitTerm parseExitTerm(const std::string& name);
+const char* exitTermName(ExitTerm exit);
+// The exit term's factor over Jensen's Ft/π for relative index eta.
+double exitScale(ExitTerm exit, double eta);
+
 struct RenderOptions {
     std::string method = "pyramid";  // the most accurate per ms measured (README)
     int width = 512, height = 512;
@@ -29,7 +47,11 @@ struct RenderOptions {
     double rpBound = 0.1;
     double rpK = 1.5;
     RdPart rdPart = RdPart::Full;  // tsis/ltsm: Rd, Rd·Wl or Rd·Wg
-    int ltsmRings = 4;             // ltsm / hybrid local part: L rings of C samples + the centre
+    // The thesis' model (bench/tables keeps it); README "Physical accuracy"
+    // measures the others against volumetric transport.
+    ProfileModel profile = ProfileModel::Dipole;
+    ExitTerm exit = ExitTerm::Jensen;
+    int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule

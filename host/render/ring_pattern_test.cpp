@@ -16,7 +16,7 @@ struct Fixture {
     ProfileTable table;
     RadialImportance importance;
     Fixture(const char* material, RdPart part, double rMax)
-        : profile(dipoleProfile(presetMaterial(material), part, 0.1, 1.5)),
+        : profile(radialProfile(presetMaterial(material), RenderOptions{}, part)),
           table(ProfileTable::build(profile.f, rMax)),
           importance(profile.f, rMax) {}
 };

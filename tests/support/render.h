@@ -111,17 +111,20 @@ inline size_t coveredPixels(const FrameResult& f) {
     return n;
 }
 
-// Mean radiosity over covered pixels.
-inline glm::dvec3 meanRadiosity(const FrameResult& f) {
+// Mean of an AOV of `f` (radiosity, radiance) over covered pixels.
+inline glm::dvec3 meanCovered(const FrameResult& f, const ImageF& aov) {
     glm::dvec3 sum(0);
     size_t n = 0;
     for (int y = 0; y < f.height; ++y)
         for (int x = 0; x < f.width; ++x)
             if (f.coverage.at(x, y, 0) > 0) {
-                for (int c = 0; c < 3; ++c) sum[c] += f.radiosity.at(x, y, c);
+                for (int c = 0; c < 3; ++c) sum[c] += aov.at(x, y, c);
                 ++n;
             }
     return n ? sum / static_cast<double>(n) : sum;
+}
+inline glm::dvec3 meanRadiosity(const FrameResult& f) {
+    return meanCovered(f, f.radiosity);
 }
 
 // RMSE over covered pixels and channels of the radiosity, relative to the
