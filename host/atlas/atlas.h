@@ -2,9 +2,11 @@
 // integral over the surface becomes an integral over texture space (docs/design.md §1).
 //
 // Pipeline of buildAtlas (host/atlas/atlas.cpp):
-//   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200);
-//             labels smoothed (edge and vertex-ring majority filters), pieces
-//             under 20 faces merged into a neighbour (charts.cpp);
+//   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200)
+//             up to a cap (AtlasOptions); labels smoothed (edge and vertex-ring
+//             majority filters; under the cap also a strict majority over up to
+//             3 vertex rings, which straightens borders), pieces under 1/10 of
+//             a proxy's faces merged into a neighbour (charts.cpp);
 //   charts    each connected piece made a topological disk (Euler characteristic
 //             1, one border loop, no pinched vertex), else split in two at the
 //             geodesic Voronoi boundary of two far faces (recursively);

@@ -185,6 +185,51 @@ TEST(Atlas, ElongatedChartsAreCutWithUVsKept) {
         << "a face in two pieces";
 }
 
+// Edges between faces of different labels.
+size_t borderEdges(const atlas::Adjacency& adj, const std::vector<int>& labels) {
+    size_t n = 0;
+    for (size_t f = 0; f < labels.size(); ++f)
+        for (int g : adj.across[f]) n += g >= 0 && labels[g] != labels[f];
+    return n / 2;
+}
+
+// Two labels on a tube, their border a square wave 8 rings high and 4 segments
+// wide per tooth: the 1-ring filters keep the teeth, a 3-ring border filter
+// flattens them and keeps both labels about as large.
+TEST(Atlas, BorderFilterStraightensTeeth) {
+    const int rings = 40, segments = 64;
+    const Mesh tube = test::tubeMesh(rings, segments, 4.0);
+    const atlas::Adjacency adj = atlas::buildAdjacency(tube);
+    std::vector<int> teeth(tube.triangles.size());
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const int border = rings / 2 + ((s / 4) % 2 ? 4 : -4);
+            teeth[size_t(2 * (r * segments + s))] = teeth[size_t(2 * (r * segments + s) + 1)] =
+                r < border ? 0 : 1;
+        }
+    std::vector<int> kept = teeth, straight = teeth;
+    atlas::smoothLabels(tube, adj, kept, 20);
+    atlas::smoothLabels(tube, adj, straight, 20, 3);
+    const size_t before = borderEdges(adj, teeth);
+    EXPECT_GE(borderEdges(adj, kept), before * 9 / 10);
+    // A border straight around the tube crosses 2·segments triangle edges.
+    EXPECT_EQ(borderEdges(adj, straight), size_t(2 * segments));
+    const size_t zeros = size_t(std::count(straight.begin(), straight.end(), 0));
+    EXPECT_NEAR(double(zeros) / double(straight.size()), 0.5, 0.1);
+}
+
+// Many triangles under a small proxy cap (charts of ~2000 faces, the border
+// filter at radius 3), as a big scan is built.
+TEST(Atlas, FineMeshUnderTheProxyCap) {
+    AtlasOptions opt;
+    opt.maxProxies = 20;
+    const Mesh sphere = test::sphereMesh(100, 200);
+    ASSERT_GT(sphere.triangles.size() / size_t(opt.trianglesPerProxy), size_t(opt.maxProxies));
+    const AtlasStats st = checkAtlas(sphere, opt);
+    EXPECT_GE(st.coverage, 0.65);
+    EXPECT_LE(st.rWstd, 0.05);
+}
+
 TEST(Atlas, ClosedSphereAndTube) {
     AtlasOptions opt;
     opt.resolution = 512;

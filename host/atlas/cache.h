@@ -22,7 +22,7 @@
 namespace tsis::atlas {
 
 // Bump when the builder's output changes for the same input.
-constexpr int kAtlasVersion = 4;
+constexpr int kAtlasVersion = 5;
 
 // Under cacheDirectory() (util/cache_dir.h): "atlas".
 std::optional<std::filesystem::path> atlasCacheDirectory();

@@ -72,9 +72,13 @@ void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect);
 
 // Label post-processing: majority filters over edge neighbours and over the
 // faces around a face's vertices (which removes the one- and two-triangle-wide
-// spikes VSA leaves on fine meshes), then connected pieces smaller than
-// minFaces merged into the neighbour they share most edges with.
-void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces);
+// spikes VSA leaves on fine meshes); with borderRadius > 0, a strict-majority
+// filter over the faces within that many vertex rings of each border face
+// (which straightens borders jagged over several triangles); then connected
+// pieces smaller than minFaces merged into the neighbour they share most
+// edges with.
+void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces,
+                  int borderRadius = 0);
 
 // Area-weighted RMS of log(r) of a parameterised chart (after scaling UVs to
 // the chart's 3D area); +inf when a triangle is flipped or degenerate in UV.

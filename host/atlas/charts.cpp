@@ -175,7 +175,69 @@ Adjacency buildAdjacency(const Mesh& mesh) {
     return adj;
 }
 
-void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces) {
+namespace {
+
+// Strict-majority filter over the faces within `radius` vertex rings of each
+// border face (start/ring: the faces around each vertex), in place, until
+// nothing changes (at most 4·radius passes). After the first pass only faces
+// near a change are looked at again: the others would decide as before.
+void straightenBorders(const Mesh& mesh, const std::vector<uint32_t>& start,
+                       const std::vector<uint32_t>& ring, std::vector<int>& labels, int radius) {
+    const size_t n = labels.size();
+    std::vector<uint32_t> faceSeen(n, 0), vertexSeen(mesh.positions.size(), 0);
+    uint32_t stamp = 0;
+    std::vector<uint32_t> front, next, near;
+    std::unordered_map<int, int> votes;
+    std::vector<char> dirty(n, 1);
+    for (int pass = 0; pass < 4 * radius; ++pass) {
+        size_t changed = 0;
+        for (size_t f = 0; f < n; ++f) {
+            if (labels[f] < 0 || !dirty[f]) continue;
+            dirty[f] = 0;
+            // Faces within `radius` rings: breadth first over shared vertices.
+            ++stamp;
+            faceSeen[f] = stamp;
+            front.assign(1, uint32_t(f));
+            near.clear();
+            bool border = false;
+            for (int r = 0; r < radius && (r == 0 || border); ++r) {
+                next.clear();
+                for (uint32_t g : front)
+                    for (int k = 0; k < 3; ++k) {
+                        const uint32_t v = mesh.triangles[g][k];
+                        if (vertexSeen[v] == stamp) continue;
+                        vertexSeen[v] = stamp;
+                        for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                            const uint32_t h = ring[i];
+                            if (faceSeen[h] == stamp || labels[h] < 0) continue;
+                            faceSeen[h] = stamp;
+                            border |= labels[h] != labels[f];
+                            next.push_back(h);
+                            near.push_back(h);
+                        }
+                    }
+                front.swap(next);
+            }
+            if (!border) continue;  // inside a label: no majority against it
+            votes.clear();
+            for (uint32_t h : near) ++votes[labels[h]];
+            const int total = int(near.size());
+            for (auto [l, c] : votes)
+                if (l != labels[f] && 2 * c > total) {  // so also c > own
+                    labels[f] = l;
+                    ++changed;
+                    for (uint32_t h : near) dirty[h] = 1;
+                    break;
+                }
+        }
+        if (changed == 0) break;
+    }
+}
+
+}  // namespace
+
+void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labels, int minFaces,
+                  int borderRadius) {
     const size_t n = labels.size();
     // Edge rule: two or three neighbours agreeing on another label win.
     std::vector<int> next = labels;
@@ -256,6 +318,7 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
         }
         if (changed == 0) break;
     }
+    if (borderRadius > 0) straightenBorders(mesh, start, ring, labels, borderRadius);
 
     // Small connected pieces join the neighbouring label they share most edges with.
     for (int round = 0; round < 3; ++round) {
