@@ -51,7 +51,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         [this, &graph, &ctx, lighting, eta, lightMapsCl, h](FrameGraph::Resources& res) {
             // Flux and position maps only when a light-view method reads them.
             const bool maps = graph.isRead(lightMapsCl);
-            if (lightViewKey_ != lighting || !(lightMapsMade_ || !maps)) {
+            if (lightViewKey_ != lighting || (maps && !lightMapsMade_)) {
                 lights_.clear();
                 for (const Light& l : ctx.scene->lights)
                     lights_.push_back(

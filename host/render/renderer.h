@@ -3,12 +3,10 @@
 // material or size re-renders without re-creating anything).
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "cl/cl_runtime.h"
