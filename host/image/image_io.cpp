@@ -1,10 +1,16 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "util/error.h"
 
@@ -12,13 +18,81 @@ namespace tsis {
 
 namespace {
 
+// OpenImageIO's output file with every write checked. OIIO 2.4's PNG writer
+// ignores a failed fwrite (a full disk gives a truncated file and success); this
+// proxy keeps the first error, which writeWith() then reports.
+class CheckedFile : public OIIO::Filesystem::IOProxy {
+  public:
+    explicit CheckedFile(const std::string& path) : IOProxy(path, Write) {
+        fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        if (fd_ < 0) {
+            error_ = std::strerror(errno);
+            m_mode = Closed;
+        }
+    }
+    ~CheckedFile() override { close(); }
+    const char* proxytype() const override { return "tsis-checked"; }
+    void close() override {
+        if (fd_ >= 0 && ::close(fd_) != 0 && error_.empty()) error_ = std::strerror(errno);
+        fd_ = -1;
+        m_mode = Closed;
+    }
+    size_t write(const void* buf, size_t size) override {
+        const size_t n = pwrite(buf, size, m_pos);
+        m_pos += static_cast<int64_t>(n);
+        return n;
+    }
+    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+        size_t done = 0;
+        while (done < size && error_.empty()) {
+            const ssize_t w = ::pwrite(fd_, static_cast<const char*>(buf) + done, size - done,
+                                       static_cast<off_t>(offset + done));
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0)
+                error_ = w < 0 ? std::strerror(errno) : "nothing written";
+            else
+                done += static_cast<size_t>(w);
+        }
+        end_ = std::max(end_, offset + static_cast<int64_t>(done));
+        return done;
+    }
+    size_t size() const override { return static_cast<size_t>(end_); }
+    // The first failure ("" when none).
+    const std::string& failure() const { return error_; }
+
+  private:
+    int fd_ = -1;
+    int64_t end_ = 0;
+    std::string error_;
+};
+
+// The whole image read back: what the writer left, for formats written without the proxy.
+bool readsBack(const std::string& path, const OIIO::ImageSpec& spec) {
+    auto in = OIIO::ImageInput::open(path);
+    std::vector<unsigned char> data(spec.image_bytes());
+    const bool ok = in && in->spec().width == spec.width && in->spec().height == spec.height &&
+                    in->read_image(0, 0, 0, spec.nchannels, spec.format, data.data());
+    OIIO::geterror();
+    return ok;
+}
+
 void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void* data) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) fail("cannot write '", path, "': ", OIIO::geterror());
-    if (!out->open(path, spec)) fail("cannot write '", path, "': ", out->geterror());
-    bool ok = out->write_image(spec.format, data);
+    std::optional<CheckedFile> file;
+    if (out->supports("ioproxy")) {
+        file.emplace(path);
+        if (!file->failure().empty()) fail("cannot write '", path, "': ", file->failure());
+        if (!out->set_ioproxy(&*file)) fail("cannot write '", path, "': ", out->geterror());
+    }
+    bool ok = out->open(path, spec) && out->write_image(spec.format, data);
     ok = out->close() && ok;
+    if (file) file->close();
+    if (file && !file->failure().empty()) fail("cannot write '", path, "': ", file->failure());
     if (!ok) fail("cannot write '", path, "': ", out->geterror());
+    // A writer without the proxy may also have lost a write: the file must read back whole.
+    if (!file && !readsBack(path, spec))
+        fail("cannot write '", path, "': the file written is incomplete (is the disk full?)");
 }
 
 }  // namespace
