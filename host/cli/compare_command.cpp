@@ -64,8 +64,7 @@ int runCompare(const std::vector<std::string>& argv) {
     if (heatPath) {
         if (*heatPath == "-") fail("--heatmap '-': standard output is for the metrics");
         outputs.add(*heatPath, ".png");
-        outputs.write(*heatPath,
-                      [](const std::filesystem::path& f) { requireImageFormat(f.string()); });
+        requireImageFormat(outputs, *heatPath);
     }
     const ImageF a = readInput(pathA, "image"), b = readInput(pathB, "reference image");
     ImageF mask;

@@ -11,6 +11,8 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
+#include <set>
+#include <sstream>
 
 #include "util/error.h"
 
@@ -97,12 +99,37 @@ void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void*
 
 }  // namespace
 
-void requireImageFormat(const std::string& path) {
-    if (OIIO::ImageOutput::create(path)) return;
+std::string writableExtensions() {
+    // "format:ext,ext;format:ext" of every format; those OpenImageIO writes kept.
+    std::set<std::string> writers;
+    std::stringstream formats(OIIO::get_string_attribute("output_format_list"));
+    for (std::string f; std::getline(formats, f, ',');) writers.insert(f);
+    std::vector<std::string> exts;
+    std::stringstream list(OIIO::get_string_attribute("extension_list"));
+    for (std::string entry; std::getline(list, entry, ';');) {
+        const size_t colon = entry.find(':');
+        if (colon == std::string::npos || !writers.count(entry.substr(0, colon))) continue;
+        std::stringstream e(entry.substr(colon + 1));
+        for (std::string x; std::getline(e, x, ',');) exts.push_back("." + x);
+    }
+    std::sort(exts.begin(), exts.end());
+    // The usual ones first.
+    std::string text = ".png, .exr";
+    for (const std::string& x : exts)
+        if (x != ".png" && x != ".exr") text += ", " + x;
+    return text;
+}
+
+void requireImageFormat(const OutputSet& outputs, const std::string& target) {
+    const std::string ext = outputs.extension(target);
+    if (ext.empty())
+        fail("cannot write '", target,
+             "': the name has no extension to choose the image format by (one of ",
+             writableExtensions(), ")");
+    if (OIIO::ImageOutput::create("image" + ext)) return;
     OIIO::geterror();  // clears OpenImageIO's message; ours says it for a user
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext.empty()) fail("cannot write '", path, "': no extension to choose an image format by");
-    fail("cannot write '", path, "': no image format for the extension '", ext, "'");
+    fail("cannot write '", target, "': no image format for the extension '", ext, "' (one of ",
+         writableExtensions(), ")");
 }
 
 void writeImageF(const std::string& path, const ImageF& image,

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "util/error.h"
+#include "util/temporaries.h"
 
 namespace tsis {
 
@@ -29,19 +30,25 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
     if (!dir.empty() && !fs::is_directory(dir))
         fail("cannot write '", target.string(), "': directory '", dir.string(), "' does not exist");
     fs::path tmp = temporaryPathFor(target);
+    registerTemporary(tmp, TemporaryKind::File);  // a signal removes it
+    auto removeTmp = [&] {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        unregisterTemporary(tmp);
+    };
     try {
         write(tmp);
     } catch (...) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
+        removeTmp();
         throw;
     }
+    const auto hold = holdTemporaries();
     if (::rename(tmp.c_str(), target.c_str()) != 0) {
         const std::string why = std::strerror(errno);  // before the cleanup overwrites errno
-        std::error_code ec;
-        fs::remove(tmp, ec);
+        removeTmp();
         fail("cannot write '", target.string(), "': ", why);
     }
+    unregisterTemporary(tmp);
 }
 
 void writeText(const fs::path& file, const std::string& text) {
