@@ -16,6 +16,7 @@
 #include "mesh/mesh_io.h"
 #include "physics/report.h"
 #include "render/aov_files.h"
+#include "render/frame_memory.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/output_set.h"
@@ -87,6 +88,7 @@ int runRender(const std::vector<std::string>& argv) {
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
     options.progressive = args.flag("progressive");
+    requireFrameMemory(options);
     const int frames = args.getInt("frames", 1, 1, 100000);
     const std::string output = args.getString("output", "tsis.png");
     const auto statsPath = args.value("stats");
