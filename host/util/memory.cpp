@@ -44,9 +44,20 @@ std::optional<uint64_t> availableMemoryBytes() {
         const uint64_t left = *limit > *used ? *limit - *used : 0;
         if (!avail || left < *avail) avail = left;
     };
-    lower(numberIn("/sys/fs/cgroup/memory.max"), numberIn("/sys/fs/cgroup/memory.current"));
-    lower(numberIn("/sys/fs/cgroup/memory/memory.limit_in_bytes"),
-          numberIn("/sys/fs/cgroup/memory/memory.usage_in_bytes"));
+    // This process' memory cgroup: "0::/PATH" (v2) or "N:memory:/PATH" (v1).
+    std::ifstream groups("/proc/self/cgroup");
+    for (std::string line; std::getline(groups, line);) {
+        std::string dir;
+        if (line.rfind("0::", 0) == 0) {
+            dir = "/sys/fs/cgroup" + line.substr(3);
+            lower(numberIn((dir + "/memory.max").c_str()),
+                  numberIn((dir + "/memory.current").c_str()));
+        } else if (const size_t at = line.find(":memory:"); at != std::string::npos) {
+            dir = "/sys/fs/cgroup/memory" + line.substr(at + 8);
+            lower(numberIn((dir + "/memory.limit_in_bytes").c_str()),
+                  numberIn((dir + "/memory.usage_in_bytes").c_str()));
+        }
+    }
     if (const char* env = std::getenv("TSIS_MEMORY_LIMIT_MB"); env && *env) {
         char* end = nullptr;
         const double mb = std::strtod(env, &end);

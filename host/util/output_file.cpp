@@ -36,13 +36,13 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
         fs::remove(tmp, ec);
         unregisterTemporary(tmp);
     };
+    const auto hold = holdTemporaries();  // a signal's cleanup waits for the write and rename
     try {
         write(tmp);
     } catch (...) {
         removeTmp();
         throw;
     }
-    const auto hold = holdTemporaries();
     if (::rename(tmp.c_str(), target.c_str()) != 0) {
         const std::string why = std::strerror(errno);  // before the cleanup overwrites errno
         removeTmp();

@@ -54,8 +54,14 @@ std::optional<fs::path> reserveTemporary(const fs::path& dir, const std::string&
 fs::path keepOld(const fs::path& dest) {
     const fs::path dir = dest.parent_path().empty() ? fs::path(".") : dest.parent_path();
     for (int i = 0; i < 100; ++i) {
-        const fs::path old = dir / ("." + dest.stem().string() + "." + temporaryMarker() + "old" +
-                                    std::to_string(i) + dest.extension().string());
+        std::string name = ".";
+        name += dest.stem().string();
+        name += '.';
+        name += temporaryMarker();
+        name += "old";
+        name += std::to_string(i);
+        name += dest.extension().string();
+        const fs::path old = dir / name;
         if (::link(dest.c_str(), old.c_str()) == 0) {
             registerTemporary(old, TemporaryKind::File);
             return old;
@@ -258,6 +264,9 @@ std::string OutputSet::extension(const std::string& target) const {
 void OutputSet::write(const std::string& target,
                       const std::function<void(const fs::path& file)>& write) {
     const Entry& e = find(target);
+    // A signal's cleanup waits for the write: else the writer could make the
+    // file again (or one in a staging folder) after the cleanup removed it.
+    const auto hold = holdTemporaries();
     try {
         write(e.temp);
     } catch (const Error& err) {

@@ -26,7 +26,9 @@ void registerTemporary(const std::filesystem::path& path, TemporaryKind kind);
 // `path` was renamed into place, kept or removed: a signal leaves it alone.
 void unregisterTemporary(const std::filesystem::path& path);
 
-// While held, a signal's cleanup waits (a commit's renames finish first).
+// While held, a signal's cleanup waits: a write into a temporary or a
+// commit's renames finish first (a writer could otherwise make a file again
+// after the cleanup removed it).
 std::unique_lock<std::recursive_mutex> holdTemporaries();
 
 // Removes what registerTemporary() holds now (the signal path, and tests).
