@@ -103,7 +103,8 @@ std::string writableExtensions() {
     // "format:ext,ext;format:ext" of every format; those OpenImageIO writes kept.
     std::set<std::string> writers;
     std::stringstream formats(OIIO::get_string_attribute("output_format_list"));
-    for (std::string f; std::getline(formats, f, ',');) writers.insert(f);
+    for (std::string f; std::getline(formats, f, ',');)
+        if (f != "null" && f != "term") writers.insert(f);  // no file: a sink, the terminal
     std::vector<std::string> exts;
     std::stringstream list(OIIO::get_string_attribute("extension_list"));
     for (std::string entry; std::getline(list, entry, ';');) {

@@ -196,6 +196,8 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
     if (!stageIn.empty()) {
         e.ext = e.dest.extension().string();
         e.temp = stageIn / e.dest.filename();
+        // Not inside a signal's cleanup of the staging folder (it would stay).
+        const auto hold = holdTemporaries();
         const int fd = ::open(e.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd < 0) cannotWrite(target, std::strerror(errno));
         ::close(fd);
