@@ -88,7 +88,7 @@ TEST_F(CompareCli, BadInputsAreOneLineErrors) {
         {dir.file("a.exr"), "two images"},
         {dir.file("a.exr") + " " + dir.file("b.exr") + " --bogus", "bogus"},
         {dir.file("a.exr") + " " + dir.file("b.exr") + " --heatmap " + dir.file("heat"),
-         "'" + dir.file("heat") + "': the name has no extension to choose the image format by"},
+         dir.file("heat") + "': the name has no extension to choose the image format by"},
     };
     for (const Case& c : cases) {
         const RunResult r = runTsis("compare " + c.args);

@@ -28,10 +28,10 @@ TEST(Temporaries, RegisteredOnesAreRemovedInOrder) {
     fs::create_directories(deeper);
     registerTemporary(made, TemporaryKind::Folder);
     registerTemporary(deeper, TemporaryKind::Folder);
-    const fs::path file = deeper / (".r." + temporaryMarker() + "abc.exr");
+    const fs::path file = deeper / (std::string(".r.") + temporaryMarker() + "abc.exr");
     std::ofstream(file) << "x";
     registerTemporary(file, TemporaryKind::File);
-    const fs::path stage = d.path / ("." + temporaryMarker() + "xyz");
+    const fs::path stage = d.path / (std::string(".") + temporaryMarker() + "xyz");
     fs::create_directory(stage);
     std::ofstream(stage / "frame_0000.png") << "x";
     registerTemporary(stage, TemporaryKind::Tree);
