@@ -31,7 +31,10 @@ TEST(Temporaries, RegisteredOnesAreRemovedInOrder) {
     const fs::path file = deeper / (std::string(".r.") + temporaryMarker() + "abc.exr");
     std::ofstream(file) << "x";
     registerTemporary(file, TemporaryKind::File);
-    const fs::path stage = d.path / (std::string(".") + temporaryMarker() + "xyz");
+    std::string stageName = ".";
+    stageName += temporaryMarker();
+    stageName += "xyz";
+    const fs::path stage = d.path / stageName;
     fs::create_directory(stage);
     std::ofstream(stage / "frame_0000.png") << "x";
     registerTemporary(stage, TemporaryKind::Tree);
