@@ -6,25 +6,20 @@
 
 #include <fstream>
 
+#include "support/scratch_dir.h"
+
 namespace tsis {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string t = (fs::temp_directory_path() / "tsis-temporaries-XXXXXX").string();
-        path = ::mkdtemp(t.data());
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using TempDir = test::ScratchDir;
 
 // What a signal's cleanup does: files, staging trees, then the folders made
 // for them (deepest first, so each is empty by its turn); unregistered ones stay.
 TEST(Temporaries, RegisteredOnesAreRemovedInOrder) {
     TempDir d;
-    const fs::path made = d.path / "aov", deeper = made / "deep";
+    const fs::path made = d.path() / "aov", deeper = made / "deep";
     fs::create_directories(deeper);
     registerTemporary(made, TemporaryKind::Folder);
     registerTemporary(deeper, TemporaryKind::Folder);
@@ -34,11 +29,11 @@ TEST(Temporaries, RegisteredOnesAreRemovedInOrder) {
     std::string stageName = ".";
     stageName += temporaryMarker();
     stageName += "xyz";
-    const fs::path stage = d.path / stageName;
+    const fs::path stage = d.path() / stageName;
     fs::create_directory(stage);
     std::ofstream(stage / "frame_0000.png") << "x";
     registerTemporary(stage, TemporaryKind::Tree);
-    const fs::path renamed = d.path / "out.png";
+    const fs::path renamed = d.path() / "out.png";
     std::ofstream(renamed) << "x";
     registerTemporary(renamed, TemporaryKind::File);
     unregisterTemporary(renamed);  // renamed into place: it stays
@@ -53,7 +48,7 @@ TEST(Temporaries, RegisteredOnesAreRemovedInOrder) {
 
 TEST(Temporaries, AFolderMadeThatHoldsOtherFilesStays) {
     TempDir d;
-    const fs::path made = d.path / "aov";
+    const fs::path made = d.path() / "aov";
     fs::create_directory(made);
     std::ofstream(made / "user.txt") << "x";
     registerTemporary(made, TemporaryKind::Folder);
@@ -73,17 +68,17 @@ TEST(Temporaries, StaleOnesAreThoseOfEndedProcesses) {
                                 "a.tsis-tmp-" + dead + "-x.png", ".a.tsis-tmp-Ab12Cd.png",
                                 ".a.tsis-tmp-" + dead + "x.png",
                                 ".c.tsis-tmp-" + dead + "-dir"};  // a folder not named as staging
-    for (const std::string& n : gone) std::ofstream(d.path / n) << "x";
-    fs::remove(d.path / gone[2]);
-    fs::create_directory(d.path / gone[2]);
-    std::ofstream(d.path / gone[2] / "frame_0000.png") << "x";
-    for (const std::string& n : kept) std::ofstream(d.path / n) << "x";
-    fs::remove(d.path / kept[4]);
-    fs::create_directory(d.path / kept[4]);
+    for (const std::string& n : gone) std::ofstream(d.path() / n) << "x";
+    fs::remove(d.path() / gone[2]);
+    fs::create_directory(d.path() / gone[2]);
+    std::ofstream(d.path() / gone[2] / "frame_0000.png") << "x";
+    for (const std::string& n : kept) std::ofstream(d.path() / n) << "x";
+    fs::remove(d.path() / kept[4]);
+    fs::create_directory(d.path() / kept[4]);
 
-    removeStaleTemporaries(d.path);
-    for (const std::string& n : gone) EXPECT_FALSE(fs::exists(d.path / n)) << n;
-    for (const std::string& n : kept) EXPECT_TRUE(fs::exists(d.path / n)) << n;
+    removeStaleTemporaries(d.path());
+    for (const std::string& n : gone) EXPECT_FALSE(fs::exists(d.path() / n)) << n;
+    for (const std::string& n : kept) EXPECT_TRUE(fs::exists(d.path() / n)) << n;
 }
 
 }  // namespace
