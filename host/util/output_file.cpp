@@ -29,6 +29,7 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
     fs::path dir = target.parent_path();
     if (!dir.empty() && !fs::is_directory(dir))
         fail("cannot write '", target.string(), "': directory '", dir.string(), "' does not exist");
+    removeStaleTemporaries(dir);  // a killed run's, in a cache folder
     fs::path tmp = temporaryPathFor(target);
     registerTemporary(tmp, TemporaryKind::File);  // a signal removes it
     auto removeTmp = [&] {

@@ -291,8 +291,6 @@ void OutputSet::discard(const std::string& target) {
 void OutputSet::commit() {
     std::fflush(stdout);
     std::cout.flush();
-    // A signal's cleanup waits until every output is in place (or none is).
-    const auto hold = holdTemporaries();
     // Devices and standard output first: they are the ones that fail late (a
     // full disk behind a device, a closed pipe), and they cannot be taken back;
     // renames in a checked folder rarely fail, and are undone when one does.
@@ -308,10 +306,14 @@ void OutputSet::commit() {
     };
     std::vector<Renamed> renamed;
     std::vector<std::string> written;  // what stays written if a later output fails
+    // A signal's cleanup waits while the renames run, until every file is in
+    // place (or none is); not while a device or a pipe, which may block, is written.
+    std::unique_lock<std::recursive_mutex> hold;
     for (const Entry* ep : order) {
         const Entry& e = *ep;
         std::string error;
         if (e.kind == Kind::Rename) {
+            if (!hold.owns_lock()) hold = holdTemporaries();
             std::error_code ec;
             const bool replaces = fs::is_regular_file(e.dest, ec);
             const fs::path old = replaces ? keepOld(e.dest) : fs::path();
