@@ -77,8 +77,8 @@ void removeFile(const fs::path& file) {
     unregisterTemporary(file);
 }
 
-// " ('a', 'b' were written; …)" for a failed commit that could not take back
-// everything; "" when nothing stays written.
+// "; written all the same: 'a', 'b'; no other output was written" for a
+// failed commit that could not take everything back; "" when nothing stays.
 std::string writtenNote(const std::vector<std::string>& written) {
     if (written.empty()) return "";
     std::string note = "; written all the same: ";
