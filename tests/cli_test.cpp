@@ -139,6 +139,18 @@ const BadInput kBadInputs[] = {
     {"UnwritableOutputDir", "render --mesh @DIR@/nope.off -o /sys/x.png", "",
      "cannot write '/sys/x.png'"},
     {"UnknownImageFormat", "render --mesh @DIR@/nope.off -o @DIR@/x.xyz", "", "no image format"},
+    // Issue 22 item 8: the missing extension named with the accepted ones (it
+    // was "no image format for the extension '.tsis-tmp-…'", the temporary's).
+    {"ImageWithoutExtension", "render --mesh @DIR@/nope.off -o @DIR@/image", "",
+     "the name has no extension to choose the image format by (one of .png, .exr, "},
+    {"BadProgressInterval", "render --mesh @DIR@/nope.off", "TSIS_PROGRESS_INTERVAL=5s",
+     "TSIS_PROGRESS_INTERVAL='5s' is not a number of seconds"},
+    // 8192² takes about 8.7 GB: refused before the mesh when less is available.
+    {"FrameLargerThanMemory", "render --width 8192 --height 8192 --mesh @DIR@/nope.off",
+     "TSIS_MEMORY_LIMIT_MB=2000", "a 8192×8192 frame needs about "},
+    {"AnimationLargerThanMemory",
+     "animate --width 8192 --height 8192 --mesh @DIR@/nope.off -o @DIR@/anim",
+     "TSIS_MEMORY_LIMIT_MB=2000", "of memory but 2.0 GB is available"},
     {"StatsOnFullDevice", "render " + kFast + "--stats /dev/full", "",
      "cannot write '/dev/full': No space left on device"},
 };

@@ -88,7 +88,8 @@ Json atlasStatsJson(const AtlasStats& stats);
 
 // A (2·res)×res PNG: charts in colour on the left, a heat map of log2 r on the
 // right (blue r < 1, white r = 1, red r > 1; saturated at r = 2^∓½ ≈ 0.71 and 1.41).
-// Row 0 is v = 1. Written atomically.
+// Row 0 is v = 1. Writes `path` itself: `tsis atlas -o` gives it its output's
+// temporary (util/output_set.h), which is renamed into place with the others.
 void writeAtlasPng(const std::string& path, const Mesh& meshWithUVs, int resolution);
 
 }  // namespace tsis

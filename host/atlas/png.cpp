@@ -8,7 +8,6 @@
 #include "atlas/chart.h"
 #include "image/image_io.h"
 #include "util/error.h"
-#include "util/output_file.h"
 
 namespace tsis {
 
@@ -73,9 +72,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
         put(resolution + x, y, r > 0 ? diverging(2.0 * std::log2(r)) : glm::vec3(0, 1, 0));
     });
 
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        writeImage8(tmp.string(), W, H, 3, pixels);
-    });
+    writeImage8(path, W, H, 3, pixels);
 }
 
 }  // namespace tsis

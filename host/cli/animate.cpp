@@ -25,6 +25,7 @@
 #include "cli/scene_options.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
+#include "render/frame_memory.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/memory.h"
@@ -105,6 +106,7 @@ int runAnimate(const std::vector<std::string>& argv) {
     }
     Scene base = parseScene(args);
     const RenderOptions options = renderOptionsFromArgs(args);
+    requireFrameMemory(options);
     const auto statsPath = args.value("stats");
 
     // The frames are staged in a hidden folder inside DIR (ffmpeg reads them

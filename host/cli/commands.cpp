@@ -16,9 +16,11 @@
 #include "mesh/mesh_io.h"
 #include "physics/report.h"
 #include "render/aov_files.h"
+#include "render/frame_memory.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/output_set.h"
+#include "util/progress.h"
 
 namespace tsis {
 
@@ -67,9 +69,8 @@ std::vector<OptionSpec> renderSpecs() {
 
 // An image output: its place takes a file and its format is known ("-": a PNG on stdout).
 void addImageOutput(OutputSet& outputs, const std::string& path) {
-    outputs.add(path, ".png");
-    // The temporary has the extension the image is written by ("-", /dev/null: PNG).
-    outputs.write(path, [](const std::filesystem::path& f) { requireImageFormat(f.string()); });
+    outputs.add(path, ".png");  // "-", /dev/null: a PNG
+    requireImageFormat(outputs, path);
 }
 
 int runRender(const std::vector<std::string>& argv) {
@@ -87,6 +88,7 @@ int runRender(const std::vector<std::string>& argv) {
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
     options.progressive = args.flag("progressive");
+    requireFrameMemory(options);
     const int frames = args.getInt("frames", 1, 1, 100000);
     const std::string output = args.getString("output", "tsis.png");
     const auto statsPath = args.value("stats");
@@ -217,6 +219,7 @@ const Command kCommands[] = {
 int runCli(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
+        Progress::checkEnvironment();
         if (args.empty()) return runRender({});
         const std::string cmd = args[0];
         if (cmd == "help" || cmd == "--help" || cmd == "-h") {

@@ -23,6 +23,9 @@ the pixels of --mask (> 0.5; all pixels without it), every channel:
   max_abs       largest |A − B|
   psnr          20 log10(max of B / rmse), dB
   pixels        pixels compared
+A pixel with a NaN or ∞ (in any channel, of A or of B) is left out of the
+metrics and counted (nonfinite_a, nonfinite_b); any such pixel fails the
+comparison (exit 1) unless --allow-nonfinite is given.
 )";
 
 ImageF readInput(const std::string& path, const char* what) {
@@ -41,6 +44,8 @@ int runCompare(const std::vector<std::string>& argv) {
          "X  relative error at the top of the heat map's scale (default: a round value ≥ the 99th "
          "percentile)"},
         {"json", false, false, "print the metrics as JSON"},
+        {"allow-nonfinite", false, false,
+         "pixels with NaN or ∞ do not fail the comparison (they stay out of the metrics)"},
     };
     bool help = false;
     for (const std::string& a : argv) help = help || a == "--help" || a == "-h";
@@ -59,8 +64,7 @@ int runCompare(const std::vector<std::string>& argv) {
     if (heatPath) {
         if (*heatPath == "-") fail("--heatmap '-': standard output is for the metrics");
         outputs.add(*heatPath, ".png");
-        outputs.write(*heatPath,
-                      [](const std::filesystem::path& f) { requireImageFormat(f.string()); });
+        requireImageFormat(outputs, *heatPath);
     }
     const ImageF a = readInput(pathA, "image"), b = readInput(pathB, "reference image");
     ImageF mask;
@@ -70,6 +74,12 @@ int runCompare(const std::vector<std::string>& argv) {
         compareImages(a, b, maskPath ? &mask : nullptr, pathA, pathB, maskPath.value_or(""));
     std::cout << (args.flag("json") ? dumpJson(compareJson(cmp.metrics)) + "\n"
                                     : compareTable(cmp.metrics));
+    const CompareMetrics& m = cmp.metrics;
+    if (m.nonfiniteA + m.nonfiniteB > 0 && !args.flag("allow-nonfinite")) {
+        std::cout.flush();
+        fail("pixels with NaN or ∞: ", m.nonfiniteA, " in ", pathA, ", ", m.nonfiniteB, " in ",
+             pathB, " (left out of the metrics; --allow-nonfinite accepts them)");
+    }
     if (heatPath) {
         const double scale = heatMax > 0 ? heatMax : heatmapScale(cmp.relError);
         const Heatmap hm = renderHeatmap(cmp.relError, scale);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "util/error.h"
 
@@ -28,7 +29,24 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
              b.width, "×", b.height);
     const size_t pixels = static_cast<size_t>(b.width) * b.height;
     const int ch = b.channels;
-    auto selected = [&](size_t p) { return !mask || mask->pixels[p * mask->channels] > 0.5f; };
+    auto finite = [&](const ImageF& i, size_t p) {
+        for (int c = 0; c < i.channels; ++c)
+            if (!std::isfinite(i.pixels[p * i.channels + c])) return false;
+        return true;
+    };
+    // Selected and finite in both; the others selected are counted apart.
+    std::vector<char> use(pixels, 0);
+    long long selectedCount = 0, nonfiniteA = 0, nonfiniteB = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        if (mask && !(mask->pixels[p * mask->channels] > 0.5f)) continue;
+        ++selectedCount;
+        const bool fa = finite(a, p), fb = finite(b, p);
+        nonfiniteA += !fa;
+        nonfiniteB += !fb;
+        use[p] = fa && fb;
+    }
+    if (selectedCount == 0) fail("mask ", nameMask, " selects no pixel (none > 0.5)");
+    auto selected = [&](size_t p) { return use[p] != 0; };
 
     // First pass: the statistics of B the others need. Sums in double.
     long long n = 0;
@@ -43,7 +61,9 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
             peak = std::max(peak, v);
         }
     }
-    if (n == 0) fail("mask ", nameMask, " selects no pixel (none > 0.5)");
+    if (n == 0)
+        fail("no pixel to compare: every selected pixel holds NaN or ∞ (", nameA, ": ", nonfiniteA,
+             ", ", nameB, ": ", nonfiniteB, " of ", selectedCount, ")");
     const double values = static_cast<double>(n) * ch;
     const double floor = kRelErrorFloor * sumAbsB / values;
 
@@ -72,6 +92,8 @@ Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
     }
     CompareMetrics& m = out.metrics;
     m.pixels = n;
+    m.nonfiniteA = nonfiniteA;
+    m.nonfiniteB = nonfiniteB;
     m.rmse = std::sqrt(sq / values);
     const double meanB = sumB / values;
     m.relRmse = meanB != 0 ? m.rmse / meanB : std::numeric_limits<double>::quiet_NaN();
@@ -90,6 +112,8 @@ Json compareJson(const CompareMetrics& m) {
     j["max_abs"] = m.maxAbs;
     j["psnr"] = m.psnr;
     j["pixels"] = m.pixels;
+    j["nonfinite_a"] = m.nonfiniteA;
+    j["nonfinite_b"] = m.nonfiniteB;
     return j;
 }
 
@@ -103,7 +127,11 @@ std::string compareTable(const CompareMetrics& m) {
                   "max_abs       %.6g\n"
                   "psnr          %.2f dB\n",
                   m.pixels, m.rmse, 100.0 * m.relRmse, 100.0 * m.meanRelErr, m.maxAbs, m.psnr);
-    return buf;
+    std::string table = buf;
+    if (m.nonfiniteA + m.nonfiniteB > 0)
+        table += concat("nonfinite     A ", m.nonfiniteA, ", B ", m.nonfiniteB,
+                        " pixels (NaN or ∞; left out)\n");
+    return table;
 }
 
 }  // namespace tsis

@@ -7,7 +7,10 @@
 //                 (pixels where B is ~0 do not dominate)
 //   max_abs       max |a − b|
 //   psnr          20 log10(max of B / rmse) dB (∞ when A = B)
-//   pixels        selected pixels
+//   pixels        selected pixels compared (those finite in A and in B)
+//   nonfinite_a   selected pixels with a NaN or ∞ in A (left out of the metrics)
+//   nonfinite_b   the same in B
+// A NaN would otherwise vanish from max_abs and make an all-NaN image a perfect match.
 #pragma once
 
 #include <string>
@@ -20,6 +23,7 @@ namespace tsis {
 struct CompareMetrics {
     double rmse = 0, relRmse = 0, meanRelErr = 0, maxAbs = 0, psnr = 0;
     long long pixels = 0;
+    long long nonfiniteA = 0, nonfiniteB = 0;
 };
 
 struct Comparison {
@@ -33,15 +37,16 @@ constexpr double kRelErrorFloor = 1e-3;
 
 // mask: null for all pixels, else pixels with mask channel 0 > 0.5. Names (file
 // paths) appear in the one-line errors for mismatched sizes or channel counts,
-// or a mask that selects nothing.
+// a mask that selects nothing, or no selected pixel finite in both.
 Comparison compareImages(const ImageF& a, const ImageF& b, const ImageF* mask,
                          const std::string& nameA = "A", const std::string& nameB = "B",
                          const std::string& nameMask = "mask");
 
-// Keys exactly: rmse, rel_rmse, mean_rel_err, max_abs, psnr (null when ∞), pixels.
+// Keys exactly: rmse, rel_rmse, mean_rel_err, max_abs, psnr (null when ∞), pixels,
+// nonfinite_a, nonfinite_b.
 Json compareJson(const CompareMetrics& m);
 
-// A short human-readable table.
+// A short human-readable table (non-finite pixels only when there are some).
 std::string compareTable(const CompareMetrics& m);
 
 }  // namespace tsis

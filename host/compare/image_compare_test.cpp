@@ -69,10 +69,41 @@ TEST(ImageCompare, JsonHasExactlyTheDocumentedKeys) {
     const std::string json = compareJson(CompareMetrics{}).dump(0);
     size_t keys = 0;
     for (size_t p = 0; (p = json.find("\":", p)) != std::string::npos; ++p) ++keys;
-    EXPECT_EQ(keys, 6u) << json;
-    for (const char* k :
-         {"\"rmse\"", "\"rel_rmse\"", "\"mean_rel_err\"", "\"max_abs\"", "\"psnr\"", "\"pixels\""})
+    EXPECT_EQ(keys, 8u) << json;
+    for (const char* k : {"\"rmse\"", "\"rel_rmse\"", "\"mean_rel_err\"", "\"max_abs\"", "\"psnr\"",
+                          "\"pixels\"", "\"nonfinite_a\"", "\"nonfinite_b\""})
         EXPECT_NE(json.find(k), std::string::npos) << k;
+}
+
+// A NaN or ∞ is counted and left out; it never reads as "no difference".
+TEST(ImageCompare, NonFinitePixelsAreCountedAndLeftOut) {
+    const float nan = std::nanf(""), inf = INFINITY;
+    const ImageF b = image(2, 2, 1, {2, 2, 4, inf});
+    const ImageF a = image(2, 2, 1, {2, nan, 3, 4});
+    const Comparison c = compareImages(a, b, nullptr);
+    EXPECT_EQ(c.metrics.pixels, 2);
+    EXPECT_EQ(c.metrics.nonfiniteA, 1);
+    EXPECT_EQ(c.metrics.nonfiniteB, 1);
+    EXPECT_DOUBLE_EQ(c.metrics.maxAbs, 1.0);
+    EXPECT_DOUBLE_EQ(c.metrics.rmse, std::sqrt(0.5));
+    EXPECT_EQ(c.relError.pixels[1], -1.0f) << "left out";
+    EXPECT_NE(compareTable(c.metrics).find("nonfinite     A 1, B 1"), std::string::npos);
+    const ImageF clean = image(1, 1, 1, {1});
+    EXPECT_EQ(compareTable(compareImages(clean, clean, nullptr).metrics).find("nonfinite"),
+              std::string::npos);
+}
+
+TEST(ImageCompare, AllNonFiniteIsAnErrorNotAPerfectMatch) {
+    const float nan = std::nanf("");
+    const ImageF a = image(2, 1, 1, {nan, nan});
+    try {
+        compareImages(a, image(2, 1, 1, {1, 2}), nullptr, "a.exr", "b.exr");
+        FAIL() << "an all-NaN image compared";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("no pixel to compare"), std::string::npos) << m;
+        EXPECT_NE(m.find("a.exr: 2"), std::string::npos) << m;
+    }
 }
 
 TEST(ImageCompare, MismatchesAreOneLineErrorsNamingTheFiles) {

@@ -1,10 +1,18 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <optional>
+#include <set>
+#include <sstream>
 
 #include "util/error.h"
 
@@ -12,23 +20,117 @@ namespace tsis {
 
 namespace {
 
+// OpenImageIO's output file with every write checked. OIIO 2.4's PNG writer
+// ignores a failed fwrite (a full disk gives a truncated file and success); this
+// proxy keeps the first error, which writeWith() then reports.
+class CheckedFile : public OIIO::Filesystem::IOProxy {
+  public:
+    explicit CheckedFile(const std::string& path) : IOProxy(path, Write) {
+        fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        if (fd_ < 0) {
+            error_ = std::strerror(errno);
+            m_mode = Closed;
+        }
+    }
+    ~CheckedFile() override { close(); }
+    const char* proxytype() const override { return "tsis-checked"; }
+    void close() override {
+        if (fd_ >= 0 && ::close(fd_) != 0 && error_.empty()) error_ = std::strerror(errno);
+        fd_ = -1;
+        m_mode = Closed;
+    }
+    size_t write(const void* buf, size_t size) override {
+        const size_t n = pwrite(buf, size, m_pos);
+        m_pos += static_cast<int64_t>(n);
+        return n;
+    }
+    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+        size_t done = 0;
+        while (done < size && error_.empty()) {
+            const ssize_t w = ::pwrite(fd_, static_cast<const char*>(buf) + done, size - done,
+                                       static_cast<off_t>(offset + done));
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0)
+                error_ = w < 0 ? std::strerror(errno) : "nothing written";
+            else
+                done += static_cast<size_t>(w);
+        }
+        end_ = std::max(end_, offset + static_cast<int64_t>(done));
+        return done;
+    }
+    size_t size() const override { return static_cast<size_t>(end_); }
+    // The first failure ("" when none).
+    const std::string& failure() const { return error_; }
+
+  private:
+    int fd_ = -1;
+    int64_t end_ = 0;
+    std::string error_;
+};
+
+// The whole image read back: what the writer left, for formats written without the proxy.
+bool readsBack(const std::string& path, const OIIO::ImageSpec& spec) {
+    auto in = OIIO::ImageInput::open(path);
+    std::vector<unsigned char> data(spec.image_bytes());
+    const bool ok = in && in->spec().width == spec.width && in->spec().height == spec.height &&
+                    in->read_image(0, 0, 0, spec.nchannels, spec.format, data.data());
+    OIIO::geterror();
+    return ok;
+}
+
 void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void* data) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) fail("cannot write '", path, "': ", OIIO::geterror());
-    if (!out->open(path, spec)) fail("cannot write '", path, "': ", out->geterror());
-    bool ok = out->write_image(spec.format, data);
+    std::optional<CheckedFile> file;
+    if (out->supports("ioproxy")) {
+        file.emplace(path);
+        if (!file->failure().empty()) fail("cannot write '", path, "': ", file->failure());
+        if (!out->set_ioproxy(&*file)) fail("cannot write '", path, "': ", out->geterror());
+    }
+    bool ok = out->open(path, spec) && out->write_image(spec.format, data);
     ok = out->close() && ok;
+    if (file) file->close();
+    if (file && !file->failure().empty()) fail("cannot write '", path, "': ", file->failure());
     if (!ok) fail("cannot write '", path, "': ", out->geterror());
+    // A writer without the proxy may also have lost a write: the file must read back whole.
+    if (!file && !readsBack(path, spec))
+        fail("cannot write '", path, "': the file written is incomplete (is the disk full?)");
 }
 
 }  // namespace
 
-void requireImageFormat(const std::string& path) {
-    if (OIIO::ImageOutput::create(path)) return;
+std::string writableExtensions() {
+    // "format:ext,ext;format:ext" of every format; those OpenImageIO writes kept.
+    std::set<std::string> writers;
+    std::stringstream formats(OIIO::get_string_attribute("output_format_list"));
+    for (std::string f; std::getline(formats, f, ',');)
+        if (f != "null" && f != "term") writers.insert(f);  // no file: a sink, the terminal
+    std::vector<std::string> exts;
+    std::stringstream list(OIIO::get_string_attribute("extension_list"));
+    for (std::string entry; std::getline(list, entry, ';');) {
+        const size_t colon = entry.find(':');
+        if (colon == std::string::npos || !writers.count(entry.substr(0, colon))) continue;
+        std::stringstream e(entry.substr(colon + 1));
+        for (std::string x; std::getline(e, x, ',');) exts.push_back("." + x);
+    }
+    std::sort(exts.begin(), exts.end());
+    // The usual ones first.
+    std::string text = ".png, .exr";
+    for (const std::string& x : exts)
+        if (x != ".png" && x != ".exr") text += ", " + x;
+    return text;
+}
+
+void requireImageFormat(const OutputSet& outputs, const std::string& target) {
+    const std::string ext = outputs.extension(target);
+    if (ext.empty())
+        fail("cannot write '", target,
+             "': the name has no extension to choose the image format by (one of ",
+             writableExtensions(), ")");
+    if (OIIO::ImageOutput::create("image" + ext)) return;
     OIIO::geterror();  // clears OpenImageIO's message; ours says it for a user
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext.empty()) fail("cannot write '", path, "': no extension to choose an image format by");
-    fail("cannot write '", path, "': no image format for the extension '", ext, "'");
+    fail("cannot write '", target, "': no image format for the extension '", ext, "' (one of ",
+         writableExtensions(), ")");
 }
 
 void writeImageF(const std::string& path, const ImageF& image,

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "util/output_set.h"
+
 namespace tsis {
 
 struct ImageF {
@@ -23,9 +25,13 @@ struct ImageF {
 void writeImageF(const std::string& path, const ImageF& image,
                  const std::vector<std::string>& channelNames = {});
 
-// Throws tsis::Error when no writer handles `path`'s extension (checked
-// before the work, not after it).
-void requireImageFormat(const std::string& path);
+// Throws tsis::Error when `target` (an output of `outputs`) has no extension
+// or one no writer handles, naming those that are (checked before the work,
+// not after it).
+void requireImageFormat(const OutputSet& outputs, const std::string& target);
+
+// ".png, .exr, …": the extensions an image can be written with.
+std::string writableExtensions();
 
 // 8-bit image (PNG), values already encoded (sRGB).
 void writeImage8(const std::string& path, int width, int height, int channels,

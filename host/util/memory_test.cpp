@@ -5,6 +5,9 @@
 #include <cstring>
 #include <memory>
 
+#include "support/scoped_env.h"
+#include "util/error.h"
+
 namespace tsis {
 namespace {
 
@@ -18,6 +21,30 @@ TEST(Memory, ResidentSetFollowsTouchedPages) {
     const double after = residentMegabytes();
     EXPECT_EQ(block[kBytes - 1], 1);
     EXPECT_GT(after - before, 48.0) << before << " -> " << after << " MiB";
+}
+
+TEST(Memory, AvailableIsKnownAndLimitedByTheEnvironment) {
+    const std::optional<uint64_t> machine = availableMemoryBytes();
+    ASSERT_TRUE(machine.has_value()) << "Linux has MemAvailable";
+    EXPECT_GT(*machine, uint64_t(0));
+    {
+        test::ScopedEnv limit("TSIS_MEMORY_LIMIT_MB", "100");
+        EXPECT_EQ(availableMemoryBytes(), std::min<uint64_t>(*machine, 100000000));
+    }
+    test::ScopedEnv bad("TSIS_MEMORY_LIMIT_MB", "lots");
+    EXPECT_THROW(availableMemoryBytes(), Error);
+}
+
+TEST(Memory, RequireMemoryRefusesPastTheAvailable) {
+    EXPECT_NO_THROW(requireMemory(2000000000, std::nullopt, "x"));  // unknown: no check
+    EXPECT_NO_THROW(requireMemory(2000000000, 2000000000, "x"));
+    try {
+        requireMemory(8300000000, 4200000000, "a 8192×8192 frame");
+        FAIL() << "accepted";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(),
+                     "a 8192×8192 frame needs about 8.3 GB of memory but 4.2 GB is available");
+    }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "util/error.h"
+#include "util/temporaries.h"
 
 namespace tsis {
 
@@ -28,20 +29,27 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
     fs::path dir = target.parent_path();
     if (!dir.empty() && !fs::is_directory(dir))
         fail("cannot write '", target.string(), "': directory '", dir.string(), "' does not exist");
+    removeStaleTemporaries(dir);  // a killed run's, in a cache folder
     fs::path tmp = temporaryPathFor(target);
+    registerTemporary(tmp, TemporaryKind::File);  // a signal removes it
+    auto removeTmp = [&] {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        unregisterTemporary(tmp);
+    };
+    const auto hold = holdTemporaries();  // a signal's cleanup waits for the write and rename
     try {
         write(tmp);
     } catch (...) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
+        removeTmp();
         throw;
     }
     if (::rename(tmp.c_str(), target.c_str()) != 0) {
         const std::string why = std::strerror(errno);  // before the cleanup overwrites errno
-        std::error_code ec;
-        fs::remove(tmp, ec);
+        removeTmp();
         fail("cannot write '", target.string(), "': ", why);
     }
+    unregisterTemporary(tmp);
 }
 
 void writeText(const fs::path& file, const std::string& text) {

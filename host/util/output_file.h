@@ -13,7 +13,8 @@ namespace tsis {
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
 // Calls write(tmp) and renames tmp to target; removes tmp and rethrows when
-// write throws. Errors name the target.
+// write throws. Errors name the target. tmp is registered for removal on a
+// signal, and the folder's temporaries of killed runs go (util/temporaries.h).
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& tmp)>& write);
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "util/error.h"
+#include "util/temporaries.h"
 
 namespace tsis {
 
@@ -29,17 +30,62 @@ mode_t creationMode() {
     return mode;
 }
 
-// Creates a new, empty temporary in `dir`: ".<stem>.tsis-tmp-XXXXXX<ext>" (image
-// writers choose the format from the extension). errno is kept on failure.
+// Creates a new, empty temporary in `dir`: ".<stem>.tsis-tmp-<pid>-XXXXXX<ext>"
+// (image writers choose the format from the extension), registered for removal
+// on a signal. errno is kept on failure.
 std::optional<fs::path> reserveTemporary(const fs::path& dir, const std::string& stem,
                                          const std::string& ext) {
-    std::string name = (dir.empty() ? fs::path(".") : dir) / ("." + stem + ".tsis-tmp-XXXXXX");
+    removeStaleTemporaries(dir);
+    std::string name =
+        (dir.empty() ? fs::path(".") : dir) / ("." + stem + "." + temporaryMarker() + "XXXXXX");
     name += ext;
+    const auto hold = holdTemporaries();  // made and registered before a signal's cleanup
     const int fd = ::mkstemps(name.data(), static_cast<int>(ext.size()));
     if (fd < 0) return std::nullopt;
     ::fchmod(fd, creationMode());
     ::close(fd);
+    registerTemporary(name, TemporaryKind::File);
     return fs::path(name);
+}
+
+// A second name (hard link) for the file at `dest` before a rename replaces
+// it, so that a later failure can put it back; empty when the file system
+// has no links (then that output cannot be undone).
+fs::path keepOld(const fs::path& dest) {
+    const fs::path dir = dest.parent_path().empty() ? fs::path(".") : dest.parent_path();
+    for (int i = 0; i < 100; ++i) {
+        std::string name = ".";
+        name += dest.stem().string();
+        name += '.';
+        name += temporaryMarker();
+        name += "old";
+        name += std::to_string(i);
+        name += dest.extension().string();
+        const fs::path old = dir / name;
+        if (::link(dest.c_str(), old.c_str()) == 0) {
+            registerTemporary(old, TemporaryKind::File);
+            return old;
+        }
+        if (errno != EEXIST) break;
+    }
+    return {};
+}
+
+void removeFile(const fs::path& file) {
+    std::error_code ec;
+    fs::remove(file, ec);
+    unregisterTemporary(file);
+}
+
+// "; written all the same: 'a', 'b'; no other output was written" for a
+// failed commit that could not take everything back; "" when nothing stays.
+std::string writtenNote(const std::vector<std::string>& written) {
+    if (written.empty()) return "";
+    std::string note = "; written all the same: ";
+    for (size_t i = 0; i < written.size() && i < 3; ++i)
+        note += (i ? ", '" : "'") + written[i] + "'";
+    if (written.size() > 3) note += concat(" and ", written.size() - 3, " more");
+    return note + "; no other output was written";
 }
 
 // Writes all of `file` to the open descriptor `fd`; the error text or "".
@@ -84,10 +130,13 @@ OutputSet::~OutputSet() {
 
 void OutputSet::rollback() noexcept {
     std::error_code ec;
-    for (const Entry& e : entries_) fs::remove(e.temp, ec);
-    for (const fs::path& d : stagingDirs_) fs::remove_all(d, ec);
+    for (const Entry& e : entries_) removeFile(e.temp);
+    for (const fs::path& d : stagingDirs_) {
+        fs::remove_all(d, ec);
+        unregisterTemporary(d);
+    }
     // Only folders left empty: a committed output keeps its folder.
-    for (auto it = madeDirs_.rbegin(); it != madeDirs_.rend(); ++it) fs::remove(*it, ec);
+    for (auto it = madeDirs_.rbegin(); it != madeDirs_.rend(); ++it) removeFile(*it);
 }
 
 void OutputSet::add(const std::string& target, const std::string& defaultExtension,
@@ -99,6 +148,7 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         for (const Entry& o : entries_)
             if (o.kind == Kind::Stdout) fail("two outputs are '-' (standard output)");
         e.kind = Kind::Stdout;
+        e.ext = defaultExtension;
         auto tmp = reserveTemporary(fs::temp_directory_path(), "stdout", defaultExtension);
         if (!tmp) cannotWrite(target, "no temporary file: ", std::strerror(errno));
         e.temp = *tmp;
@@ -144,7 +194,10 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
                 fail("'", target, "' is given for two outputs");
     }
     if (!stageIn.empty()) {
+        e.ext = e.dest.extension().string();
         e.temp = stageIn / e.dest.filename();
+        // Not inside a signal's cleanup of the staging folder (it would stay).
+        const auto hold = holdTemporaries();
         const int fd = ::open(e.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd < 0) cannotWrite(target, std::strerror(errno));
         ::close(fd);
@@ -154,6 +207,7 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         std::string ext = fs::path(target).extension().string();
         if (ext.empty()) ext = e.dest.extension().string();
         if (ext.empty() && e.kind == Kind::WriteThrough) ext = defaultExtension;
+        e.ext = ext;
         const fs::path dir =
             e.kind == Kind::Rename ? e.dest.parent_path() : fs::temp_directory_path();
         auto tmp = reserveTemporary(dir, e.dest.stem().string(), ext);
@@ -181,13 +235,17 @@ void OutputSet::makeDirectory(const std::string& dir) {
         if (!fs::create_directory(*it, ec) && ec)
             fail("cannot create directory '", it->string(), "': ", ec.message());
         madeDirs_.push_back(*it);
+        registerTemporary(*it, TemporaryKind::Folder);
     }
 }
 
 fs::path OutputSet::makeStagingDirectory(const std::string& dir) {
-    std::string name = (fs::path(dir) / ".tsis-tmp-XXXXXX").string();
+    removeStaleTemporaries(dir);
+    std::string name = (fs::path(dir) / ("." + temporaryMarker() + "XXXXXX")).string();
+    const auto hold = holdTemporaries();
     if (!::mkdtemp(name.data())) fail("cannot write into '", dir, "': ", std::strerror(errno));
     stagingDirs_.push_back(name);
+    registerTemporary(name, TemporaryKind::Tree);
     return name;
 }
 
@@ -201,9 +259,16 @@ fs::path OutputSet::temporary(const std::string& target) const {
     return find(target).temp;
 }
 
+std::string OutputSet::extension(const std::string& target) const {
+    return find(target).ext;
+}
+
 void OutputSet::write(const std::string& target,
                       const std::function<void(const fs::path& file)>& write) {
     const Entry& e = find(target);
+    // A signal's cleanup waits for the write: else the writer could make the
+    // file again (or one in a staging folder) after the cleanup removed it.
+    const auto hold = holdTemporaries();
     try {
         write(e.temp);
     } catch (const Error& err) {
@@ -217,8 +282,7 @@ void OutputSet::write(const std::string& target,
 void OutputSet::discard(const std::string& target) {
     for (auto it = entries_.begin(); it != entries_.end(); ++it)
         if (it->target == target) {
-            std::error_code ec;
-            fs::remove(it->temp, ec);
+            removeFile(it->temp);
             entries_.erase(it);
             return;
         }
@@ -228,18 +292,39 @@ void OutputSet::commit() {
     std::fflush(stdout);
     std::cout.flush();
     // Devices and standard output first: they are the ones that fail late (a
-    // full disk behind a device, a closed pipe); renames in a checked folder rarely do.
+    // full disk behind a device, a closed pipe), and they cannot be taken back;
+    // renames in a checked folder rarely fail, and are undone when one does.
     std::vector<const Entry*> order;
     for (const Entry& e : entries_)
         if (e.kind != Kind::Rename) order.push_back(&e);
     for (const Entry& e : entries_)
         if (e.kind == Kind::Rename) order.push_back(&e);
+    struct Renamed {
+        const Entry* entry;
+        fs::path old;  // the file it replaced, kept by keepOld (empty: none or not kept)
+        bool replaced;
+    };
+    std::vector<Renamed> renamed;
+    std::vector<std::string> written;  // what stays written if a later output fails
+    // A signal's cleanup waits while the renames run, until every file is in
+    // place (or none is); not while a device or a pipe, which may block, is written.
+    std::unique_lock<std::recursive_mutex> hold;
     for (const Entry* ep : order) {
         const Entry& e = *ep;
         std::string error;
         if (e.kind == Kind::Rename) {
+            if (!hold.owns_lock()) hold = holdTemporaries();
+            std::error_code ec;
+            const bool replaces = fs::is_regular_file(e.dest, ec);
+            const fs::path old = replaces ? keepOld(e.dest) : fs::path();
             // rename(2), not std::filesystem: its error is the one we report.
-            if (::rename(e.temp.c_str(), e.dest.c_str()) != 0) error = std::strerror(errno);
+            if (::rename(e.temp.c_str(), e.dest.c_str()) != 0) {
+                error = std::strerror(errno);
+                if (!old.empty()) removeFile(old);
+            } else {
+                unregisterTemporary(e.temp);
+                renamed.push_back({&e, old, replaces});
+            }
         } else {
             const int fd = e.kind == Kind::Stdout
                                ? STDOUT_FILENO
@@ -247,14 +332,30 @@ void OutputSet::commit() {
             error = fd < 0 ? std::strerror(errno) : copyTo(e.temp, fd);
             if (fd >= 0 && e.kind != Kind::Stdout && ::close(fd) != 0 && error.empty())
                 error = std::strerror(errno);
-            std::error_code ec;
-            fs::remove(e.temp, ec);
+            removeFile(e.temp);
+            if (error.empty()) written.push_back(e.target);
         }
-        if (!error.empty()) cannotWrite(e.target, error);
+        if (error.empty()) continue;
+        // Take the renames back, newest first: the old file returns, a new one goes.
+        for (auto it = renamed.rbegin(); it != renamed.rend(); ++it) {
+            const fs::path& dest = it->entry->dest;
+            const bool undone = !it->old.empty() ? ::rename(it->old.c_str(), dest.c_str()) == 0
+                                : !it->replaced  ? ::unlink(dest.c_str()) == 0
+                                                 : false;
+            if (undone) unregisterTemporary(it->old);
+            if (!undone) written.push_back(it->entry->target);
+        }
+        cannotWrite(e.target, error, writtenNote(written));
     }
     committed_ = true;
+    for (const Renamed& r : renamed)
+        if (!r.old.empty()) removeFile(r.old);
     std::error_code ec;
-    for (const fs::path& d : stagingDirs_) fs::remove_all(d, ec);
+    for (const fs::path& d : stagingDirs_) {
+        fs::remove_all(d, ec);
+        unregisterTemporary(d);
+    }
+    for (const fs::path& d : madeDirs_) unregisterTemporary(d);
 }
 
 }  // namespace tsis

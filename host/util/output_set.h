@@ -1,5 +1,7 @@
 // All the output files of one run, checked before the work and committed
-// together, so a run either writes every output or leaves none behind.
+// together, so a run either writes every output or leaves none behind. The
+// temporaries are registered (util/temporaries.h): SIGINT, SIGTERM or SIGHUP
+// removes them, and a later run removes those of a run that was killed.
 //
 // add() checks a target at once: its folder exists and takes a new file (the
 // temporary the writer will fill is created there now), and the target is not
@@ -46,10 +48,16 @@ class OutputSet {
                const std::function<void(const std::filesystem::path& file)>& write);
     // The temporary of `target`, for writers that run outside write().
     std::filesystem::path temporary(const std::string& target) const;
+    // The extension `target` is written by (its format): its name's, else the
+    // linked file's, else the default; "" when it has none.
+    std::string extension(const std::string& target) const;
     // Drops `target`: its temporary goes and nothing is written there.
     void discard(const std::string& target);
 
     // Moves every output into place: devices and "-" first, then the renames.
+    // When one fails, the renames before it are taken back (a replaced file
+    // returns, kept by a hard link meanwhile); the error names what stays
+    // written all the same (devices, "-", a file on a file system without links).
     void commit();
 
   private:
@@ -59,6 +67,7 @@ class OutputSet {
         std::filesystem::path dest;  // where the bytes go (a link resolved)
         std::filesystem::path temp;
         Kind kind;
+        std::string ext;  // the format's extension (see extension())
     };
     const Entry& find(const std::string& target) const;
     void rollback() noexcept;

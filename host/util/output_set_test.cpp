@@ -160,6 +160,45 @@ TEST(OutputSet, FullDeviceReportsTheReasonAndCommitsNothingElse) {
     EXPECT_FALSE(fs::exists(d.file("a.txt")));
 }
 
+// Issue 22 item 7: a rename that fails after others took them back: the file
+// replaced returns, a new one goes, and no temporary or kept copy is left.
+TEST(OutputSet, AFailedRenameTakesTheEarlierOnesBack) {
+    TempDir d;
+    std::ofstream(d.file("a.txt")) << "old A";
+    std::string msg;
+    {
+        OutputSet out;
+        out.add(d.file("a.txt"));
+        out.add(d.file("new.txt"));
+        out.add(d.file("c.txt"));
+        for (const char* f : {"a.txt", "new.txt", "c.txt"})
+            out.write(d.file(f), [](const fs::path& t) { writeText(t, "new"); });
+        // c.txt becomes a folder that is not empty after the check: its rename fails.
+        fs::create_directories(d.file("c.txt/inside"));
+        msg = errorOf([&] { out.commit(); });
+    }
+    EXPECT_NE(msg.find("cannot write '" + d.file("c.txt") + "'"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("written all the same"), std::string::npos) << msg;
+    EXPECT_EQ(slurp(d.file("a.txt")), "old A");
+    EXPECT_FALSE(fs::exists(d.file("new.txt")));
+    EXPECT_EQ(entries(d.path), 2u) << "a.txt and the folder c.txt, nothing else";
+}
+
+// What cannot be taken back (a device, standard output) is named.
+TEST(OutputSet, AFailedCommitNamesWhatStaysWritten) {
+    TempDir d;
+    fs::create_symlink("/dev/null", d.file("null"));
+    OutputSet out;
+    out.add(d.file("null"));
+    out.add(d.file("c.txt"));
+    out.write(d.file("null"), [](const fs::path& t) { writeText(t, "x"); });
+    out.write(d.file("c.txt"), [](const fs::path& t) { writeText(t, "x"); });
+    fs::create_directories(d.file("c.txt/inside"));
+    const std::string msg = errorOf([&] { out.commit(); });
+    EXPECT_NE(msg.find("written all the same: '" + d.file("null") + "'"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+}
+
 TEST(OutputFile, FailedRenameTellsWhy) {
     TempDir d;
     fs::create_directories(d.file("target/inside"));

@@ -7,11 +7,29 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
+
+#include "util/error.h"
 
 namespace tsis {
 
 namespace {
+
 thread_local const ProgressObserver* tCurrentObserver = nullptr;
+
+constexpr double kDefaultInterval = 10.0;
+constexpr double kMaxInterval = 86400.0;  // a day; more would overflow the timer's wait
+
+// TSIS_PROGRESS_INTERVAL's seconds: the default when unset or empty, none when not valid.
+std::optional<double> intervalFromEnvironment() {
+    const char* env = std::getenv("TSIS_PROGRESS_INTERVAL");
+    if (!env || !*env) return kDefaultInterval;
+    char* end = nullptr;
+    const double s = std::strtod(env, &end);
+    if (end == env || *end != '\0' || !(s > 0 && s <= kMaxInterval)) return std::nullopt;
+    return s;
+}
+
 }  // namespace
 
 ScopedProgressObserver::ScopedProgressObserver(ProgressObserver observer)
@@ -34,12 +52,13 @@ bool Progress::enabled() {
 }
 
 double Progress::lineInterval() {
-    if (const char* env = std::getenv("TSIS_PROGRESS_INTERVAL"); env && *env) {
-        char* end = nullptr;
-        const double s = std::strtod(env, &end);
-        if (end && *end == '\0' && std::isfinite(s) && s > 0) return s;
-    }
-    return 10.0;
+    return intervalFromEnvironment().value_or(kDefaultInterval);
+}
+
+void Progress::checkEnvironment() {
+    if (!intervalFromEnvironment())
+        fail("TSIS_PROGRESS_INTERVAL='", std::getenv("TSIS_PROGRESS_INTERVAL"),
+             "' is not a number of seconds in (0, ", kMaxInterval, "]");
 }
 
 Progress::Progress(std::string label, long long total)

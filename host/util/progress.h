@@ -1,6 +1,6 @@
 // Progress for long work, on stderr. On a terminal: a single updating line.
 // Otherwise (CI, pipes, files): once the work has run for an interval (10 s,
-// or TSIS_PROGRESS_INTERVAL seconds), one line per interval from a timer
+// or TSIS_PROGRESS_INTERVAL seconds, 0 < s ≤ 86400), one line per interval from a timer
 // thread, so a stage that calls update() rarely still shows it is alive, and a
 // last line at finish(); work shorter than the interval prints nothing. Lines
 // read `tsis: LABEL P% (T s)`, P an integer percent, T elapsed seconds.
@@ -48,6 +48,10 @@ class Progress {
     static Mode mode();            // from TSIS_PROGRESS and whether stderr is a terminal
     static bool enabled();         // mode() != Off
     static double lineInterval();  // seconds between lines in Lines mode
+    // Throws tsis::Error when TSIS_PROGRESS_INTERVAL is set but is not a
+    // number of seconds in (0, 86400] (the CLI checks it first; lineInterval()
+    // then never meets a bad value, else it takes the default).
+    static void checkEnvironment();
 
   private:
     void printLine(long long done);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/scoped_env.h"
+#include "util/error.h"
 
 namespace tsis {
 namespace {
@@ -42,6 +43,33 @@ TEST(Progress, LinesWhenStderrIsNotATerminal) {
     EXPECT_GE(lines, 2) << err;  // one at least from each sleep, and the last
     EXPECT_EQ(last, 100) << err;
     EXPECT_NE(err.find("tsis: atlas 42%"), std::string::npos) << err;
+}
+
+// Issue 22: a bad value was taken silently as 10 s; now the CLI refuses it.
+TEST(Progress, IntervalFromTheEnvironmentIsChecked) {
+    for (const char* good : {"0.5", "10", "86400", "1e2"}) {
+        ScopedEnv interval("TSIS_PROGRESS_INTERVAL", good);
+        EXPECT_NO_THROW(Progress::checkEnvironment()) << good;
+        EXPECT_DOUBLE_EQ(Progress::lineInterval(), std::strtod(good, nullptr)) << good;
+    }
+    for (const char* unset : {static_cast<const char*>(nullptr), ""}) {
+        ScopedEnv interval("TSIS_PROGRESS_INTERVAL", unset);
+        EXPECT_NO_THROW(Progress::checkEnvironment());
+        EXPECT_DOUBLE_EQ(Progress::lineInterval(), 10.0);
+    }
+    for (const char* bad : {"abc", "0", "-1", "5s", "nan", "inf", "1e300", " "}) {
+        ScopedEnv interval("TSIS_PROGRESS_INTERVAL", bad);
+        try {
+            Progress::checkEnvironment();
+            ADD_FAILURE() << "accepted " << bad;
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            EXPECT_NE(m.find(std::string("TSIS_PROGRESS_INTERVAL='") + bad + "'"),
+                      std::string::npos)
+                << m;
+        }
+        EXPECT_DOUBLE_EQ(Progress::lineInterval(), 10.0) << bad;
+    }
 }
 
 TEST(Progress, ShortWorkPrintsNothing) {

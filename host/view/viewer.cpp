@@ -502,6 +502,7 @@ void Viewer::writeFile(const std::string& what, const std::string& path,
     try {
         OutputSet outputs;
         outputs.add(path);
+        requireImageFormat(outputs, path);  // both are images (save, screenshot)
         outputs.write(path, write);
         outputs.commit();
         report(concat("wrote ", what, " ", path), false);

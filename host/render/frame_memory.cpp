@@ -1,0 +1,37 @@
+#include "render/frame_memory.h"
+
+#include "util/error.h"
+#include "util/memory.h"
+
+namespace tsis {
+
+namespace {
+
+// Peak resident bytes of `tsis render` (GNU time's maxrss, default scene and
+// method, README "Memory"), fitted as fixed + per image pixel + per atlas
+// texel + per light-map texel: 1024² → 2048² adds 123 B a pixel (206 with
+// --aov), atlas 512² → 2048² 227 B a texel, light maps 256² → 2048² 16 B.
+constexpr double kFixed = 275e6;  // GL, CL, programs, the default mesh
+constexpr double kPerPixel = 123;
+constexpr double kPerAovPixel = 83;  // --aov: the float images kept on the host
+constexpr double kPerAtlasTexel = 227;
+constexpr double kPerLightTexel = 16;       // the default scene's two lights
+constexpr int kAutoLightResolution = 2048;  // --light-res 0: at most this (renderer.h)
+
+}  // namespace
+
+uint64_t frameMemoryBytes(const RenderOptions& o) {
+    const double pixels = double(o.width) * o.height;
+    const double atlas = double(o.atlasResolution) * o.atlasResolution;
+    const int lightRes = o.lightResolution > 0 ? o.lightResolution : kAutoLightResolution;
+    const double light = double(lightRes) * lightRes;
+    return static_cast<uint64_t>(kFixed + pixels * (kPerPixel + (o.keepAovs ? kPerAovPixel : 0)) +
+                                 atlas * kPerAtlasTexel + light * kPerLightTexel);
+}
+
+void requireFrameMemory(const RenderOptions& o) {
+    requireMemory(frameMemoryBytes(o), availableMemoryBytes(),
+                  concat("a ", o.width, "×", o.height, " frame"));
+}
+
+}  // namespace tsis
