@@ -44,6 +44,7 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
     glm::dvec3 pos = hit.position - hit.normal * eps;
     glm::dvec3 radiance(0.0);
     constexpr double kPhase = 1.0 / (4.0 * M_PI);
+    int scatterings = 0;
     for (int event = 0; event < kMaxEvents; ++event) {
         SurfaceHit surface;
         const bool bounded = boundary.intersect(pos, dir, kInfinity, surface);
@@ -69,6 +70,7 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
                     radiance += w.value() * kPhase * in.paths[k].irradiance *
                                 transmittance(m, in.paths[k].distance) / q;
             }
+            if (++scatterings == scene.maxScatterings) break;
             const glm::dvec3 v = w.value();
             const double strength = std::max({v.x, v.y, v.z});
             if (strength < kRouletteWeight) {

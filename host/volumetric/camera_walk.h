@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 #include "scene/scene.h"
@@ -24,6 +25,9 @@ struct WalkScene {
     // Radiance arriving from direction d (unit, from the object outwards), on
     // top of the sky, read by paths that leave the object; empty for none.
     std::function<glm::dvec3(const glm::dvec3& d)> environment;
+    // Scattering orders summed: paths end after this many scatterings (after
+    // the last one's next-event estimation); 1 = single scattering.
+    int maxScatterings = std::numeric_limits<int>::max();
 };
 
 struct WalkCounters {

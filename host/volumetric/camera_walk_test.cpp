@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
 #include "mesh/builtin.h"
@@ -97,6 +98,51 @@ TEST(CameraWalk, ConnectionsThroughTheBoundaryAgreeWithEscapingPaths) {
         EXPECT_NEAR(b, a, 4 * sigma) << "seen from " << toEye.x << "," << toEye.y << "," << toEye.z
                                      << ": escaping " << a << ", connected " << b;
         EXPECT_LT(sigma, 0.025 * a);  // the test sees a 10 % bias
+    }
+}
+
+// Single scattering with the index matched (η = 1: no refraction, so a
+// straight shadow ray is the connection) against the integral along the
+// camera ray, by quadrature: L1 = ∫ σs e^(−σt t) (1/4π) I e^(−σt s(x)) / |p − x|² dt,
+// s(x) the path from x to the surface towards the light.
+TEST(CameraWalk, IndexMatchedSingleScatteringEqualsTheRayIntegral) {
+    const Mesh mesh = sphere(4.0);
+    const MeshBoundary boundary(mesh);
+    const glm::dvec3 sigmaS(0.8, 1.2, 2.0), sigmaA(0.01, 0.05, 0.2);
+    Light light;
+    light.vec = glm::vec3(3.0f, 8.0f, 5.0f);
+    light.rgb = glm::vec3(100.0f);
+    WalkScene scene{&boundary, testMedium(sigmaS, sigmaA, 1.0), {light}, glm::dvec3(0.0)};
+    scene.maxScatterings = 1;
+    const glm::dvec3 p(light.vec);
+    WalkCounters counters;
+    for (const glm::dvec3& toEye :
+         {glm::dvec3(0, 0, 1), glm::normalize(glm::dvec3(1, -0.5, 0.3))}) {
+        SurfaceHit hit;
+        ASSERT_TRUE(boundary.intersect(toEye * 10.0, -toEye, kInfinity, hit));
+        SurfaceHit far;
+        ASSERT_TRUE(boundary.intersect(hit.position - toEye * 1e-6, -toEye, kInfinity, far));
+        glm::dvec3 integral(0.0);
+        const int steps = 4000;
+        const double h = far.t / steps;
+        for (int i = 0; i < steps; ++i) {  // midpoint rule
+            const double t = (i + 0.5) * h;
+            const glm::dvec3 x = hit.position - toEye * t;
+            const double r = glm::length(p - x);
+            SurfaceHit out;
+            ASSERT_TRUE(boundary.intersect(x, (p - x) / r, kInfinity, out));
+            const glm::dvec3 sigmaT = sigmaS + sigmaA;
+            integral += sigmaS * glm::exp(-sigmaT * (t + out.t)) * (100.0 / (4 * M_PI * r * r)) * h;
+        }
+        MeanEstimate walk;
+        for (int i = 0; i < 20000; ++i) {
+            Rng rng(31, static_cast<uint64_t>(i));
+            walk.add(exitantRadiance(scene, hit, toEye, rng, counters));
+        }
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(walk.mean()[c], integral[c], 4 * walk.error(c)) << "channel " << c;
+            EXPECT_LT(walk.error(c), 0.01 * integral[c]);
+        }
     }
 }
 
