@@ -14,22 +14,38 @@
 //  --models (item 4): instead, per radial profile model (--profile) and exit
 //     term (--exit), the same slab and scenes against volumetric transport:
 //     bench/results/physical_models.md.
+//  --truth (issue 24 item 2): instead, the two spheres' volumetric radiance
+//     by the light tracer (volumetric/light_trace.h), the camera walk's
+//     independent twin, into tests/validation/truth_*.exr (mean and standard
+//     error per pixel) and truth.json (the interior pixels' mean per channel
+//     and its standard error, from batches), for tests/volumetric_truth_test.cpp.
+//     Batches of photons until the interior mean's error is below 1% in every
+//     channel or --seconds (default 1200) per sphere run out.
 //
-// bench_physical [--quick] [--models] [--photons N] [--spp N] [--size W]
+// bench_physical [--quick] [--models | --truth [--seconds S]] [--photons N] [--spp N] [--size W]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "bench_common.h"
 #include "compare/image_compare.h"
+#include "image/image_io.h"
 #include "physics/dipole.h"
 #include "physics/fresnel.h"
 #include "physics/material.h"
 #include "render/profiles.h"
+#include "scene/projection.h"
 #include "util/error.h"
+#include "util/json.h"
+#include "util/output_file.h"
+#include "util/parallel.h"
+#include "util/timer.h"
+#include "volumetric/light_trace.h"
+#include "volumetric/mesh_boundary.h"
 #include "volumetric/slab.h"
 
 namespace tsis::bench {
@@ -245,12 +261,130 @@ int runModels(const BenchArgs& a, long long photons, int spp, int size) {
     return 0;
 }
 
+// The pixels whose 4-neighbourhood is covered: where the camera walk's
+// centre sample and the light tracer's pixel mean see the same surface.
+std::vector<char> interiorMask(const ImageF& coverage) {
+    const int w = coverage.width, h = coverage.height;
+    std::vector<char> mask(static_cast<size_t>(w) * h, 0);
+    auto covered = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h && coverage.at(x, y, 0) > 0.5f;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            mask[static_cast<size_t>(y) * w + x] = covered(x, y) && covered(x - 1, y) &&
+                                                   covered(x + 1, y) && covered(x, y - 1) &&
+                                                   covered(x, y + 1);
+    return mask;
+}
+
+// Issue 24 item 2: the spheres' truth by light tracing.
+int runTruth(const BenchArgs& a, int size) {
+    const double budget = static_cast<double>(optionValue(a.rest, "--seconds", 1200));
+    const std::vector<SceneCase> scenes = {{"builtin:sphere", "marble", "10"},
+                                           {"builtin:sphere", "skin1", "30"}};
+    // tests/validation/ beside bench/ in the source tree.
+    const std::string dir =
+        (std::filesystem::path(TSIS_BENCH_RESULTS_DIR).parent_path().parent_path() / "tests" /
+         "validation" / "")
+            .string();
+    Json out = Json::object();
+    Renderer renderer;
+    for (const SceneCase& s : scenes) {
+        BenchCase c = makeCase(s.args(size));
+        c.options.keepAovs = true;
+        const std::vector<char> mask = interiorMask(renderer.render(c.scene, c.options).coverage);
+        const MeshBoundary boundary(c.scene.mesh);
+        const WalkScene walk{&boundary, Medium(c.scene.material), c.scene.lights, glm::dvec3(0.0)};
+        Pinhole cam;
+        cam.eye = glm::dvec3(c.scene.camera.eye);
+        cam.target = glm::dvec3(c.scene.camera.target);
+        cam.up = glm::dvec3(c.scene.camera.up);
+        cam.fovYDegrees = c.scene.camera.fovYDegrees;
+        cam.width = cam.height = size;
+        const double radius = boundingRadius(c.scene.mesh);
+        const size_t pixels = static_cast<size_t>(size) * size;
+        // Batches of photons, each its own image (its own Rng streams).
+        const uint64_t perBatch = 4000;
+        std::vector<std::vector<glm::dvec3>> batches;
+        Timer timer;
+        auto maskedMean = [&](const std::vector<glm::dvec3>& img) {
+            glm::dvec3 sum(0.0);
+            int n = 0;
+            for (size_t p = 0; p < pixels; ++p)
+                if (mask[p]) {
+                    sum += img[p];
+                    ++n;
+                }
+            return sum / static_cast<double>(std::max(n, 1));
+        };
+        glm::dvec3 mean(0.0), error(1.0);
+        while (timer.ms() / 1000.0 < budget) {
+            // As many batches as there are threads, in parallel.
+            const size_t first = batches.size(), add = hostThreads();
+            batches.resize(first + add, std::vector<glm::dvec3>(pixels, glm::dvec3(0.0)));
+            parallelFor(add, 1, [&](size_t b0, size_t b1) {
+                for (size_t b = b0; b < b1; ++b) {
+                    WalkCounters counters;
+                    traceLight(walk, cam, radius, (first + b) * perBatch, perBatch, perBatch, 1234,
+                               batches[first + b], counters);
+                }
+            });
+            const double n = static_cast<double>(batches.size());
+            glm::dvec3 sum(0.0), sumSq(0.0);
+            for (const auto& img : batches) {
+                const glm::dvec3 m = maskedMean(img);
+                sum += m;
+                sumSq += m * m;
+            }
+            mean = sum / n;
+            error = glm::sqrt(glm::max(sumSq / n - mean * mean, glm::dvec3(0.0)) / (n - 1));
+            std::fprintf(stderr,
+                         "%s: %zu batches, mean %.5g %.5g %.5g, error %.2f%% %.2f%% %.2f%%\n",
+                         s.name().c_str(), batches.size(), mean.x, mean.y, mean.z,
+                         100 * error.x / mean.x, 100 * error.y / mean.y, 100 * error.z / mean.z);
+            if (batches.size() >= 8 && error.x < 0.01 * mean.x && error.y < 0.01 * mean.y &&
+                error.z < 0.01 * mean.z)
+                break;
+        }
+        // Per-pixel mean and standard error over the batches.
+        ImageF meanImg{size, size, 3, std::vector<float>(pixels * 3)}, errImg = meanImg;
+        const double n = static_cast<double>(batches.size());
+        for (size_t p = 0; p < pixels; ++p)
+            for (int ch = 0; ch < 3; ++ch) {
+                double sum = 0, sumSq = 0;
+                for (const auto& img : batches) {
+                    sum += img[p][ch];
+                    sumSq += img[p][ch] * img[p][ch];
+                }
+                const double m = sum / n;
+                meanImg.pixels[p * 3 + ch] = static_cast<float>(m);
+                errImg.pixels[p * 3 + ch] =
+                    static_cast<float>(std::sqrt(std::max(0.0, sumSq / n - m * m) / (n - 1)));
+            }
+        const std::string base = "truth_" + s.material + "_sphere_" + s.sizeMm + "mm";
+        writeImageF(dir + base + ".exr", meanImg);
+        writeImageF(dir + base + "_stderr.exr", errImg);
+        Json entry = Json::object();
+        entry["args"] = s.args(size);
+        entry["photons"] = static_cast<double>(n * perBatch);
+        entry["interior_mean"] = {mean.x, mean.y, mean.z};
+        entry["interior_mean_error"] = {error.x, error.y, error.z};
+        entry["seconds"] = timer.ms() / 1000.0;
+        out[base] = entry;
+    }
+    writeTextFile(dir + "truth.json", dumpJson(out) + "\n");
+    std::printf("wrote %struth.json\n", dir.c_str());
+    return 0;
+}
+
 int run(const BenchArgs& a) {
     const long long photons = optionValue(a.rest, "--photons", a.quick ? 20000 : 400000);
     const int spp = static_cast<int>(optionValue(a.rest, "--spp", a.quick ? 16 : 1024));
     const int size = static_cast<int>(optionValue(a.rest, "--size", a.quick ? 32 : 64));
     if (std::find(a.rest.begin(), a.rest.end(), "--models") != a.rest.end())
         return runModels(a, photons, spp, size);
+    if (std::find(a.rest.begin(), a.rest.end(), "--truth") != a.rest.end())
+        return runTruth(a, size);
     std::string md = "# Physical accuracy: the dipole against volumetric transport\n\n";
     md += "Made by `build/bench/bench_physical` (bench/bench_physical.cpp) on " + timestamp() +
           "; " + std::to_string(photons) + " photons per slab, " + std::to_string(spp) +

@@ -35,6 +35,13 @@ double Mesh::surfaceArea() const {
     return sum;
 }
 
+double Mesh::enclosedVolume() const {
+    double sum = 0.0;
+    for (const glm::uvec3& t : triangles)
+        sum += glm::dot(dv(positions[t.x]), glm::cross(dv(positions[t.y]), dv(positions[t.z])));
+    return std::abs(sum) / 6.0;
+}
+
 void normalizeMesh(Mesh& mesh, double sizeMm) {
     if (!(sizeMm > 0.0) || !std::isfinite(sizeMm))
         fail("mesh '", mesh.name, "': size must be a positive number of mm, got ", sizeMm);

@@ -20,6 +20,9 @@ struct Mesh {
     bool hasNormals() const { return !normals.empty(); }
     bool hasUVs() const { return !uvs.empty(); }
     double surfaceArea() const;  // Σ triangle areas (mm²)
+    // The volume a closed, consistently wound mesh encloses (mm³): the
+    // divergence theorem, |Σ a·(b × c)| / 6 over the triangles.
+    double enclosedVolume() const;
     double triangleArea(size_t t) const;
     double triangleUVArea(size_t t) const;  // unsigned
 };

@@ -31,6 +31,14 @@ TEST(Mesh, Areas) {
     EXPECT_DOUBLE_EQ(m.triangleUVArea(0), 0.5);  // clockwise in UV, area still positive
 }
 
+TEST(Mesh, EnclosedVolume) {
+    EXPECT_NEAR(tetra().enclosedVolume(), 8.0 / 6.0, 1e-12);
+    // Wherever the origin is: the sum is translation invariant when closed.
+    Mesh moved = tetra();
+    for (auto& p : moved.positions) p += glm::vec3(5, -3, 2);
+    EXPECT_NEAR(moved.enclosedVolume(), 8.0 / 6.0, 1e-5);
+}
+
 TEST(Mesh, NormalizeGivesDiagonalAndCentre) {
     Mesh m = tetra();
     for (auto& p : m.positions) p = p * glm::vec3(3, 1, 0.5f) + glm::vec3(10, -4, 7);

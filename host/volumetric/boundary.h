@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 #include <limits>
+#include <span>
 
 namespace tsis {
 
@@ -25,6 +26,17 @@ class Boundary {
     // Offset that moves a point off the surface before the next ray leaves it
     // (mm): above the ray caster's rounding, far below a mean free path.
     virtual double epsilon() const = 0;
+
+    // Facets, for boundaries made of them (meshes): the next-event connection
+    // through the boundary enumerates the facets around the one it settled on,
+    // since light refracted by several facets can reach the same interior point
+    // (refracted_light.h). Analytic boundaries have none.
+    // A facet's vertices and outward unit normal; false without facets.
+    virtual bool facet(int /*facet*/, glm::dvec3 (&/*v*/)[3], glm::dvec3& /*normal*/) const {
+        return false;
+    }
+    // The facets sharing a vertex with `facet` (welded by position).
+    virtual std::span<const int> facetNeighbours(int /*facet*/) const { return {}; }
 };
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();

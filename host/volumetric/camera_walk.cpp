@@ -44,6 +44,7 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
     glm::dvec3 pos = hit.position - hit.normal * eps;
     glm::dvec3 radiance(0.0);
     constexpr double kPhase = 1.0 / (4.0 * M_PI);
+    int scatterings = 0;
     for (int event = 0; event < kMaxEvents; ++event) {
         SurfaceHit surface;
         const bool bounded = boundary.intersect(pos, dir, kInfinity, surface);
@@ -62,14 +63,14 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
                     neeProbability(m, glm::dot(straight.position - pos, straight.normal));
                 if (rng.uniform() >= q) continue;
                 ++counters.nee;
-                RefractedLight in;
-                const LightPath path = refractedLight(boundary, light, m.eta, pos, in, &straight);
-                if (path != LightPath::Reached) {
-                    counters.neeUnsettled += path == LightPath::Unsettled;
-                    continue;
-                }
-                radiance += w.value() * kPhase * in.irradiance * transmittance(m, in.distance) / q;
+                RefractedLights in;
+                const LightPath path = refractedLights(boundary, light, m.eta, pos, in, &straight);
+                counters.neeUnsettled += path == LightPath::Unsettled;
+                for (int k = 0; k < in.count; ++k)
+                    radiance += w.value() * kPhase * in.paths[k].irradiance *
+                                transmittance(m, in.paths[k].distance) / q;
             }
+            if (++scatterings == scene.maxScatterings) break;
             const glm::dvec3 v = w.value();
             const double strength = std::max({v.x, v.y, v.z});
             if (strength < kRouletteWeight) {
@@ -91,7 +92,13 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
             pos = surface.position - surface.normal * (cosI > 0 ? eps : -eps);
             continue;
         }
-        radiance += w.value() * (m.eta * m.eta) * scene.sky;
+        glm::dvec3 sky = scene.sky;
+        if (scene.environment) {
+            glm::dvec3 out;
+            refract(dir, -surface.normal, 1.0 / m.eta, out);
+            sky += scene.environment(out);
+        }
+        radiance += w.value() * (m.eta * m.eta) * sky;
         break;
     }
     return radiance;

@@ -3,7 +3,9 @@
 // estimation through the refracting boundary, render/method_volumetric.h).
 #pragma once
 
+#include <functional>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 #include "scene/scene.h"
@@ -20,6 +22,12 @@ struct WalkScene {
     // Uniform sky radiance around the object (W/(mm²·sr)); for the validation
     // scenes that Mitsuba renders too. Zero in tsis' scenes.
     glm::dvec3 sky{0.0};
+    // Radiance arriving from direction d (unit, from the object outwards), on
+    // top of the sky, read by paths that leave the object; empty for none.
+    std::function<glm::dvec3(const glm::dvec3& d)> environment;
+    // Scattering orders summed: paths end after this many scatterings (after
+    // the last one's next-event estimation); 1 = single scattering.
+    int maxScatterings = std::numeric_limits<int>::max();
 };
 
 struct WalkCounters {

@@ -2,8 +2,12 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
+#include <unordered_map>
 
 #include "util/error.h"
 
@@ -60,9 +64,95 @@ MeshBoundary::MeshBoundary(const Mesh& mesh) : scene_(std::make_unique<Scene>())
     rtcCommitScene(scene_->scene);
     // Embree intersects in float: offsets well above its rounding at this size.
     epsilon_ = 2e-6 * std::max(1.0, extent);
+    buildNeighbours();
 }
 
 MeshBoundary::~MeshBoundary() = default;
+
+namespace {
+
+// Vertices welded by position within `tolerance` (seams and poles duplicate
+// them, not always bit for bit): a hash grid of that cell size, searched in
+// the 27 cells around each vertex.
+std::vector<int> weldVertices(const Mesh& mesh, double tolerance) {
+    std::unordered_map<uint64_t, std::vector<int>> grid;
+    auto key = [](glm::i64vec3 c) {
+        return (static_cast<uint64_t>(c.x) * 73856093u) ^ (static_cast<uint64_t>(c.y) * 19349663u) ^
+               (static_cast<uint64_t>(c.z) * 83492791u);
+    };
+    std::vector<int> welded(mesh.positions.size());
+    std::vector<glm::dvec3> weldedAt;
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::dvec3 p(mesh.positions[i]);
+        const glm::i64vec3 cell(glm::floor(p / tolerance));
+        int id = -1;
+        for (int dx = -1; dx <= 1 && id < 0; ++dx)
+            for (int dy = -1; dy <= 1 && id < 0; ++dy)
+                for (int dz = -1; dz <= 1 && id < 0; ++dz) {
+                    const auto it = grid.find(key(cell + glm::i64vec3(dx, dy, dz)));
+                    if (it == grid.end()) continue;
+                    for (int w : it->second)
+                        if (glm::length(weldedAt[static_cast<size_t>(w)] - p) <= tolerance) {
+                            id = w;
+                            break;
+                        }
+                }
+        if (id < 0) {
+            id = static_cast<int>(weldedAt.size());
+            weldedAt.push_back(p);
+            grid[key(cell)].push_back(id);
+        }
+        welded[i] = id;
+    }
+    return welded;
+}
+
+}  // namespace
+
+void MeshBoundary::buildNeighbours() {
+    const std::vector<int> welded = weldVertices(mesh_, epsilon_);
+    const int vertexCount =
+        welded.empty() ? 0 : *std::max_element(welded.begin(), welded.end()) + 1;
+    // Facets around each welded vertex (CSR).
+    std::vector<int> start(static_cast<size_t>(vertexCount) + 1, 0), around;
+    for (const glm::uvec3& t : mesh_.triangles)
+        for (int c = 0; c < 3; ++c) ++start[static_cast<size_t>(welded[t[c]]) + 1];
+    for (size_t v = 0; v < static_cast<size_t>(vertexCount); ++v) start[v + 1] += start[v];
+    around.resize(static_cast<size_t>(start.back()));
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (size_t f = 0; f < mesh_.triangles.size(); ++f)
+        for (int c = 0; c < 3; ++c)
+            around[static_cast<size_t>(
+                fill[static_cast<size_t>(welded[mesh_.triangles[f][c]])]++)] = static_cast<int>(f);
+    neighbourStart_.assign(1, 0);
+    std::vector<int> ring;
+    for (size_t f = 0; f < mesh_.triangles.size(); ++f) {
+        ring.clear();
+        for (int c = 0; c < 3; ++c) {
+            const auto v = static_cast<size_t>(welded[mesh_.triangles[f][c]]);
+            for (int i = start[v]; i < start[v + 1]; ++i)
+                if (around[static_cast<size_t>(i)] != static_cast<int>(f))
+                    ring.push_back(around[static_cast<size_t>(i)]);
+        }
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+        neighbours_.insert(neighbours_.end(), ring.begin(), ring.end());
+        neighbourStart_.push_back(static_cast<int>(neighbours_.size()));
+    }
+}
+
+bool MeshBoundary::facet(int facet, glm::dvec3 (&v)[3], glm::dvec3& normal) const {
+    const glm::uvec3 tri = mesh_.triangles[static_cast<size_t>(facet)];
+    for (int c = 0; c < 3; ++c) v[c] = glm::dvec3(mesh_.positions[tri[c]]);
+    normal = facetNormals_[static_cast<size_t>(facet)];
+    return true;
+}
+
+std::span<const int> MeshBoundary::facetNeighbours(int facet) const {
+    const auto f = static_cast<size_t>(facet);
+    return {neighbours_.data() + neighbourStart_[f],
+            static_cast<size_t>(neighbourStart_[f + 1] - neighbourStart_[f])};
+}
 
 bool MeshBoundary::intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tMax,
                              SurfaceHit& hit) const {

@@ -25,16 +25,23 @@ class MeshBoundary : public Boundary {
     bool intersect(const glm::dvec3& origin, const glm::dvec3& dir, double tMax,
                    SurfaceHit& hit) const override;
     double epsilon() const override { return epsilon_; }
+    bool facet(int facet, glm::dvec3 (&v)[3], glm::dvec3& normal) const override;
+    std::span<const int> facetNeighbours(int facet) const override;
 
     // The interpolated vertex normal at a hit (what the G-buffer and the
     // composite's exit term use), or the facet's normal without vertex normals.
     glm::dvec3 shadingNormal(const SurfaceHit& hit) const;
 
   private:
+    void buildNeighbours();
+
     struct Scene;
     std::unique_ptr<Scene> scene_;
     Mesh mesh_;  // a copy: the boundary outlives the frame's scene
     std::vector<glm::dvec3> facetNormals_;
+    // Facets sharing a (position-welded) vertex, facet f's at
+    // neighbours_[neighbourStart_[f] … neighbourStart_[f + 1]).
+    std::vector<int> neighbourStart_, neighbours_;
     double epsilon_;
 };
 
