@@ -99,7 +99,9 @@ int autoLightResolution(const Scene& scene) {
 }
 
 FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
+    // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
+    validateMaterial(scene.material);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
