@@ -58,7 +58,7 @@ class VolumetricMethod : public Method {
   public:
     explicit VolumetricMethod(ClRuntime& cl);
     const char* name() const override { return "volumetric"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The default paths per pixel when neither --spp nor --time is given.
     static constexpr int kDefaultSpp = 16;
