@@ -126,6 +126,10 @@ const BadInput kBadInputs[] = {
     {"UnknownMethodFirst", "render --method magic --mesh @DIR@/nope.off", "", "magic"},
     {"RdPartOfHybridFirst", "render --method hybrid --rd-part local --mesh @DIR@/nope.off", "",
      "--rd-part"},
+    // Issue 23: the options of other methods were accepted and ignored.
+    {"ForeignParameterFirst",
+     "render --method pyramid --rd-part local --mis-distance 3 --mesh @DIR@/nope.off", "",
+     "--rd-part is a parameter of tsis and ltsm, not of pyramid"},
     {"UnknownProfileFirst", "render --profile multipole --mesh @DIR@/nope.off", "",
      "--profile 'multipole'"},
     {"UnknownExitFirst", "render --exit pbrt --mesh @DIR@/nope.off", "", "--exit 'pbrt'"},
