@@ -6,7 +6,9 @@
 Checks that every repository path they name (in `code` or a relative link)
 is a file or folder of the tree, that every --option they name is one a tsis
 command takes (its --help) or one of the other programs listed below, and
-that design.md's method table (§4) lists exactly the methods tsis registers.
+that design.md's method table (§4) lists exactly the methods tsis registers,
+and that README's table of method options gives each the methods the
+parameter table gives it (as `tsis render --help` prints them).
 Prints one line per problem; exit 1 when there is any.
 """
 import fnmatch
@@ -98,6 +100,31 @@ def registered_methods(tsis):
     return m.group(1).split(", ") if m else []
 
 
+def parameter_methods(tsis, registry):
+    """Option → the methods `tsis render --help` says read it (its table's column)."""
+    out = subprocess.run([tsis, "render", "--help"], capture_output=True, text=True).stdout
+    owners = {}
+    for name, rest in re.findall(r"^  --([a-z-]+) +\S+ +(.*)$", out, re.M):
+        m = re.match(r"([a-z, ]+): ", rest)
+        names = m.group(1).split(", ") if m else []
+        if names and all(n in registry for n in names):
+            owners[name] = set(names)
+    return owners
+
+
+def readme_parameter_methods(readme, registry):
+    """README's table of method options: option → the methods its row names."""
+    section = re.search(r"^Options of some methods.*?\n\n(\|.*?)\n\n", readme, re.M | re.S)
+    rows = {}
+    for line in (section.group(1).split("\n") if section else [])[2:]:
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        but = re.fullmatch(r"all but ([a-z]+)", cells[1])
+        methods = set(registry) - {but.group(1)} if but else set(cells[1].split(", "))
+        for name in re.findall(r"`--([a-z-]+)", cells[0]):
+            rows[name] = methods
+    return rows
+
+
 def design_methods(design):
     section = re.search(r"^## 4\..*?(?=^## )", design, re.M | re.S)
     return re.findall(r"^\| `([a-z]+)`", section.group(0), re.M) if section else []
@@ -129,6 +156,18 @@ def main():
         problems.append("tsis render --method '?' did not list the methods")
     elif sorted(table) != sorted(registry):
         problems.append(f"docs/design.md §4 lists methods {table}; tsis registers {registry}")
+    # README's method column says what the parameter table says.
+    readme = open(os.path.join(root, "README.md"), encoding="utf-8").read()
+    owners = parameter_methods(tsis, registry)
+    rows = readme_parameter_methods(readme, registry)
+    if not rows:
+        problems.append("README.md: no table of method options found")
+    for name, methods in sorted(rows.items()):
+        if owners.get(name) != methods:
+            problems.append(f"README.md: --{name} is for {sorted(methods)}; tsis render --help "
+                            f"says {sorted(owners.get(name, set()))}")
+    for name in sorted(set(owners) - set(rows)):
+        problems.append(f"README.md: the table of method options lacks --{name}")
     for p in problems:
         print("hygiene.docs: " + p)
     return 1 if problems else 0
