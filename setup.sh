@@ -20,7 +20,7 @@ PACKAGES=(
   libcgal-dev libeigen3-dev libcgal-demo libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   libglfw3-dev libimgui-dev xvfb xauth
-  libembree-dev clang-format
+  libembree-dev clang-format python3
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}
 JOBS=${TSIS_JOBS:-$(nproc)}

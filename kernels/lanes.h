@@ -1,6 +1,6 @@
 /* Several output points in the lanes of one vector (float8 or float16), for
  * kernels that sum a tabulated profile over a list of weighted positions
- * (gather.cl: importance samples; flux_pyramid.cl: pyramid nodes). Define
+ * (gather.cl: importance samples; flux_tree.cl: flux tree nodes). Define
  * TSIS_LANE_WIDTH (8 or 16) before including. OpenCL C only.
  *
  * Vectors are built from, and split into, named per-lane values, never

@@ -34,7 +34,7 @@ typedef struct {
     tsis_uint pad;
 } TsisTableInfo;
 
-/* A node of the flux tree (kernels/flux_pyramid.cl, --method pyramid): atlas
+/* A node of the flux tree (kernels/flux_tree.cl, --method pyramid): atlas
  * texels close in 3D summed -- flux sum E*A per channel (fr, fg, fb) and
  * surface area (mm^2) -- and stood in for by their flux-weighted position
  * (px, py, pz); every texel lies within `radius` mm of that position.
@@ -47,7 +47,7 @@ typedef struct {
 /* Depth of the flux tree below its root, at most (21 bits of Morton code an
  * axis in steps of 3, plus the splits of texels that share a code): bounds
  * the descent's stack. */
-#define TSIS_PYRAMID_MAX_DEPTH 28
+#define TSIS_FLUX_TREE_MAX_DEPTH 28
 
 /* The most lights a scene may have: the one definition the host
  * (kMaxLights), the kernels and, through ShaderProgram (MAX_LIGHTS), the GLSL

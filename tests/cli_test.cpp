@@ -14,12 +14,12 @@ namespace tsis::test {
 namespace {
 
 // Small and fast, but the whole pipeline.
-const std::string kFast = "--width 96 --height 96 --atlas-res 256 --light-res 256 --samples 64 ";
+const std::string kFast = "--width 96 --height 96 --atlas-res 256 --light-res 256 ";
 
 TEST(Cli, RendersPngAovsAndStats) {
     ScratchDir dir;
-    RunResult r = runTsis("render " + kFast + "--method tsis -o " + dir.file("a.png") + " --aov " +
-                          dir.file("aov") + " --stats " + dir.file("s.json"));
+    RunResult r = runTsis("render " + kFast + "--method tsis --samples 64 -o " + dir.file("a.png") +
+                          " --aov " + dir.file("aov") + " --stats " + dir.file("s.json"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir.file("a.png")));
     for (const char* f : {"radiosity.exr", "radiance.exr", "position.exr", "normal.exr",
@@ -37,12 +37,14 @@ TEST(Cli, RendersPngAovsAndStats) {
 TEST(Cli, SameSeedSameBytesOtherSeedOtherImage) {
     ScratchDir dir;
     for (const char* name : {"a", "b"})
-        ASSERT_EQ(runTsis("render " + kFast + "--method tsis --seed 7 -o " +
+        ASSERT_EQ(runTsis("render " + kFast + "--method tsis --samples 64 --seed 7 -o " +
                           dir.file(std::string(name) + ".png"))
                       .exitCode,
                   0);
     ASSERT_EQ(
-        runTsis("render " + kFast + "--method tsis --seed 8 -o " + dir.file("c.png")).exitCode, 0);
+        runTsis("render " + kFast + "--method tsis --samples 64 --seed 8 -o " + dir.file("c.png"))
+            .exitCode,
+        0);
     std::string a = readFile(dir.file("a.png")), b = readFile(dir.file("b.png")),
                 c = readFile(dir.file("c.png"));
     EXPECT_FALSE(a.empty());
@@ -53,16 +55,18 @@ TEST(Cli, SameSeedSameBytesOtherSeedOtherImage) {
 TEST(Cli, ProgressiveFramesAreAveragedAndDeterministic) {
     ScratchDir dir;
     for (const char* name : {"a", "b"})
-        ASSERT_EQ(runTsis("render " + kFast + "--method tsis --frames 3 --progressive -o " +
-                          dir.file(std::string(name) + ".png") + " --stats " +
-                          dir.file(std::string(name) + ".json"))
-                      .exitCode,
-                  0);
+        ASSERT_EQ(
+            runTsis("render " + kFast + "--method tsis --samples 64 --frames 3 --progressive -o " +
+                    dir.file(std::string(name) + ".png") + " --stats " +
+                    dir.file(std::string(name) + ".json"))
+                .exitCode,
+            0);
     EXPECT_NE(readFile(dir.file("a.json")).find("\"accumulated_frames\": 3"), std::string::npos)
         << readFile(dir.file("a.json"));
     EXPECT_EQ(readFile(dir.file("a.png")), readFile(dir.file("b.png")));
     ASSERT_EQ(
-        runTsis("render " + kFast + "--method tsis --frames 3 -o " + dir.file("c.png")).exitCode,
+        runTsis("render " + kFast + "--method tsis --samples 64 --frames 3 -o " + dir.file("c.png"))
+            .exitCode,
         0);
     EXPECT_NE(readFile(dir.file("a.png")), readFile(dir.file("c.png")));
 }
@@ -122,6 +126,10 @@ const BadInput kBadInputs[] = {
     {"UnknownMethodFirst", "render --method magic --mesh @DIR@/nope.off", "", "magic"},
     {"RdPartOfHybridFirst", "render --method hybrid --rd-part local --mesh @DIR@/nope.off", "",
      "--rd-part"},
+    // Issue 23: the options of other methods were accepted and ignored.
+    {"ForeignParameterFirst",
+     "render --method pyramid --rd-part local --mis-distance 3 --mesh @DIR@/nope.off", "",
+     "--rd-part is a parameter of tsis and ltsm, not of pyramid"},
     {"UnknownProfileFirst", "render --profile multipole --mesh @DIR@/nope.off", "",
      "--profile 'multipole'"},
     {"UnknownExitFirst", "render --exit pbrt --mesh @DIR@/nope.off", "", "--exit 'pbrt'"},

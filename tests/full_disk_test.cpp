@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSmall = "--width 128 --height 128 --atlas-res 256 --light-res 256 --samples 64 ";
+const std::string kSmall = "--width 128 --height 128 --atlas-res 256 --light-res 256 ";
 
 class FullDisk : public ::testing::Test {
   protected:

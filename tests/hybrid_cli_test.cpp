@@ -9,22 +9,23 @@
 namespace tsis::test {
 namespace {
 
-const std::string kFast = "--width 48 --height 48 --atlas-res 128 --light-res 128 --samples 64 ";
+const std::string kFast = "--width 48 --height 48 --atlas-res 128 --light-res 128 ";
 
 TEST(HybridCli, MethodsWriteAovsAndTheirStages) {
+    // Each method with its own parameters (render/render_params.cpp).
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-        {"ltsm", {"\"ltsm\"", "\"ltsm_samples\": 17"}},
-        {"hybrid",
+        {"ltsm --ltsm-rings 4 --ltsm-per-ring 4", {"\"ltsm\"", "\"ltsm_samples\": 17"}},
+        {"hybrid --samples 64 --rp-k 3 --ltsm-rings 4 --ltsm-per-ring 4",
          {"\"global_cdf\"", "\"global_sample\"", "\"global_gather\"", "\"local_ltsm\"",
           "\"global_rd_evaluations\"", "\"local_rd_evaluations\"", "\"rd_evaluations\"", "\"rp\"",
           "\"rp_k\": 3"}},
-        {"mis", {"\"mis_cdf\"", "\"mis_sample\"", "\"mis_light_maps\"", "\"mis_gather\""}},
+        {"mis --samples 64",
+         {"\"mis_cdf\"", "\"mis_sample\"", "\"mis_light_maps\"", "\"mis_gather\""}},
     };
     for (const auto& [method, keys] : cases) {
         ScratchDir dir;
         const RunResult r =
-            runTsis("render " + kFast + "--method " + method +
-                    " --rp-k 3 --ltsm-rings 4 --ltsm-per-ring 4 -o " + dir.file("a.png") +
+            runTsis("render " + kFast + "--method " + method + " -o " + dir.file("a.png") +
                     " --aov " + dir.file("aov") + " --stats " + dir.file("s.json"));
         ASSERT_EQ(r.exitCode, 0) << method << ": " << r.err;
         EXPECT_TRUE(std::filesystem::exists(dir.path() / "aov" / "radiosity.exr")) << method;

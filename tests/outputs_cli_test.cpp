@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kFast = "--width 96 --height 96 --atlas-res 256 --light-res 256 --samples 64 ";
+const std::string kFast = "--width 96 --height 96 --atlas-res 256 --light-res 256 ";
 
 void expectOneLineError(const RunResult& r, const std::string& phrase) {
     EXPECT_NE(r.exitCode, 0);

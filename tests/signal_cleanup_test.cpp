@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSmall = "--width 96 --height 96 --atlas-res 256 --light-res 256 --samples 64 ";
+const std::string kSmall = "--width 96 --height 96 --atlas-res 256 --light-res 256 ";
 
 // `tsis ARGS` in the background, its stderr into `err`, with the default
 // action for the signals under test whatever this process has.

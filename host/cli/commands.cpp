@@ -17,6 +17,7 @@
 #include "physics/report.h"
 #include "render/aov_files.h"
 #include "render/frame_memory.h"
+#include "render/render_params.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/output_set.h"
@@ -160,8 +161,7 @@ int runAtlas(const std::vector<std::string>& argv) {
         {"mesh", true, false, "M  mesh file, builtin:NAME or a data mesh name (required)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"atlas", true, false, "MODE  auto (default), file or build"},
-        {"atlas-res", true, false,
-         "R  resolution the atlas is made for (default 512, as tsis render)"},
+        {"atlas-res", true, false, findRenderParam("atlas-res")->usage()},  // as tsis render
         {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
         {"json", false, false, "print the statistics as JSON"},
     };

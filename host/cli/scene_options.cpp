@@ -1,6 +1,5 @@
 #include "cli/scene_options.h"
 
-#include <charconv>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -10,6 +9,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/uv_check.h"
 #include "physics/material.h"
+#include "render/method.h"
+#include "render/render_params.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -27,89 +28,41 @@ std::string byDefault(const T& value) {
 }  // namespace
 
 const std::vector<OptionSpec>& sceneOptionSpecs() {
-    const SceneDefaults sd;
-    const RenderOptions d;
-    static const std::vector<OptionSpec> specs = {
-        {"mesh", true, false,
-         "M  mesh file (.off/.obj/.ply/.stl/.gltf/.glb), builtin:NAME or a data mesh name" +
-             byDefault(sd.mesh)},
-        {"size-mm", true, false, "S  bounding-box diagonal in mm" + byDefault(sd.sizeMm)},
-        {"material", true, false,
-         "NAME  preset material (see tsis materials)" + byDefault(sd.material)},
-        {"sigma-s", true, false, "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
-        {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
-        {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
-        {"light", true, true,
-         "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, "
-         "irradiance); repeatable"},
-        {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
-        {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
-        {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
-        {"fov", true, false, "DEG  vertical field of view" + byDefault(sd.fovDegrees)},
-        {"width", true, false, "W  image width" + byDefault(d.width)},
-        {"height", true, false, "H  image height" + byDefault(d.height)},
-        {"method", true, false,
-         "NAME  pyramid, tsis, hybrid, mis, ltsm, tsm, lss, hierarchical, reference, volumetric; "
-         "see README" +
-             byDefault(d.method)},
-        {"samples", true, false,
-         "N  importance samples; lss: samples per pixel" + byDefault(d.samples)},
-        {"seed", true, false, "S  random seed" + byDefault(d.seed)},
-        {"spacing", true, false,
-         "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = 1/max "
-         "σt', the smallest mean free path"},
-        {"epsilon", true, false,
-         "E  hierarchical: use an octree node whole when its area/distance^2 < E" +
-             byDefault(d.epsilon)},
-        {"pyramid-epsilon", true, false,
-         "E  pyramid: use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E ≤ 1" +
-             byDefault(d.pyramidEpsilon)},
-        {"pyramid-stride", true, false,
-         "S  pyramid: evaluate every S-th pixel and interpolate where the cell is one surface; "
-         "0 = from the mean free path and the pixel size, 1 = every pixel" +
-             byDefault(d.pyramidStride)},
-        {"rp-bound", true, false,
-         "B  hybrid: Rp is the largest r where Rd(r)·2πr crosses B" + byDefault(d.rpBound)},
-        {"rp-k", true, false,
-         "K  hybrid: slope of the local/global weights around Rp, 1/mm" + byDefault(d.rpK)},
-        {"rd-part", true, false,
-         "P  tsis, ltsm: integrate Rd (full), Rd·Wl (local) or Rd·Wg (global)" +
-             byDefault(rdPartName(d.rdPart))},
-        {"profile", true, false,
-         "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's) or pbd (photon beam "
-         "diffusion); README \"Physical accuracy\"" +
-             byDefault(profileModelName(d.profile))},
-        {"exit", true, false,
-         "E  the exit term: jensen (Ft/pi·B) or normalized (Ft/(c·pi)·B, exitance B)" +
-             byDefault(exitTermName(d.exit))},
-        {"ltsm-rings", true, false,
-         "L  ltsm, hybrid: rings of the light-view filter" + byDefault(d.ltsmRings)},
-        {"ltsm-per-ring", true, false,
-         "C  ltsm, hybrid: samples per ring (L×C+1 in all)" + byDefault(d.ltsmPerRing)},
-        {"mis-distance", true, false,
-         "M  mis: distance-driven samples per pixel and light" + byDefault(d.misDistanceSamples)},
-        {"tsm-radius", true, false,
-         "K  tsm: filter radius K/σtr of the widest channel, at most the object's bounding "
-         "radius" +
-             byDefault(d.tsmRadius)},
-        {"spp", true, false,
-         "N  volumetric: paths per pixel (default 16; with --time: until the time is up)"},
-        {"time", true, false, "S  volumetric: stop after S seconds of paths (whole passes)"},
-        {"atlas-res", true, false,
-         "R  atlas resolution, a power of two" + byDefault(d.atlasResolution)},
-        {"atlas", true, false,
-         "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or build" +
-             byDefault(sd.atlasMode)},
-        {"light-res", true, false,
-         "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 diffusion "
-         "lengths 1/max σtr across, else 1024" +
-             byDefault(d.lightResolution)},
-        {"key", true, false, "K  tone-mapping key" + byDefault(d.key)},
-        {"no-specular", false, false, "turn off the Phong highlight"},
-        {"no-reuse-lighting", false, false,
-         "make the light maps and flux atlas every frame, even when the lighting did not change"},
-        {"cl-device", true, false, "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
-    };
+    static const std::vector<OptionSpec> specs = [] {
+        const SceneDefaults sd;
+        std::vector<OptionSpec> specs = {
+            {"mesh", true, false,
+             "M  mesh file (.off/.obj/.ply/.stl/.gltf/.glb), builtin:NAME or a data mesh name" +
+                 byDefault(sd.mesh)},
+            {"size-mm", true, false, "S  bounding-box diagonal in mm" + byDefault(sd.sizeMm)},
+            {"material", true, false,
+             "NAME  preset material (see tsis materials)" + byDefault(sd.material)},
+            {"sigma-s", true, false,
+             "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
+            {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
+            {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
+            {"light", true, true,
+             "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, "
+             "irradiance); repeatable"},
+            {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
+            {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
+            {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
+            {"fov", true, false, "DEG  vertical field of view" + byDefault(sd.fovDegrees)},
+            {"atlas", true, false,
+             "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or "
+             "build" +
+                 byDefault(sd.atlasMode)},
+            {"cl-device", true, false,
+             "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
+        };
+        std::string methods;
+        for (const std::string& m : methodNames()) methods += (methods.empty() ? "" : ", ") + m;
+        specs.push_back({"method", true, false,
+                         "NAME  " + methods + "; see README" + byDefault(RenderOptions().method)});
+        for (const RenderParam& p : renderParams())
+            specs.push_back({p.name, !p.flag, false, p.usage()});
+        return specs;
+    }();
     return specs;
 }
 
@@ -189,8 +142,10 @@ std::string atlasMode(const Args& args) {
 }
 
 AtlasOptions atlasOptionsFromArgs(const Args& args) {
+    RenderOptions r;
+    if (auto v = args.value("atlas-res")) findRenderParam("atlas-res")->set(r, *v);
     AtlasOptions o;
-    o.resolution = args.getInt("atlas-res", RenderOptions{}.atlasResolution, 16, 4096);
+    o.resolution = r.atlasResolution;
     return o;
 }
 
@@ -238,122 +193,50 @@ Scene sceneFromArgs(const Args& args) {
 RenderOptions renderOptionsFromArgs(const Args& args) {
     RenderOptions o;
     o.method = args.getString("method", o.method);
-    o.width = args.getInt("width", o.width, 1, 8192);
-    o.height = args.getInt("height", o.height, 1, 8192);
-    o.samples = args.getInt("samples", o.samples, 1, 1 << 22);
-    o.seed = static_cast<uint32_t>(args.getInt("seed", o.seed, 0, 0xffffffffll >> 1));
-    o.spacingMm = args.getDouble("spacing", o.spacingMm, 1e-4, 1e4);
-    o.epsilon = static_cast<float>(args.getDouble("epsilon", o.epsilon, 0.0, 1e3));
-    o.pyramidEpsilon =
-        static_cast<float>(args.getDouble("pyramid-epsilon", o.pyramidEpsilon, 0.0, 1.0));
-    o.pyramidStride = args.getInt("pyramid-stride", o.pyramidStride, 0, 16);
-    auto powerOfTwo = [&](const char* name, int def) {
-        int r = args.getInt(name, def, 1, 8192);
-        if (r & (r - 1)) fail("--", name, " ", r, " is not a power of two");
-        return r;
-    };
-    o.atlasResolution = powerOfTwo("atlas-res", o.atlasResolution);
-    if (o.atlasResolution > 4096)
-        fail("--atlas-res ", o.atlasResolution, " is too large (at most 4096)");
-    o.lightResolution = args.getInt("light-res", o.lightResolution, 0, 8192);
-    o.rpBound = args.getDouble("rp-bound", o.rpBound, 1e-9, 1e9);
-    o.rpK = args.getDouble("rp-k", o.rpK, 0.0, 1e6);
-    o.rdPart = parseRdPart(args.getString("rd-part", rdPartName(o.rdPart)));
-    o.profile = parseProfileModel(args.getString("profile", profileModelName(o.profile)));
-    o.exit = parseExitTerm(args.getString("exit", exitTermName(o.exit)));
-    o.ltsmRings = args.getInt("ltsm-rings", o.ltsmRings, 0, 64);
-    o.ltsmPerRing = args.getInt("ltsm-per-ring", o.ltsmPerRing, 1, 256);
-    o.misDistanceSamples = args.getInt("mis-distance", o.misDistanceSamples, 0, 1 << 16);
-    o.tsmRadius = args.getDouble("tsm-radius", o.tsmRadius, 1e-3, 1e3);
-    o.spp = args.getInt("spp", o.spp, 1, 1 << 20);
-    o.timeSeconds = args.getDouble("time", o.timeSeconds, 1e-3, 1e6);
-    o.key = static_cast<float>(args.getDouble("key", o.key, 1e-4, 100.0));
-    o.specular = !args.flag("no-specular");
-    o.reuseLighting = !args.flag("no-reuse-lighting");
-    validateRenderOptions(o);
+    validateRenderOptions(o);  // the method's name first
+    for (const RenderParam& p : renderParams()) {
+        if (!args.has(p.name)) continue;
+        if (const std::string foreign = foreignParamMessage(p, o.method); !foreign.empty())
+            fail(foreign);
+        p.set(o, p.flag ? "1" : *args.value(p.name));
+    }
     return o;
 }
 
 namespace {
 
-// The shortest text that parses back to exactly v.
-template <typename T>
-std::string exact(T v) {
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
-}
-
 template <typename V>
 std::string exact3(const V& v) {
-    return exact(v.x) + "," + exact(v.y) + "," + exact(v.z);
+    return exactText(v.x) + "," + exactText(v.y) + "," + exactText(v.z);
 }
 
 }  // namespace
 
 std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec, double sizeMm) {
-    std::vector<std::string> a = {"--mesh", meshSpec, "--size-mm", exact(sizeMm)};
+    std::vector<std::string> a = {"--mesh", meshSpec, "--size-mm", exactText(sizeMm)};
     const Material& m = scene.material;
     for (const Material& p : presetMaterials())
         if (p.name == m.name) a.insert(a.end(), {"--material", m.name});
     a.insert(a.end(), {"--sigma-s", exact3(m.sigmaSPrime), "--sigma-a", exact3(m.sigmaA), "--eta",
-                       exact(m.eta)});
+                       exactText(m.eta)});
     for (const Light& l : scene.lights)
         a.insert(a.end(),
                  {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
                                  exact3(l.vec) + ":" + exact3(l.rgb)});
     const Camera& c = scene.camera;
     a.insert(a.end(), {"--eye", exact3(c.eye), "--target", exact3(c.target), "--up", exact3(c.up),
-                       "--fov", exact(c.fovYDegrees)});
+                       "--fov", exactText(c.fovYDegrees)});
     return a;
 }
 
 std::vector<std::string> renderOptionArgs(const RenderOptions& o) {
-    std::vector<std::string> a = {
-        "--method",
-        o.method,
-        "--width",
-        exact(o.width),
-        "--height",
-        exact(o.height),
-        "--samples",
-        exact(o.samples),
-        "--seed",
-        exact(o.seed),
-        "--atlas-res",
-        exact(o.atlasResolution),
-        "--light-res",
-        exact(o.lightResolution),
-        "--key",
-        exact(o.key),
-        "--rp-bound",
-        exact(o.rpBound),
-        "--rp-k",
-        exact(o.rpK),
-        "--rd-part",
-        rdPartName(o.rdPart),
-        "--profile",
-        profileModelName(o.profile),
-        "--exit",
-        exitTermName(o.exit),
-        "--ltsm-rings",
-        exact(o.ltsmRings),
-        "--ltsm-per-ring",
-        exact(o.ltsmPerRing),
-        "--mis-distance",
-        exact(o.misDistanceSamples),
-        "--epsilon",
-        exact(o.epsilon),
-        "--pyramid-epsilon",
-        exact(o.pyramidEpsilon),
-        "--pyramid-stride",
-        exact(o.pyramidStride),
-        "--tsm-radius",
-        exact(o.tsmRadius),
-    };
-    if (o.spacingMm > 0) a.insert(a.end(), {"--spacing", exact(o.spacingMm)});
-    if (!o.specular) a.push_back("--no-specular");
-    if (!o.reuseLighting) a.push_back("--no-reuse-lighting");
+    std::vector<std::string> a = {"--method", o.method};
+    // The method's own parameters and the frame-wide ones, where not the default.
+    for (const RenderParam& p : renderParams()) {
+        if (!p.usedBy(o.method) || p.isDefault(o)) continue;
+        a.push_back("--" + p.name);
+        if (!p.flag) a.push_back(p.text(o));
+    }
     return a;
 }
 

@@ -53,13 +53,16 @@ Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atla
 void loadSceneMesh(Scene& scene, const Args& args);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);
-// Parsed and validated (validateRenderOptions); touches no device or file.
+// Parsed and validated through render/render_params.h's table; a parameter
+// the method does not read is an error naming the methods that do. Touches no
+// device or file.
 RenderOptions renderOptionsFromArgs(const Args& args);
 
 // The options that give back, through parseScene and renderOptionsFromArgs,
 // this scene's material, lights and camera on the mesh `meshSpec` at sizeMm,
-// and these render options: every number printed exactly (the shortest text
-// that parses to the same value).
+// and these render options (the method's parameters and the frame-wide ones
+// that differ from the defaults): every number printed exactly (the shortest
+// text that parses to the same value).
 std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSpec, double sizeMm);
 std::vector<std::string> renderOptionArgs(const RenderOptions& options);
 

@@ -2,6 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "render/frame_keys.h"
+#include "render/method.h"
+#include "render/render_params.h"
+#include "util/error.h"
+
 namespace tsis {
 namespace {
 
@@ -20,18 +27,7 @@ TEST(SceneOptions, PrintedArgsParseBackExactly) {
     scene.camera.fovYDegrees = 27.5f;
     RenderOptions o;
     o.method = "hybrid";
-    o.width = 320;
-    o.samples = 77;
-    o.seed = 9;
-    o.atlasResolution = 256;
-    o.lightResolution = 2048;
-    o.key = 0.3f;
-    o.rpBound = 0.07;
-    o.rpK = 2.25;
-    o.ltsmRings = 3;
-    o.pyramidEpsilon = 0.01f;
-    o.spacingMm = 0.125;
-    o.specular = false;
+    o.rpBound = 1.0 / 3.0;
 
     std::vector<std::string> argv = sceneArgs(scene, "builtin:sphere", 12.5);
     for (const std::string& a : renderOptionArgs(o)) argv.push_back(a);
@@ -55,20 +51,101 @@ TEST(SceneOptions, PrintedArgsParseBackExactly) {
     EXPECT_EQ(back.camera.fovYDegrees, scene.camera.fovYDegrees);
     const RenderOptions b = renderOptionsFromArgs(args);
     EXPECT_EQ(b.method, o.method);
-    EXPECT_EQ(b.width, o.width);
-    EXPECT_EQ(b.height, o.height);
-    EXPECT_EQ(b.samples, o.samples);
-    EXPECT_EQ(b.seed, o.seed);
-    EXPECT_EQ(b.atlasResolution, o.atlasResolution);
-    EXPECT_EQ(b.lightResolution, o.lightResolution);
-    EXPECT_EQ(b.key, o.key);
     EXPECT_EQ(b.rpBound, o.rpBound);
-    EXPECT_EQ(b.rpK, o.rpK);
-    EXPECT_EQ(b.ltsmRings, o.ltsmRings);
-    EXPECT_EQ(b.pyramidEpsilon, o.pyramidEpsilon);
-    EXPECT_EQ(b.spacingMm, o.spacingMm);
-    EXPECT_EQ(b.specular, o.specular);
-    EXPECT_EQ(b.reuseLighting, o.reuseLighting);
+}
+
+// Every parameter of every method that reads it (and every frame-wide one),
+// set to a value other than its default: printed, parsed back, the same values
+// and the same frame keys.
+TEST(SceneOptions, EveryParameterRoundTripsForEveryMethod) {
+    const Scene scene = parseScene(parse({}));
+    int rows = 0;
+    for (const std::string& method : methodNames()) {
+        for (const RenderParam& p : renderParams()) {
+            if (!p.usedBy(method)) continue;
+            RenderOptions o;
+            o.method = method;
+            p.set(o, p.example);
+            ASSERT_FALSE(p.isDefault(o)) << p.name << " " << p.example;
+            std::vector<std::string> argv = renderOptionArgs(o);
+            EXPECT_NE(std::find(argv.begin(), argv.end(), "--" + p.name), argv.end()) << p.name;
+            const RenderOptions b = renderOptionsFromArgs(parse(argv));
+            EXPECT_EQ(b.method, method);
+            for (const RenderParam& q : renderParams())
+                EXPECT_EQ(q.text(b), q.text(o)) << method << " --" << p.name << ": --" << q.name;
+            const uint64_t lighting = lightingKey(scene, o, 1);
+            EXPECT_EQ(lightingKey(scene, b, 1), lighting) << method << " --" << p.name;
+            EXPECT_EQ(accumulationKey(scene, b, lighting), accumulationKey(scene, o, lighting))
+                << method << " --" << p.name;
+            // A parameter that changes the pixels changes its key; others none.
+            const RenderOptions d = [&] {
+                RenderOptions r;
+                r.method = method;
+                return r;
+            }();
+            const bool lightingMoved = lightingKey(scene, d, 1) != lighting;
+            const bool accumulationMoved =
+                accumulationKey(scene, d, lighting) != accumulationKey(scene, o, lighting);
+            EXPECT_EQ(lightingMoved, p.effect == ParamEffect::Lighting) << p.name;
+            EXPECT_EQ(accumulationMoved, p.effect == ParamEffect::Radiosity) << p.name;
+            ++rows;
+        }
+    }
+    EXPECT_GT(rows, static_cast<int>(renderParams().size()));
+}
+
+// A parameter the chosen method does not read is an error naming the methods
+// that do; every method the table names is registered.
+TEST(SceneOptions, ForeignParameterNamesItsMethods) {
+    const std::vector<std::string> names = methodNames();
+    for (const RenderParam& p : renderParams()) {
+        for (const std::string& m : p.methods)
+            EXPECT_NE(std::find(names.begin(), names.end(), m), names.end()) << p.name << ": " << m;
+        for (const std::string& method : names) {
+            if (p.usedBy(method)) continue;
+            std::vector<std::string> argv = {"--method", method, "--" + p.name};
+            if (!p.flag) argv.push_back(p.example);
+            try {
+                renderOptionsFromArgs(parse(argv));
+                ADD_FAILURE() << "--" << p.name << " accepted by " << method;
+            } catch (const Error& e) {
+                EXPECT_EQ(std::string(e.what()), foreignParamMessage(p, method));
+            }
+        }
+    }
+    EXPECT_EQ(foreignParamMessage(*findRenderParam("mis-distance"), "pyramid"),
+              "--mis-distance is a parameter of mis, not of pyramid");
+    EXPECT_EQ(foreignParamMessage(*findRenderParam("ltsm-rings"), "tsis"),
+              "--ltsm-rings is a parameter of ltsm and hybrid, not of tsis");
+    EXPECT_EQ(foreignParamMessage(*findRenderParam("width"), "tsm"), "");
+}
+
+TEST(SceneOptions, ValuesOutsideTheirRangeAreRefused) {
+    auto refused = [](const std::vector<std::string>& argv, const std::string& expect) {
+        try {
+            renderOptionsFromArgs(parse(argv));
+            ADD_FAILURE() << expect;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(expect), std::string::npos) << e.what();
+        }
+    };
+    refused({"--atlas-res", "1000"}, "--atlas-res 1000 must be a power of two from 16 to 4096");
+    refused({"--atlas-res", "8192"}, "power of two");
+    refused({"--light-res", "8"}, "--light-res 8 is out of range [16, 8192] (0: automatic)");
+    refused({"--method", "volumetric", "--spp", "0"}, "--spp 0 is out of range");
+    refused({"--method", "tsis", "--samples", "x"}, "--samples");
+    refused({"--method", "tsis", "--rd-part", "middle"}, "--rd-part 'middle'");
+    EXPECT_EQ(renderOptionsFromArgs(parse({"--light-res", "0"})).lightResolution, 0);
+    // The atlas the mesh gets and the renderer's read the one row.
+    EXPECT_EQ(atlasOptionsFromArgs(parse({"--atlas-res", "128"})).resolution, 128);
+    EXPECT_THROW(atlasOptionsFromArgs(parse({"--atlas-res", "100"})), Error);
+    // A struct filled in code goes through the same rows.
+    RenderOptions o;
+    o.samples = 0;
+    EXPECT_THROW(validateRenderOptions(o), Error);
+    o = RenderOptions();
+    o.spp = 0;  // the default (automatic) though not typeable
+    EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
 }  // namespace

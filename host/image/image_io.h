@@ -48,4 +48,16 @@ void flipRows(std::vector<T>& data, int width, int height, int channels) {
                          data.begin() + (height - 1 - y) * row);
 }
 
+// A GL RGBA read-back (row 0 = bottom) as an image of `channels` of its four,
+// from `first`, row 0 = top: the one place a frame's read-backs turn over.
+template <typename T>
+std::vector<T> fromGlRgba(const std::vector<T>& rgba, int width, int height, int channels,
+                          int first = 0) {
+    std::vector<T> out(static_cast<size_t>(width) * height * channels);
+    for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
+        for (int c = 0; c < channels; ++c) out[i * channels + c] = rgba[i * 4 + first + c];
+    flipRows(out, width, height, channels);
+    return out;
+}
+
 }  // namespace tsis

@@ -126,7 +126,7 @@ std::shared_ptr<const BeamDiffusionTable> beamDiffusionTable(double eta) {
 }
 
 BeamDiffusion::BeamDiffusion(const Material& m)
-    : table((validateMaterial(m), beamDiffusionTable(m.eta))),
+    : table((TSIS_CHECK_MATERIAL(m), beamDiffusionTable(m.eta))),
       rho(m.sigmaSPrime / (m.sigmaSPrime + m.sigmaA)),
       sigmaT(m.sigmaSPrime + m.sigmaA) {}
 

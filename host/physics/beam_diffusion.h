@@ -1,5 +1,6 @@
 // Photon beam diffusion (Habel, Christensen and Jarosz, "Photon Beam
-// Diffusion: A Hybrid Monte Carlo Method for Subsurface Scattering", 2013),
+// Diffusion: A Hybrid Monte Carlo Method for Subsurface Scattering", 2013;
+// --profile pbd, docs/design.md §2 "Profile models"),
 // tabulated as pbrt-v3 does (ComputeBeamDiffusionBSSRDF): the profile of a
 // beam entering straight down, for σt′ = 1, over albedos ρ and optical radii;
 // any σt′ by Rd(r) = σt′² Rd₁(σt′ r). Isotropic phase (σs = σs′).

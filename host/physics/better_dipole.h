@@ -1,4 +1,5 @@
-// d'Eon's better dipole (E. d'Eon, "A Better Dipole", 2012), in double
+// d'Eon's better dipole (E. d'Eon, "A Better Dipole", 2012; --profile
+// better-dipole, docs/design.md §2 "Profile models"), in double
 // precision: the classical dipole (physics/dipole.h) with
 //  * Grosjean's diffusion coefficient D = (2σa + σs′) / (3σt′²) and σtr = √(σa/D),
 //  * the boundary from the Fresnel moments of light inside, C1 and C2:

@@ -41,9 +41,9 @@ double DipoleChannel::totalReflectance() const {
     return 0.5 * alphaPrime * (1.0 + std::exp(-4.0 / 3.0 * A * root)) * std::exp(-root);
 }
 
-// Validates first so that a bad material reads as a user error, not a CHECK.
+// The material was validated where it entered; the CHECK names what is wrong.
 static std::array<DipoleChannel, 3> channels(const Material& m) {
-    validateMaterial(m);
+    TSIS_CHECK_MATERIAL(m);
     return {DipoleChannel(m.sigmaSPrime.x, m.sigmaA.x, m.eta),
             DipoleChannel(m.sigmaSPrime.y, m.sigmaA.y, m.eta),
             DipoleChannel(m.sigmaSPrime.z, m.sigmaA.z, m.eta)};

@@ -1,3 +1,5 @@
+// Fresnel reflectance and transmittance at the surface, and the exit terms
+// (docs/design.md §2: exact, not Schlick's).
 #pragma once
 
 namespace tsis {

@@ -35,27 +35,38 @@ const Material& presetMaterial(std::string_view name) {
     fail("unknown material '", name, "'; valid names: ", names);
 }
 
-void validateMaterial(const Material& m) {
+std::string materialProblem(const Material& m) {
     static const char* channel[3] = {"red", "green", "blue"};
-    auto checkCoefficient = [&](const char* field, double v, int c) {
+    auto coefficientProblem = [&](const char* field, double v, int c) -> std::string {
         if (!std::isfinite(v))
-            fail("material '", m.name, "': ", field, " ", channel[c], " is ", v,
-                 "; it must be a finite number (mm^-1)");
+            return concat("material '", m.name, "': ", field, " ", channel[c], " is ", v,
+                          "; it must be a finite number (mm^-1)");
         if (v < 0.0)
-            fail("material '", m.name, "': ", field, " ", channel[c], " is negative (", v,
-                 " mm^-1)");
+            return concat("material '", m.name, "': ", field, " ", channel[c], " is negative (", v,
+                          " mm^-1)");
+        return "";
     };
     for (int c = 0; c < 3; ++c) {
-        checkCoefficient("sigma_s'", m.sigmaSPrime[c], c);
-        checkCoefficient("sigma_a", m.sigmaA[c], c);
+        for (const std::string& p : {coefficientProblem("sigma_s'", m.sigmaSPrime[c], c),
+                                     coefficientProblem("sigma_a", m.sigmaA[c], c)})
+            if (!p.empty()) return p;
         // The dipole divides by σt' (zr = 1/σt', α' = σs'/σt').
         if (m.sigmaSPrime[c] + m.sigmaA[c] <= 0.0)
-            fail("material '", m.name, "': sigma_t' = sigma_s' + sigma_a ", channel[c],
-                 " is 0; the dipole needs a scattering or absorbing medium");
+            return concat("material '", m.name, "': sigma_t' = sigma_s' + sigma_a ", channel[c],
+                          " is 0; the dipole needs a scattering or absorbing medium");
     }
     // !(a < x && x < b) also rejects NaN.
     if (!(1.0 < m.eta && m.eta < 4.0))
-        fail("material '", m.name, "': eta is ", m.eta, "; it must lie in (1, 4)");
+        return concat("material '", m.name, "': eta is ", m.eta, "; it must lie in (1, 4)");
+    return "";
+}
+
+void validateMaterial(const Material& m) {
+    if (std::string p = materialProblem(m); !p.empty()) fail(p);
+}
+
+void checkMaterialImpl(const char* file, int line, const Material& m) {
+    if (std::string p = materialProblem(m); !p.empty()) checkFailed(file, line, p);
 }
 
 }  // namespace tsis

@@ -22,8 +22,15 @@ const std::vector<Material>& presetMaterials();
 // The preset with this name; throws Error listing the valid names.
 const Material& presetMaterial(std::string_view name);
 
-// Throws Error naming the problem for NaN/inf/negative coefficients, σt' = 0 in
-// a channel, or η outside (1, 4).
+// What is wrong with m ("" when nothing): NaN/inf/negative coefficients, σt' = 0
+// in a channel, or η outside (1, 4).
+std::string materialProblem(const Material& m);
+// User input, checked once where it enters (the CLI, the viewer's script,
+// Renderer::render): throws Error with materialProblem.
 void validateMaterial(const Material& m);
+// The physics takes validated materials: a bad one here is a bug (a CHECK
+// that prints the problem and aborts).
+void checkMaterialImpl(const char* file, int line, const Material& m);
+#define TSIS_CHECK_MATERIAL(m) ::tsis::checkMaterialImpl(__FILE__, __LINE__, m)
 
 }  // namespace tsis

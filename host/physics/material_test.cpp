@@ -86,10 +86,11 @@ TEST(Material, RejectsBadCoefficientsNamingFieldAndChannel) {
     EXPECT_EQ(rejection(a), "");
 }
 
-TEST(Material, DipoleOfBadMaterialIsUserError) {
+// User input is validated where it enters; the physics' constructors CHECK.
+TEST(Material, DipoleOfBadMaterialIsACheck) {
     Material m = presetMaterial("apple");
     m.sigmaA.x = -1.0;
-    EXPECT_THROW(Dipole{m}, Error);
+    EXPECT_DEATH(Dipole{m}, "sigma_a red is negative");
 }
 
 }  // namespace

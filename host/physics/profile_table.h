@@ -1,5 +1,6 @@
 // A radial profile (Rd, or its local/global parts) tabulated for the kernels;
-// layout and interpolation match kernels/tsis_shared.h and kernels/profile.h.
+// layout and interpolation match kernels/tsis_shared.h and kernels/profile.h
+// (docs/design.md §2, "Profiles on the device").
 #pragma once
 
 #include <functional>

@@ -73,6 +73,7 @@ void FrameGraph::executeIndices(FrameStats& stats, const std::vector<int>& outpu
     for (size_t k = 0; k < passes_.size(); ++k)
         if (keep[k])
             for (int r : passes_[k].reads) needed_[static_cast<size_t>(r)] = true;
+    kept_ = keep;
     executed_.clear();
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!keep[k]) continue;
@@ -85,6 +86,21 @@ void FrameGraph::executeIndices(FrameStats& stats, const std::vector<int>& outpu
                        cpu.ms());
         executed_.push_back(passes_[k].name);
     }
+}
+
+Json FrameGraph::describe() const {
+    auto names = [&](const std::vector<int>& indices) {
+        Json list = Json::array();
+        for (int i : indices) list.push_back(resources_[static_cast<size_t>(i)].name);
+        return list;
+    };
+    Json passes = Json::array();
+    for (size_t k = 0; k < passes_.size(); ++k)
+        passes.push_back({{"name", passes_[k].name},
+                          {"reads", names(passes_[k].reads)},
+                          {"writes", names(passes_[k].writes)},
+                          {"culled", k >= kept_.size() || !kept_[k]}});
+    return passes;
 }
 
 }  // namespace tsis

@@ -121,6 +121,9 @@ class FrameGraph {
     }
     // Names of the passes the last execute() ran (for tests and --stats).
     const std::vector<std::string>& executed() const { return executed_; }
+    // The graph of the last execute(), for --stats: every pass in order with
+    // the resources it reads and writes and whether it was culled.
+    Json describe() const;
 
   private:
     struct Resource {
@@ -142,7 +145,7 @@ class FrameGraph {
 
     std::vector<Resource> resources_;
     std::vector<Pass> passes_;
-    std::vector<bool> needed_;
+    std::vector<bool> needed_, kept_;
     std::vector<std::string> executed_;
     FrameStats* stats_ = nullptr;
 };

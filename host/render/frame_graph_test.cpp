@@ -68,6 +68,21 @@ TEST(FrameGraph, RunsWhatTheOutputNeedsInOrderAndCullsTheRest) {
     EXPECT_FALSE(c.graph.isRead(c.image)) << "an output nobody reads";
 }
 
+// --stats' "graph": every pass with what it reads and writes, culled or not.
+TEST(FrameGraph, DescribesItsPassesReadsWritesAndCulling) {
+    Chain c;
+    FrameStats stats;
+    c.graph.execute(stats, c.image);
+    const Json g = c.graph.describe();
+    ASSERT_EQ(g.size(), 4u);
+    EXPECT_EQ(g[1]["name"], "make_unused");
+    EXPECT_EQ(g[1]["culled"], true);
+    EXPECT_EQ(g[2]["name"], "make_b");
+    EXPECT_EQ(g[2]["reads"], Json::array({"a"}));
+    EXPECT_EQ(g[2]["writes"], Json::array({"b"}));
+    EXPECT_EQ(g[2]["culled"], false);
+}
+
 TEST(FrameGraph, RecordsOneStagePerPassRunWithDeviceTimeAndBytes) {
     FrameGraph graph;
     const auto x = graph.create<int>("x");

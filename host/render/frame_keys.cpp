@@ -1,5 +1,7 @@
 #include "render/frame_keys.h"
 
+#include "render/render_params.h"
+
 namespace tsis {
 
 uint64_t meshHash(const Mesh& mesh) {
@@ -16,10 +18,21 @@ void hashIrradiance(Hasher& h, const Scene& scene) {
     h.add(scene.material.eta);
 }
 
+namespace {
+
+// The rows with this effect that o.method reads, by name and value as typed.
+void hashParams(Hasher& h, const RenderOptions& o, ParamEffect effect) {
+    for (const RenderParam& p : renderParams())
+        if (p.effect == effect && p.usedBy(o.method)) h.add(p.name).add(p.text(o));
+}
+
+}  // namespace
+
 uint64_t lightingKey(const Scene& scene, const RenderOptions& o, uint64_t meshHash) {
     Hasher h(meshHash);
     hashIrradiance(h, scene);
-    return h.add(o.lightResolution).add(o.atlasResolution).digest();
+    hashParams(h, o, ParamEffect::Lighting);
+    return h.digest();
 }
 
 uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t lighting) {
@@ -27,16 +40,9 @@ uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t li
     h.add(scene.material.sigmaSPrime).add(scene.material.sigmaA);
     const Camera& c = scene.camera;
     h.add(c.eye).add(c.target).add(c.up).add(c.fovYDegrees);
-    // The exit term changes only the radiance, but volumetric's radiosity is
-    // divided by it.
-    h.add(o.method).add(o.rdPart).add(o.profile).add(o.exit);
-    for (int v : {o.width, o.height, o.samples, o.ltsmRings, o.ltsmPerRing, o.misDistanceSamples,
-                  o.pyramidStride, o.spp})
-        h.add(v);
-    for (double v : {o.rpBound, o.rpK, o.spacingMm, double(o.epsilon), double(o.pyramidEpsilon),
-                     o.tsmRadius, o.timeSeconds})
-        h.add(v);
-    return h.add(o.seed).digest();
+    h.add(o.method);
+    hashParams(h, o, ParamEffect::Radiosity);
+    return h.digest();
 }
 
 }  // namespace tsis

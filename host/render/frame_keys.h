@@ -19,12 +19,12 @@ uint64_t meshHash(const Mesh& mesh);
 void hashIrradiance(Hasher& h, const Scene& scene);
 
 // Everything the light maps and the flux atlas depend on: the mesh, the
-// lights, η and the two resolutions.
+// lights, η and the parameters whose effect is Lighting (render/render_params.h).
 uint64_t lightingKey(const Scene& scene, const RenderOptions& options, uint64_t meshHash);
 
 // Everything that changes the radiosity a frame computes, except the sample
-// set: frames with equal keys may be averaged. A new option that changes the
-// radiosity belongs here too.
+// set: frames with equal keys may be averaged. The parameters come from their
+// table (effect Radiosity, read by the method), so a new one is covered.
 uint64_t accumulationKey(const Scene& scene, const RenderOptions& options, uint64_t lightingKey);
 
 }  // namespace tsis

@@ -24,6 +24,14 @@ struct GrowingBuffer {
     }
 };
 
+// The methods' output on the CL side: B (float4, rgb) of each covered point,
+// in `storage`, which is kept across frames. A resource the frame graph
+// creates each frame, so that a method that forgets to write it fails the
+// graph's check ("reads 'radiosity_cl' which no earlier pass writes").
+struct RadiosityCl {
+    GrowingBuffer* storage = nullptr;
+};
+
 // An atlas on the CL side: res² float4, atlas row order. `version` changes
 // whenever the contents do (the flux with the lighting, the geometry with the
 // mesh or the resolution), so methods can keep what they derived from it.

@@ -23,7 +23,7 @@ void GlClStaging::declare(FrameGraph& graph, FrameContext& ctx) {
     ctx.points = graph.create<SurfacePoints>("points_cl");
     ctx.gbuffer = graph.create<CameraBuffersCl>("gbuffer_cl");
     ctx.lightMaps = graph.create<LightMapsCl>("light_maps_cl");
-    ctx.radiosity = graph.import("radiosity_cl", radiosity_);
+    ctx.radiosity = graph.create<RadiosityCl>("radiosity_cl", RadiosityCl{&radiosity_});
 }
 
 void GlClStaging::addAtlasUpload(FrameGraph& graph, const FrameContext& ctx, const char* name,
@@ -141,8 +141,8 @@ FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph, const F
             const SurfacePoints& points = res.read(ctx.points);
             std::vector<float> packed(static_cast<size_t>(points.count) * 4);
             if (!packed.empty())
-                ctx.cl->queue().enqueueReadBuffer(res.read(ctx.radiosity).buffer, CL_TRUE, 0,
-                                                  packed.size() * sizeof(float), packed.data());
+                ctx.cl->queue().enqueueReadBuffer(res.read(ctx.radiosity).storage->buffer, CL_TRUE,
+                                                  0, packed.size() * sizeof(float), packed.data());
             std::vector<float>& rgba = res.write(image).rgba;
             rgba.assign(static_cast<size_t>(ctx.width) * ctx.height * 4, 0.0f);
             for (size_t k = 0; k < points.pixel.size(); ++k) {

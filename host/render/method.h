@@ -46,13 +46,13 @@ struct FrameContext {
     FrameGraphId<LightMapsCl> lightMaps;
     // The method's output: points.count float4 (rgb B). Reserve it with
     // radiosityBuffer() inside the pass that writes it.
-    FrameGraphId<GrowingBuffer> radiosity;
+    FrameGraphId<RadiosityCl> radiosity;
 
     // The longest distance between two surface points: profile tables reach it.
     double maxDistance() const { return maxSurfaceDistance(boundingRadius); }
     cl::Buffer& radiosityBuffer(const FrameGraph::Resources& res, int pointCount) const {
-        return res.write(radiosity).reserve(cl->context(),
-                                            static_cast<size_t>(std::max(pointCount, 1)) * 16);
+        return res.write(radiosity).storage->reserve(
+            cl->context(), static_cast<size_t>(std::max(pointCount, 1)) * 16);
     }
 };
 
@@ -68,7 +68,9 @@ class Method {
     virtual const char* name() const = 0;
     // Adds the passes that write ctx.radiosity, declaring what each reads
     // (ctx's handles, the method's own), so passes nobody needs are culled.
-    virtual void addPasses(FrameGraph& graph, FrameContext& ctx) = 0;
+    // Setup only declares: tables, buffers and kernels are made inside the
+    // passes that need them.
+    virtual void addPasses(FrameGraph& graph, const FrameContext& ctx) = 0;
 };
 
 std::unique_ptr<Method> makeMethod(const std::string& name, ClRuntime& cl);

@@ -9,7 +9,7 @@ namespace tsis {
 
 HierarchicalMethod::HierarchicalMethod(ClRuntime& cl) : cl_(cl) {}
 
-void HierarchicalMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void HierarchicalMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const double spacing = ctx.options->spacingMm > 0 ? ctx.options->spacingMm
                                                       : smallestMeanFreePath(ctx.scene->material);
     const auto tree = graph.create<Marker>("hierarchical_tree");

@@ -22,7 +22,7 @@ class HierarchicalMethod : public Method {
   public:
     explicit HierarchicalMethod(ClRuntime& cl);
     const char* name() const override { return "hierarchical"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
   private:
     void build(const FrameContext& ctx, double spacing, FrameStats& stats);

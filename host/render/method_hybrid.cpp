@@ -4,7 +4,7 @@ namespace tsis {
 
 HybridMethod::HybridMethod(ClRuntime& cl) : global_(cl), local_(cl) {}
 
-void HybridMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void HybridMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
     const Material& m = ctx.scene->material;
     const KeyedProfile global = radialProfile(m, o, RdPart::Global);

@@ -16,7 +16,7 @@ class HybridMethod : public Method {
   public:
     explicit HybridMethod(ClRuntime& cl);
     const char* name() const override { return "hybrid"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
   private:
     TsisMethod global_;

@@ -47,7 +47,7 @@ TsisCamera LssMethod::camera(const Camera& c, int height) {
     return cam;
 }
 
-void LssMethod::updateTables(FrameContext& ctx) {
+void LssMethod::updateTables(const FrameContext& ctx) {
     const double rMax = ctx.maxDistance();
     Timer t;
     const KeyedProfile rd = radialProfile(ctx.scene->material, ctx.options->profile);
@@ -72,7 +72,7 @@ void LssMethod::updateTables(FrameContext& ctx) {
     }
 }
 
-void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void LssMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const auto surface = graph.create<Marker>("lss_surface");
     graph.addPass(
         "lss_prepare",
@@ -83,14 +83,11 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
         [this, &ctx](FrameGraph::Resources& res) {
             updateTables(ctx);
             const size_t pixels = static_cast<size_t>(ctx.width) * ctx.height;
-            if (surfaceCapacity_ < pixels) {
-                pos_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
-                ea_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, pixels * 16);
-                surfaceCapacity_ = pixels;
-            }
             const CameraBuffersCl& g = res.read(ctx.gbuffer);
             setKernelArgs(prepare_, g.position, g.normal, g.irradiance, static_cast<cl_int>(pixels),
-                          camera(ctx.scene->camera, ctx.height), pos_, ea_);
+                          camera(ctx.scene->camera, ctx.height),
+                          pos_.reserve(cl_.context(), pixels * 16),
+                          ea_.reserve(cl_.context(), pixels * 16));
             cl::Event e;
             enqueue1D(cl_.queue(), prepare_, pixels, kLocalSize, &e);
             res.setDeviceMs(eventMilliseconds(e));
@@ -111,13 +108,10 @@ void LssMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
             if (count == 0) return;
             Timer t;
             const size_t bytes = static_cast<size_t>(count) * sizeof(cl_int);
-            if (pixelsCapacity_ < bytes) {
-                pixels_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY, bytes);
-                pixelsCapacity_ = bytes;
-            }
-            cl_.queue().enqueueWriteBuffer(pixels_, CL_TRUE, 0, bytes, points.pixel.data());
+            cl::Buffer& pixels = pixels_.reserve(cl_.context(), bytes);
+            cl_.queue().enqueueWriteBuffer(pixels, CL_TRUE, 0, bytes, points.pixel.data());
             res.stats().addStage("lss_upload", t.ms(), static_cast<long long>(bytes));
-            setKernelArgs(gather_, pixels_, static_cast<cl_int>(count), pos_, ea_,
+            setKernelArgs(gather_, pixels, static_cast<cl_int>(count), pos_.buffer, ea_.buffer,
                           static_cast<cl_int>(ctx.width), static_cast<cl_int>(ctx.height), dirs_,
                           static_cast<cl_int>(m), radii_, static_cast<cl_int>(kRadiusEntries),
                           table_.device(cl_.context()), table_.table().info,

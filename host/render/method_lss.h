@@ -28,7 +28,7 @@ class LssMethod : public Method {
     static constexpr int kDefaultLanes = 8;
     explicit LssMethod(ClRuntime& cl, int lanes = kDefaultLanes);
     const char* name() const override { return "lss"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The camera as the kernels read it.
     static TsisCamera camera(const Camera& camera, int height);
@@ -41,12 +41,12 @@ class LssMethod : public Method {
     // and weights by that: unbiased at any table size.
 
   private:
-    void updateTables(FrameContext& ctx);
+    void updateTables(const FrameContext& ctx);
 
     ClRuntime& cl_;
     cl::Kernel prepare_, gather_;
-    cl::Buffer pos_, ea_, pixels_, dirs_, radii_;
-    size_t surfaceCapacity_ = 0, pixelsCapacity_ = 0;
+    GrowingBuffer pos_, ea_, pixels_;
+    cl::Buffer dirs_, radii_;
     int dirsCount_ = 0;
     ProfileTableCache table_;
 };

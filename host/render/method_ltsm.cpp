@@ -9,13 +9,13 @@ namespace tsis {
 
 LtsmMethod::LtsmMethod(ClRuntime& cl) : cl_(cl), kernel_(cl.kernel("ltsm.cl", "tsis_ltsm")) {}
 
-void LtsmMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void LtsmMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
     addLocalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "", false);
 }
 
-void LtsmMethod::prepare(FrameContext& ctx, const KeyedProfile& profile,
-                         const std::string& statPrefix) {
+void LtsmMethod::prepare(const FrameContext& ctx, const KeyedProfile& profile,
+                         const std::string& statPrefix, FrameStats& stats) {
     const RenderOptions& o = *ctx.options;
     Timer t;
     const std::string rings = exactKey("rings", {double(o.ltsmRings), double(o.ltsmPerRing)});
@@ -25,12 +25,12 @@ void LtsmMethod::prepare(FrameContext& ctx, const KeyedProfile& profile,
     patternBuffer_ =
         cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                    pattern_.samples.size() * sizeof(TsisRingSample), pattern_.samples.data());
-    ctx.stats->addStage(statPrefix + "ltsm_pattern", t.ms());
+    stats.addStage(statPrefix + "ltsm_pattern", t.ms());
 }
 
-void LtsmMethod::addLocalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
-                                const std::string& statPrefix, bool accumulate) {
-    prepare(ctx, profile, statPrefix);
+void LtsmMethod::addLocalPasses(FrameGraph& graph, const FrameContext& ctx,
+                                const KeyedProfile& profile, const std::string& statPrefix,
+                                bool accumulate) {
     graph.addPass(
         statPrefix + "ltsm",
         [&](FrameGraph::Builder& b) {
@@ -39,7 +39,8 @@ void LtsmMethod::addLocalPasses(FrameGraph& graph, FrameContext& ctx, const Keye
             if (accumulate) b.read(ctx.radiosity);
             b.write(ctx.radiosity);
         },
-        [this, &ctx, statPrefix, accumulate](FrameGraph::Resources& res) {
+        [this, &ctx, profile, statPrefix, accumulate](FrameGraph::Resources& res) {
+            prepare(ctx, profile, statPrefix, res.stats());
             const SurfacePoints& points = res.read(ctx.points);
             const LightMapsCl& maps = res.read(ctx.lightMaps);
             cl::Buffer& out = ctx.radiosityBuffer(res, points.count);

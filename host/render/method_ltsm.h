@@ -22,18 +22,19 @@ class LtsmMethod : public Method {
   public:
     explicit LtsmMethod(ClRuntime& cl);
     const char* name() const override { return "ltsm"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // Adds the filter pass for `profile`: writes ctx.radiosity, or adds to
     // what it holds when `accumulate`. Stats: <prefix>ltsm (ms),
     // <prefix>rd_evaluations.
-    void addLocalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
+    void addLocalPasses(FrameGraph& graph, const FrameContext& ctx, const KeyedProfile& profile,
                         const std::string& statPrefix, bool accumulate);
 
     const RingPattern& pattern() const { return pattern_; }
 
   private:
-    void prepare(FrameContext& ctx, const KeyedProfile& profile, const std::string& statPrefix);
+    void prepare(const FrameContext& ctx, const KeyedProfile& profile,
+                 const std::string& statPrefix, FrameStats& stats);
 
     ClRuntime& cl_;
     cl::Kernel kernel_;

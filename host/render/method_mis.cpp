@@ -20,7 +20,7 @@ MisMethod::MisMethod(ClRuntime& cl)
       prepare_(cl.kernel("mis.cl", "tsis_mis_prepare")),
       gather_(cl.kernel("mis.cl", "tsis_mis_gather")) {}
 
-void MisMethod::prepareTables(FrameContext& ctx) {
+void MisMethod::prepareTables(const FrameContext& ctx, FrameStats& stats) {
     const RenderOptions& o = *ctx.options;
     const KeyedProfile rd = radialProfile(ctx.scene->material, o.profile);
     const double rMax = ctx.maxDistance();
@@ -47,7 +47,7 @@ void MisMethod::prepareTables(FrameContext& ctx) {
     info_.segments = kSegments;
     info_.q_size = kQBins;
     info_.q_inv_step = static_cast<float>(kQBins / rMax);
-    ctx.stats->addStage("mis_tables", t.ms());
+    stats.addStage("mis_tables", t.ms());
 }
 
 // The lights' maps back to back (one buffer each, so one kernel sees all of
@@ -57,12 +57,9 @@ void MisMethod::prepareMaps(const FrameContext& ctx, const LightMapsCl& maps) {
     TSIS_CHECK_EQ(lights, maps.views->size());
     const int res = ctx.lightResolution;
     const size_t per = static_cast<size_t>(res) * res * sizeof(cl_float4);
-    if (mapBytes_ < per * lights) {
-        mapBytes_ = per * lights;
-        flux_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, mapBytes_);
-        position_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, mapBytes_);
-        irradiance_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, mapBytes_);
-    }
+    cl::Buffer& flux = flux_.reserve(cl_.context(), per * lights);
+    cl::Buffer& position = position_.reserve(cl_.context(), per * lights);
+    cl::Buffer& irradiance = irradiance_.reserve(cl_.context(), per * lights);
     std::vector<TsisLightMapInfo> infos;
     for (size_t l = 0; l < lights; ++l) infos.push_back(lightMapInfo((*maps.views)[l], res));
     lightInfos_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
@@ -73,12 +70,12 @@ void MisMethod::prepareMaps(const FrameContext& ctx, const LightMapsCl& maps) {
     mapEvents_.clear();
     for (size_t l = 0; l < lights; ++l) {
         mapEvents_.emplace_back();
-        q.enqueueCopyBuffer(maps.flux[l], flux_, 0, l * per, per, nullptr, &mapEvents_.back());
+        q.enqueueCopyBuffer(maps.flux[l], flux, 0, l * per, per, nullptr, &mapEvents_.back());
         mapEvents_.emplace_back();
-        q.enqueueCopyBuffer(maps.position[l], position_, 0, l * per, per, nullptr,
+        q.enqueueCopyBuffer(maps.position[l], position, 0, l * per, per, nullptr,
                             &mapEvents_.back());
     }
-    setKernelArgs(texels_, flux_, position_, info_, irradiance_);
+    setKernelArgs(texels_, flux, position, info_, irradiance);
     mapEvents_.emplace_back();
     enqueue1D(q, texels_, lights * static_cast<size_t>(res) * res, kLocalSize, &mapEvents_.back());
 }
@@ -93,30 +90,23 @@ void MisMethod::gather(const FrameContext& ctx, const SurfacePoints& points, cl:
     info_.n_dist = ctx.options->misDistanceSamples;
     info_.tex_scale = sumY > 0.0 ? static_cast<float>(n / sumY) : 0.0f;
     info_.seed = frameSeed(ctx);
-    setKernelArgs(prepare_, samples_, info_, lightInfos_, position_, irradiance_, seen_,
-                  texDensity_);
+    const size_t count = static_cast<size_t>(n), lights = ctx.scene->lights.size();
+    cl::Buffer& seen = seen_.reserve(cl_.context(), sizeof(cl_float4) * count * lights);
+    cl::Buffer& texDensity = texDensity_.reserve(cl_.context(), sizeof(float) * count);
+    setKernelArgs(prepare_, samples_.buffer, info_, lightInfos_, position_.buffer,
+                  irradiance_.buffer, seen, texDensity);
     gatherEvents_.emplace_back();
     enqueue1D(q, prepare_, static_cast<size_t>(n), kLocalSize, &gatherEvents_.back());
     if (points.count == 0) return;
-    setKernelArgs(gather_, points.xyz, points.count, info_, samples_, seen_, texDensity_,
-                  lightInfos_, flux_, position_, irradiance_, radii_, q_,
+    setKernelArgs(gather_, points.xyz, points.count, info_, samples_.buffer, seen, texDensity,
+                  lightInfos_, flux_.buffer, position_.buffer, irradiance_.buffer, radii_, q_,
                   table_.device(cl_.context()), table_.table().info, out);
     gatherEvents_.emplace_back();
     enqueue1D(q, gather_, static_cast<size_t>(points.count), kLocalSize, &gatherEvents_.back());
 }
 
-void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    prepareTables(ctx);
+void MisMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const int n = ctx.options->samples;
-    const size_t lights = ctx.scene->lights.size();
-    if (n > samplesCapacity_ || lights > seenLights_) {
-        const size_t count = static_cast<size_t>(n);
-        samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, sizeof(TsisSample) * count);
-        seen_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, sizeof(cl_float4) * count * lights);
-        texDensity_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, sizeof(float) * count);
-        samplesCapacity_ = n;
-        seenLights_ = lights;
-    }
     const auto pyramid = graph.create<Marker>("mis_pyramid");
     const auto samples = graph.create<Marker>("mis_samples");
     const auto maps = graph.create<Marker>("mis_maps");
@@ -140,6 +130,7 @@ void MisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
             b.write(ctx.radiosity);
         },
         [this, &ctx, n](FrameGraph::Resources& res) {
+            prepareTables(ctx, res.stats());
             const SurfacePoints& points = res.read(ctx.points);
             gather(ctx, points, ctx.radiosityBuffer(res, points.count));
             res.setDeviceMs(eventMilliseconds(gatherEvents_));

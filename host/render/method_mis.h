@@ -41,10 +41,10 @@ class MisMethod : public Method {
 
     explicit MisMethod(ClRuntime& cl);
     const char* name() const override { return "mis"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
   private:
-    void prepareTables(FrameContext& ctx);
+    void prepareTables(const FrameContext& ctx, FrameStats& stats);
     void prepareMaps(const FrameContext& ctx, const LightMapsCl& maps);
     void gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& out);
 
@@ -54,11 +54,9 @@ class MisMethod : public Method {
     TsisMisInfo info_{};
     ProfileTableCache table_;
     cl::Buffer radii_, q_;
-    cl::Buffer samples_, seen_, texDensity_;
-    int samplesCapacity_ = 0;
-    size_t seenLights_ = 0;
-    cl::Buffer lightInfos_, flux_, position_, irradiance_;
-    size_t mapBytes_ = 0;
+    GrowingBuffer samples_, seen_, texDensity_;
+    cl::Buffer lightInfos_;
+    GrowingBuffer flux_, position_, irradiance_;  // every light's maps back to back
     std::vector<cl::Event> mapEvents_, gatherEvents_;
 };
 

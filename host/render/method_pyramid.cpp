@@ -11,7 +11,7 @@
 
 namespace tsis {
 
-PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), pyramid_(cl) {}
+PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl) {}
 
 namespace {
 
@@ -30,15 +30,15 @@ int PyramidMethod::autoStride(const Camera& camera, int height, double ell) {
     return stride;
 }
 
-void PyramidMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
-    const auto pyramid = graph.create<Marker>("flux_pyramid");
+void PyramidMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
+    const auto tree = graph.create<Marker>("flux_tree");
     graph.addPass(
         "pyramid_build",
         [&](FrameGraph::Builder& b) {
             b.read(ctx.fluxAtlas);
             b.read(ctx.positionAtlas);
             b.read(ctx.normalAtlas);
-            b.write(pyramid);
+            b.write(tree);
         },
         [this, &ctx](FrameGraph::Resources& res) {
             res.setDeviceMs(build(ctx, res.read(ctx.fluxAtlas), res.read(ctx.positionAtlas),
@@ -47,7 +47,7 @@ void PyramidMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
     graph.addPass(
         "pyramid_gather",
         [&](FrameGraph::Builder& b) {
-            b.read(pyramid);
+            b.read(tree);
             b.read(ctx.points);
             b.write(ctx.radiosity);
         },
@@ -68,22 +68,22 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
         std::vector<float> positions(texels * 4);
         cl_.queue().enqueueReadBuffer(position.buffer, CL_TRUE, 0, positions.size() * sizeof(float),
                                       positions.data());
-        pyramid_.setLeaves(positions);
+        tree_.setLeaves(positions);
         leavesVersion_ = position.version;
         stats.addStage("pyramid_order", t.ms());
     }
     // The sums change only with the flux (a camera-only frame keeps them).
     const bool current = flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
-        pyramid_.build(flux.buffer, position.buffer, normal.buffer);
+        tree_.build(flux.buffer, position.buffer, normal.buffer);
         builtFluxVersion_ = flux.version;
         builtLeavesVersion_ = leavesVersion_;
     }
     stats.set("pyramid_rebuilt", current ? 0.0 : 1.0);
-    stats.set("pyramid_leaves", static_cast<double>(pyramid_.leafTexels().size()));
-    stats.set("pyramid_nodes", static_cast<double>(pyramid_.topology().size()));
-    stats.set("pyramid_depth", pyramid_.depth());
-    return current ? 0.0 : pyramid_.lastBuildMs();
+    stats.set("pyramid_leaves", static_cast<double>(tree_.leafTexels().size()));
+    stats.set("pyramid_nodes", static_cast<double>(tree_.topology().size()));
+    stats.set("pyramid_depth", tree_.depth());
+    return current ? 0.0 : tree_.lastBuildMs();
 }
 
 double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
@@ -100,18 +100,12 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
         planSparsePixels(points.pixel, points.host, ctx.width, ctx.height, stride,
                          static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal)));
     const std::vector<int>& order = plan.evaluate;
-    if (!order.empty()) {
-        if (orderCapacity_ < order.size()) {
-            order_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY, order.size() * sizeof(int));
-            orderCapacity_ = order.size();
-        }
-        cl_.queue().enqueueWriteBuffer(order_, CL_FALSE, 0, order.size() * sizeof(int),
-                                       order.data());
-    }
-    pyramid_.gather(points.xyz, order_, static_cast<int>(order.size()), o.pyramidEpsilon,
-                    static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
-                    radiosity);
-    const double ms = pyramid_.lastGatherMs();
+    if (!order.empty())
+        cl_.queue().enqueueWriteBuffer(order_.reserve(cl_.context(), order.size() * sizeof(int)),
+                                       CL_FALSE, 0, order.size() * sizeof(int), order.data());
+    tree_.gather(points.xyz, order_.buffer, static_cast<int>(order.size()), o.pyramidEpsilon,
+                 static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info, radiosity);
+    const double ms = tree_.lastGatherMs();
     if (!plan.interpolate.empty()) {
         Timer t;
         std::vector<float> rgba(static_cast<size_t>(points.count) * 4);
@@ -125,7 +119,7 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
     stats.set("pyramid_stride", stride);
     stats.set("pyramid_evaluated_pixels", static_cast<double>(order.size()));
     stats.set("pyramid_interpolated_pixels", static_cast<double>(plan.interpolate.size()));
-    stats.set("rd_evaluations", static_cast<double>(pyramid_.lastEvaluations()));
+    stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
     return ms;
 }
 

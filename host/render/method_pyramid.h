@@ -1,6 +1,7 @@
-// --method pyramid: error-bounded integration over the texture-space flux
-// pyramid (beyond the thesis, docs/design.md §6; cl/flux_pyramid.h,
-// kernels/flux_pyramid.cl).
+// --method pyramid: error-bounded integration over the flux tree, an octree of
+// the flux atlas' texels (beyond the thesis, docs/design.md §6; cl/flux_tree.h,
+// kernels/flux_tree.cl). "pyramid" is the user's name for the method; the
+// tree is not a pyramid (the CDF pyramid is tsis').
 //
 // The thesis draws N samples from the flux atlas' sum pyramid; Jensen &
 // Buhler sum an octree of irradiance samples top-down, using a node whole
@@ -22,7 +23,7 @@
 // scale on which B changes.
 #pragma once
 
-#include "cl/flux_pyramid.h"
+#include "cl/flux_tree.h"
 #include "render/method.h"
 #include "render/profile_table_cache.h"
 
@@ -32,7 +33,7 @@ class PyramidMethod : public Method {
   public:
     explicit PyramidMethod(ClRuntime& cl);
     const char* name() const override { return "pyramid"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The default grid stride for a camera, image height and mean free path ℓ.
     static int autoStride(const Camera& camera, int height, double ell);
@@ -49,13 +50,12 @@ class PyramidMethod : public Method {
                   FrameStats& stats);
 
     ClRuntime& cl_;
-    FluxPyramid pyramid_;
+    FluxTree tree_;
     ProfileTableCache rd_;
     uint64_t leavesVersion_ = 0;  // the position atlas' version of the leaf order (0: none)
     // What the node sums were made from (the flux atlas' version, leavesVersion_).
     uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0;
-    cl::Buffer order_;  // the covered pixels in tiles (FluxPyramid::tileOrder)
-    size_t orderCapacity_ = 0;
+    GrowingBuffer order_;  // the covered pixels in tiles (FluxTree::tileOrder)
 };
 
 }  // namespace tsis

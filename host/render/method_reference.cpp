@@ -24,7 +24,7 @@ double ReferenceMethod::defaultSpacing(const Material& m) {
     return 0.5 * smallestMeanFreePath(m);
 }
 
-void ReferenceMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const double spacing =
         ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(ctx.scene->material);
     const auto samples = graph.create<Marker>("reference_samples");

@@ -27,7 +27,7 @@ class ReferenceMethod : public Method {
   public:
     explicit ReferenceMethod(ClRuntime& cl);
     const char* name() const override { return "reference"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The default spacing h for a material: ℓ_min / 2.
     static double defaultSpacing(const Material& m);

@@ -6,21 +6,14 @@ namespace tsis {
 
 TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
-void TsisMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void TsisMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
     addGlobalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "");
 }
 
-void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
-                                 const std::string& statPrefix) {
-    Timer t;
-    if (table_.update(profile, ctx.maxDistance()))
-        ctx.stats->addStage(statPrefix + "profile_table", t.ms());
+void TsisMethod::addGlobalPasses(FrameGraph& graph, const FrameContext& ctx,
+                                 const KeyedProfile& profile, const std::string& statPrefix) {
     const int n = ctx.options->samples;
-    if (n > samplesCapacity_) {
-        samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, sizeof(TsisSample) * n);
-        samplesCapacity_ = n;
-    }
     const auto pyramid = graph.create<Marker>(statPrefix + "pyramid");
     const auto samples = graph.create<Marker>(statPrefix + "samples");
     addImportancePasses(graph, ctx, sampler_, samples_, statPrefix, pyramid, samples);
@@ -31,20 +24,23 @@ void TsisMethod::addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const Key
             b.read(ctx.points);
             b.write(ctx.radiosity);
         },
-        [this, &ctx, n, statPrefix](FrameGraph::Resources& res) {
+        [this, &ctx, n, statPrefix, profile](FrameGraph::Resources& res) {
+            Timer t;
+            if (table_.update(profile, ctx.maxDistance()))
+                res.stats().addStage(statPrefix + "profile_table", t.ms());
             const SurfacePoints& points = res.read(ctx.points);
             cl::Buffer& out = ctx.radiosityBuffer(res, points.count);
             if (points.count > 0) {
-                gatherer_.run(points.xyz, points.count, samples_, n, table_.device(cl_.context()),
-                              table_.table().info, out);
+                gatherer_.run(points.xyz, points.count, samples_.buffer, n,
+                              table_.device(cl_.context()), table_.table().info, out);
                 res.setDeviceMs(gatherer_.lastMs());
             }
             res.stats().set(statPrefix + "rd_evaluations", static_cast<double>(points.count) * n);
         });
 }
 
-void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
-                         cl::Buffer& samples, const std::string& prefix,
+void addImportancePasses(FrameGraph& graph, const FrameContext& ctx, ImportanceSampler& sampler,
+                         GrowingBuffer& samples, const std::string& prefix,
                          FrameGraphId<Marker> pyramid, FrameGraphId<Marker> drawn) {
     graph.addPass(
         prefix + "cdf",
@@ -65,9 +61,10 @@ void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler
             b.write(drawn);
         },
         [&sampler, &samples, &ctx](FrameGraph::Resources& res) {
+            const int n = ctx.options->samples;
             sampler.draw(res.read(ctx.fluxAtlas).buffer, res.read(ctx.positionAtlas).buffer,
-                         ctx.atlasResolution, ctx.options->samples, ctx.options->seed, samples,
-                         ctx.sampleSet);
+                         ctx.atlasResolution, n, ctx.options->seed,
+                         samples.reserve(ctx.cl->context(), sizeof(TsisSample) * n), ctx.sampleSet);
             res.setDeviceMs(sampler.lastDrawMs());
         });
 }

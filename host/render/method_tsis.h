@@ -17,28 +17,27 @@ class TsisMethod : public Method {
   public:
     explicit TsisMethod(ClRuntime& cl);
     const char* name() const override { return "tsis"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // Adds cdf, sample and gather passes that write ctx.radiosity with
     // `profile` (tabulated up to the object's diameter): the full Rd (or
     // --rd-part) for tsis, Rd·Wg for the hybrid's global part.
-    void addGlobalPasses(FrameGraph& graph, FrameContext& ctx, const KeyedProfile& profile,
+    void addGlobalPasses(FrameGraph& graph, const FrameContext& ctx, const KeyedProfile& profile,
                          const std::string& statPrefix);
 
   private:
     ClRuntime& cl_;
     ImportanceSampler sampler_;
     Gatherer gatherer_;
-    cl::Buffer samples_;
-    int samplesCapacity_ = 0;
+    GrowingBuffer samples_;
     ProfileTableCache table_;
 };
 
 // The importance-sampling passes tsis and mis share: <prefix>cdf builds the
 // flux atlas' CDF pyramid (writes `pyramid`), <prefix>sample draws
 // ctx.options->samples samples from it into `samples` (writes `drawn`).
-void addImportancePasses(FrameGraph& graph, FrameContext& ctx, ImportanceSampler& sampler,
-                         cl::Buffer& samples, const std::string& prefix,
+void addImportancePasses(FrameGraph& graph, const FrameContext& ctx, ImportanceSampler& sampler,
+                         GrowingBuffer& samples, const std::string& prefix,
                          FrameGraphId<Marker> pyramid, FrameGraphId<Marker> drawn);
 
 }  // namespace tsis

@@ -98,7 +98,7 @@ glm::dvec3 TsmMethod::annulusMean(const RadialImportance& rd, double a, double b
     return (outer - inner) / (std::numbers::pi * (b * b - a * a));
 }
 
-void TsmMethod::updateTables(FrameContext& ctx) {
+void TsmMethod::updateTables(const FrameContext& ctx) {
     const double diameter = ctx.maxDistance();
     const double radius =
         filterRadiusMm(ctx.scene->material, ctx.options->tsmRadius, ctx.boundingRadius);
@@ -190,7 +190,7 @@ double TsmMethod::filter(const FrameContext& ctx, const LightMapsCl& maps,
     return eventMilliseconds(events);
 }
 
-void TsmMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void TsmMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const auto pyramid = graph.create<Marker>("tsm_pyramid");
     graph.addPass(
         "tsm_pyramid",

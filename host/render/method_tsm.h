@@ -20,7 +20,7 @@ class TsmMethod : public Method {
 
     explicit TsmMethod(ClRuntime& cl);
     const char* name() const override { return "tsm"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The 21 taps (offsets and footprints in units of R; footprints sum to π).
     static std::vector<TsisTsmTap> pattern();
@@ -32,7 +32,7 @@ class TsmMethod : public Method {
     static glm::dvec3 annulusMean(const RadialImportance& rd, double a, double b, double z);
 
   private:
-    void updateTables(FrameContext& ctx);
+    void updateTables(const FrameContext& ctx);
     // Each returns its device milliseconds.
     double buildPyramids(const FrameContext& ctx, const LightMapsCl& maps);
     double filter(const FrameContext& ctx, const LightMapsCl& maps, const SurfacePoints& points,

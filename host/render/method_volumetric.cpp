@@ -17,7 +17,7 @@ namespace tsis {
 
 VolumetricMethod::VolumetricMethod(ClRuntime& cl) : cl_(cl) {}
 
-void VolumetricMethod::addPasses(FrameGraph& graph, FrameContext& ctx) {
+void VolumetricMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     graph.addPass(
         "volumetric",
         [&](FrameGraph::Builder& b) {

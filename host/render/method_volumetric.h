@@ -1,5 +1,6 @@
 // --method volumetric: volumetric light transport in the mesh's interior, the
-// physical truth the dipole model approximates (README "Physical accuracy").
+// physical truth the dipole model approximates (docs/design.md §4; measured in
+// README "Physical accuracy").
 //
 // The problem. A homogeneous medium fills the closed mesh: σs = σs′ with an
 // isotropic phase function (the similarity relation the dipole rests on),
@@ -63,7 +64,7 @@ class VolumetricMethod : public Method {
   public:
     explicit VolumetricMethod(ClRuntime& cl);
     const char* name() const override { return "volumetric"; }
-    void addPasses(FrameGraph& graph, FrameContext& ctx) override;
+    void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
     // The default paths per pixel when neither --spp nor --time is given.
     static constexpr int kDefaultSpp = 16;

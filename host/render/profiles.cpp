@@ -19,7 +19,7 @@ std::string exactKey(const std::string& base, std::initializer_list<double> valu
 }
 
 KeyedProfile radialProfile(const Material& m, ProfileModel model) {
-    validateMaterial(m);
+    TSIS_CHECK_MATERIAL(m);  // validated once a frame, in Renderer::render
     // The classical dipole's key is unchanged from before the models: "rd …".
     const std::string name = model == ProfileModel::Dipole ? "rd" : profileModelName(model);
     KeyedProfile p;

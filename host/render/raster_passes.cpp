@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/image_io.h"
 #include "tsis_shared.h"
 
 namespace tsis {
@@ -139,14 +140,8 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             out.lavg = logAverageLuminance(out.radiance);
             compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, eta, o.key,
                                    out.lavg, o.specular ? o.specularKs : 0.0f, o.shininess);
-            const std::vector<unsigned char> rgba = compositePass_.colorTarget().readRGBA8(0);
-            const int w = ctx.width, h = ctx.height;
-            out.rgb8.resize(static_cast<size_t>(w) * h * 3);
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x)
-                    for (int c = 0; c < 3; ++c)
-                        out.rgb8[(static_cast<size_t>(h - 1 - y) * w + x) * 3 + c] =
-                            rgba[(static_cast<size_t>(y) * w + x) * 4 + c];
+            out.rgb8 =
+                fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
         });
     return image;
 }

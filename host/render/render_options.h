@@ -30,6 +30,8 @@ const char* exitTermName(ExitTerm exit);
 // The exit term's factor over Jensen's Ft/π for relative index eta.
 double exitScale(ExitTerm exit, double eta);
 
+// The user-set fields' names, ranges, help and the methods that read them
+// are declared once, in render/render_params.cpp; a new field needs a row there.
 struct RenderOptions {
     std::string method = "pyramid";  // the most accurate per ms measured (README)
     int width = 512, height = 512;
@@ -78,9 +80,9 @@ struct RenderOptions {
     bool reuseLighting = true;
 };
 
-// Checks what the renderer and the methods would otherwise refuse only after
-// the mesh is loaded and GL/CL started (the method's name, --rd-part, the
-// ltsm filter), so that every option error comes first. Throws tsis::Error.
+// Checks the method's name and every parameter's value against its row of
+// render/render_params.h, what the renderer and the methods would otherwise
+// refuse only after the mesh is loaded and GL/CL started. Throws tsis::Error.
 void validateRenderOptions(const RenderOptions& o);
 
 }  // namespace tsis

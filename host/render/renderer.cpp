@@ -13,17 +13,7 @@ namespace {
 
 // GL RGBA (row 0 = bottom) → ImageF with `channels` of them, row 0 = top.
 ImageF toImage(const std::vector<float>& rgba, int w, int h, int channels, int first = 0) {
-    ImageF img;
-    img.width = w;
-    img.height = h;
-    img.channels = channels;
-    img.pixels.resize(static_cast<size_t>(w) * h * channels);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < channels; ++c)
-                img.pixels[(static_cast<size_t>(h - 1 - y) * w + x) * channels + c] =
-                    rgba[(static_cast<size_t>(y) * w + x) * 4 + first + c];
-    return img;
+    return ImageF{w, h, channels, fromGlRgba(rgba, w, h, channels, first)};
 }
 
 FrameContext frameContext(const Scene& scene, const RenderOptions& opt, ClRuntime& cl,
@@ -74,6 +64,7 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
     Json passes = Json::array();
     for (const std::string& p : graph.executed()) passes.push_back(p);
     stats.set("passes", passes);
+    stats.set("graph", graph.describe());
 }
 
 }  // namespace
@@ -99,7 +90,9 @@ int autoLightResolution(const Scene& scene) {
 }
 
 FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
+    // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
+    validateMaterial(scene.material);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");

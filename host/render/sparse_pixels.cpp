@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "cl/flux_pyramid.h"
+#include "cl/flux_tree.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -62,9 +62,9 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
         }
         plan.interpolate.push_back({int(k), c, w});
     }
-    for (int i : FluxPyramid::tileOrder(gridCells, (width + stride - 1) / stride))
+    for (int i : FluxTree::tileOrder(gridCells, (width + stride - 1) / stride))
         plan.evaluate.push_back(grid[static_cast<size_t>(i)]);
-    for (int i : FluxPyramid::tileOrder(restPixels, width))
+    for (int i : FluxTree::tileOrder(restPixels, width))
         plan.evaluate.push_back(rest[static_cast<size_t>(i)]);
     return plan;
 }

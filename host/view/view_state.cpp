@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/method.h"
+#include "render/render_params.h"
 #include "util/error.h"
 #include "util/parse.h"
 
@@ -20,12 +21,6 @@ int integerIn(const std::string& name, const std::string& value, int lo, int hi)
     const long long v = parseInteger(name, value);
     if (v < lo || v > hi) fail(name, ": ", v, " is outside [", lo, ", ", hi, "]");
     return static_cast<int>(v);
-}
-
-int powerOfTwoIn(const std::string& name, const std::string& value, int lo, int hi) {
-    const int v = integerIn(name, value, lo, hi);
-    if (v & (v - 1)) fail(name, ": ", v, " is not a power of two");
-    return v;
 }
 
 bool sameCamera(const Camera& a, const Camera& b) {
@@ -77,7 +72,7 @@ Scene sceneOf(const ViewState& state, std::shared_ptr<const Mesh> mesh) {
 }
 
 bool drawsSamples(const std::string& method) {
-    return method == "tsis" || method == "hybrid" || method == "mis" || method == "lss";
+    return findRenderParam("samples")->usedBy(method);
 }
 
 const std::vector<std::string>& parameterNames() {
@@ -104,12 +99,8 @@ void setParameter(ViewState& state, const std::string& name, const std::string& 
     } else if (name == "method") {
         o.method = value;
         validateRenderOptions(o);
-    } else if (name == "samples") {
-        o.samples = integerIn(name, value, 1, 1 << 22);
-    } else if (name == "atlas-res") {
-        o.atlasResolution = powerOfTwoIn(name, value, 16, 4096);
-    } else if (name == "light-res") {
-        o.lightResolution = value == "0" ? 0 : powerOfTwoIn(name, value, 16, 8192);
+    } else if (name == "samples" || name == "atlas-res" || name == "light-res") {
+        findRenderParam(name)->set(o, value);  // the ranges of the command line's options
     } else if (name == "progressive") {
         s.progressive = onOff(name, value);
     } else if (name == "frames") {

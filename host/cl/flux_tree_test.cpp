@@ -1,4 +1,4 @@
-#include "cl/flux_pyramid.h"
+#include "cl/flux_tree.h"
 
 #include <gtest/gtest.h>
 
@@ -46,37 +46,37 @@ struct SyntheticAtlas {
     glm::dvec3 at(size_t i) const { return {position[i].s[0], position[i].s[1], position[i].s[2]}; }
 };
 
-class FluxPyramidTest : public ClTest {
+class FluxTreeTest : public ClTest {
   protected:
-    FluxPyramid pyramid{rt};
+    FluxTree tree{rt};
     SyntheticAtlas atlas{5};
 
     void build() {
         std::vector<float> positions;
         for (const cl_float4& p : atlas.position) positions.insert(positions.end(), p.s, p.s + 4);
-        pyramid.setLeaves(positions);
-        pyramid.build(upload(atlas.flux), upload(atlas.position), upload(atlas.normal));
+        tree.setLeaves(positions);
+        tree.build(upload(atlas.flux), upload(atlas.position), upload(atlas.normal));
     }
     std::vector<TsisFluxNode> nodes() {
-        return download<TsisFluxNode>(pyramid.nodes(), pyramid.topology().size());
+        return download<TsisFluxNode>(tree.nodes(), tree.topology().size());
     }
     // The texels under node i of the tree.
     void texelsUnder(int i, std::vector<int>& out) const {
-        const cl_int4& t = pyramid.topology()[size_t(i)];
+        const cl_int4& t = tree.topology()[size_t(i)];
         if (t.s[1] == 0) {
             if (atlas.covered(size_t(t.s[2]))) out.push_back(t.s[2]);
             return;
         }
         for (int c = t.s[0]; c < t.s[0] + t.s[1]; ++c) texelsUnder(c, out);
     }
-    // B at `points` through the pyramid with `epsilon`.
+    // B at `points` through the tree with `epsilon`.
     std::vector<cl_float4> gather(const std::vector<cl_float4>& points, float epsilon,
                                   const ProfileTable& t, float ell = 0.5f) {
         cl::Buffer out = buffer(points.size() * sizeof(cl_float4));
         std::vector<cl_int> order(points.size());
         for (size_t j = 0; j < order.size(); ++j) order[j] = cl_int(order.size() - 1 - j);
-        pyramid.gather(upload(points), upload(order), int(points.size()), epsilon, ell,
-                       upload(t.rgba), t.info, out);
+        tree.gather(upload(points), upload(order), int(points.size()), epsilon, ell, upload(t.rgba),
+                    t.info, out);
         return download<cl_float4>(out, points.size());
     }
     // The exact sum over every covered texel, in double.
@@ -102,9 +102,9 @@ std::vector<cl_float4> pointsOnCharts(int count, uint32_t seed) {
 // The leaves are the covered texels, each once, in Morton order of their
 // positions (the two charts, 3 mm apart, do not interleave), and every node's
 // children are contiguous and at most 8.
-TEST_F(FluxPyramidTest, LeavesAreTheCoveredTexelsInSpatialOrder) {
+TEST_F(FluxTreeTest, LeavesAreTheCoveredTexelsInSpatialOrder) {
     build();
-    const std::vector<int>& leaves = pyramid.leafTexels();
+    const std::vector<int>& leaves = tree.leafTexels();
     std::vector<int> sorted = leaves;
     std::sort(sorted.begin(), sorted.end());
     std::vector<int> covered;
@@ -119,13 +119,13 @@ TEST_F(FluxPyramidTest, LeavesAreTheCoveredTexelsInSpatialOrder) {
     texelsUnder(0, under);
     std::sort(under.begin(), under.end());
     EXPECT_EQ(under, covered) << "the root holds every texel once";
-    for (const cl_int4& t : pyramid.topology()) EXPECT_LE(t.s[1], 8);
-    EXPECT_LE(pyramid.depth(), TSIS_PYRAMID_MAX_DEPTH);
+    for (const cl_int4& t : tree.topology()) EXPECT_LE(t.s[1], 8);
+    EXPECT_LE(tree.depth(), TSIS_FLUX_TREE_MAX_DEPTH);
 }
 
 // Every node sums its texels' flux and area, sits at their flux-weighted
 // position, and its radius holds every one of them.
-TEST_F(FluxPyramidTest, NodesSumTheirTexelsAndBoundThemInRadius) {
+TEST_F(FluxTreeTest, NodesSumTheirTexelsAndBoundThemInRadius) {
     build();
     const std::vector<TsisFluxNode> n = nodes();
     for (size_t i = 0; i < n.size(); ++i) {
@@ -155,7 +155,7 @@ TEST_F(FluxPyramidTest, NodesSumTheirTexelsAndBoundThemInRadius) {
     EXPECT_GT(n.front().radius, 1.5f);
 }
 
-TEST_F(FluxPyramidTest, EpsilonZeroIsTheExactSumOverTheAtlas) {
+TEST_F(FluxTreeTest, EpsilonZeroIsTheExactSumOverTheAtlas) {
     build();
     const ProfileTable t = analyticTable(10.0);
     const std::vector<cl_float4> points = pointsOnCharts(37, 2);  // not a multiple of 8
@@ -167,10 +167,10 @@ TEST_F(FluxPyramidTest, EpsilonZeroIsTheExactSumOverTheAtlas) {
     // Every covered texel for every lane of each group of 8.
     size_t covered = 0;
     for (size_t i = 0; i < atlas.flux.size(); ++i) covered += atlas.covered(i);
-    EXPECT_EQ(pyramid.lastEvaluations(), static_cast<long long>(5 * 8 * covered));
+    EXPECT_EQ(tree.lastEvaluations(), static_cast<long long>(5 * 8 * covered));
 }
 
-TEST_F(FluxPyramidTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
+TEST_F(FluxTreeTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
     build();
     const ProfileTable t = analyticTable(10.0);
     const std::vector<cl_float4> points = pointsOnCharts(64, 3);
@@ -178,7 +178,7 @@ TEST_F(FluxPyramidTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
     long long lastCost = 0;
     for (float epsilon : {0.5f, 0.1f, 0.03f, 0.01f}) {
         const std::vector<cl_float4> b = gather(points, epsilon, t);
-        const long long cost = pyramid.lastEvaluations();
+        const long long cost = tree.lastEvaluations();
         double worst = 0;
         for (size_t j = 0; j < points.size(); ++j) {
             const glm::dvec3 e = exact(points[j], t);
@@ -195,7 +195,7 @@ TEST_F(FluxPyramidTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
     }
 }
 
-TEST_F(FluxPyramidTest, SameInputsGiveTheSameBits) {
+TEST_F(FluxTreeTest, SameInputsGiveTheSameBits) {
     build();
     const ProfileTable t = analyticTable(10.0);
     const std::vector<cl_float4> points = pointsOnCharts(40, 4);
@@ -213,17 +213,17 @@ namespace tsis {
 namespace {
 
 // A full 8×4 image: runs of 8 in the order are the 4×2 tiles, row-major within.
-TEST(FluxPyramidOrder, GroupsPixelsByTiles) {
+TEST(FluxTreeOrder, GroupsPixelsByTiles) {
     std::vector<int> pixels(32);
     for (int i = 0; i < 32; ++i) pixels[i] = i;
-    const std::vector<int> order = FluxPyramid::tileOrder(pixels, 8);
+    const std::vector<int> order = FluxTree::tileOrder(pixels, 8);
     const std::vector<int> expected = {0,  1,  2,  3,  8,  9,  10, 11, 4,  5,  6,
                                        7,  12, 13, 14, 15, 16, 17, 18, 19, 24, 25,
                                        26, 27, 20, 21, 22, 23, 28, 29, 30, 31};
     EXPECT_EQ(order, expected);
     // With holes: still a permutation of the covered points.
     const std::vector<int> sparse = {1, 5, 9, 30};
-    EXPECT_EQ(FluxPyramid::tileOrder(sparse, 8), (std::vector<int>{0, 2, 1, 3}));
+    EXPECT_EQ(FluxTree::tileOrder(sparse, 8), (std::vector<int>{0, 2, 1, 3}));
 }
 
 }  // namespace

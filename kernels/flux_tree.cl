@@ -6,7 +6,7 @@
  * two of them can never be used whole. So the atlas' covered texels are the
  * leaves of an octree over their positions, built once per mesh and atlas
  * resolution on the host from their sorted 3D Morton codes
- * (FluxPyramid::setLeaves; single-child levels skipped, up to 8 children a
+ * (FluxTree::setLeaves; single-child levels skipped, up to 8 children a
  * node), and only its sums are made again on the device whenever the flux
  * atlas changes. Each node (TsisFluxNode) keeps what Jensen & Buhler's
  * hierarchical integration needs: the flux per channel, the surface area,
@@ -123,12 +123,12 @@ static inline float tsis_hmin8(const float8 v) {
 #define TSIS_STORE_ORDERED(k) \
     if (base + 0x##k < count) out[i##k] = (float4)(br.s##k, bg.s##k, bb.s##k, 0.0f);
 
-kernel void tsis_flux_pyramid_gather(const __global float4* points, const __global int* order,
-                                     const int count, const __global TsisFluxNode* nodes,
-                                     const __global int4* topology, const float epsilon,
-                                     const float ell2, const __global float2* split,
-                                     const TsisTableInfo info, __global float4* out,
-                                     __global int* evaluations) {
+kernel void tsis_flux_tree_gather(const __global float4* points, const __global int* order,
+                                  const int count, const __global TsisFluxNode* nodes,
+                                  const __global int4* topology, const float epsilon,
+                                  const float ell2, const __global float2* split,
+                                  const TsisTableInfo info, __global float4* out,
+                                  __global int* evaluations) {
     const int item = get_global_id(0);
     const int base = item * TSIS_LANE_WIDTH;
     if (base >= count) return;
@@ -138,7 +138,7 @@ kernel void tsis_flux_pyramid_gather(const __global float4* points, const __glob
     int used = 0;
     /* Depth-first: each opened node pushes its children (at most 8), so the
      * stack never holds more than 7 per depth plus one. */
-    int stack[7 * TSIS_PYRAMID_MAX_DEPTH + 1];
+    int stack[7 * TSIS_FLUX_TREE_MAX_DEPTH + 1];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0) {

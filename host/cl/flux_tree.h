@@ -1,4 +1,4 @@
-// The flux tree (kernels/flux_pyramid.cl): the covered texels of the flux
+// The flux tree (kernels/flux_tree.cl): the covered texels of the flux
 // atlas as the leaves of an octree over their 3D positions (built once per
 // mesh and atlas resolution), each node summing its texels' flux and area
 // and keeping their flux-weighted position and a radius bounding them, the
@@ -14,9 +14,9 @@
 
 namespace tsis {
 
-class FluxPyramid {
+class FluxTree {
   public:
-    explicit FluxPyramid(ClRuntime& cl);
+    explicit FluxTree(ClRuntime& cl);
 
     // The tree's leaves and shape from the atlas' float4 positions (res²,
     // w > 0 where covered): the covered texels sorted by their 3D Morton
@@ -34,7 +34,7 @@ class FluxPyramid {
     // the points taken in groups of kPointsPerItem in the order `order` (count
     // indices into points; neighbours in it should be near each other), f the
     // float4 table (ProfileTable::rgba layout). A node is used whole when
-    // max(radius², area/π) < epsilon·(d² + ell²) (flux_pyramid.cl); ell the
+    // max(radius², area/π) < epsilon·(d² + ell²) (flux_tree.cl); ell the
     // smallest mean free path (mm). Needs build() first.
     void gather(const cl::Buffer& points, const cl::Buffer& order, int count, float epsilon,
                 float ell, const cl::Buffer& table, const TsisTableInfo& info, cl::Buffer& out);

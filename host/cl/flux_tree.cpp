@@ -1,4 +1,4 @@
-#include "cl/flux_pyramid.h"
+#include "cl/flux_tree.h"
 
 #include <algorithm>
 #include <glm/common.hpp>
@@ -18,13 +18,13 @@ constexpr size_t kLocalGather = 4;  // as the lane gather (cl/gather.cpp)
 
 }  // namespace
 
-FluxPyramid::FluxPyramid(ClRuntime& cl)
+FluxTree::FluxTree(ClRuntime& cl)
     : cl_(cl),
-      update_(cl.kernel("flux_pyramid.cl", "tsis_flux_tree_update")),
+      update_(cl.kernel("flux_tree.cl", "tsis_flux_tree_update")),
       split_(cl.kernel("gather.cl", "tsis_profile_split")),
-      gather_(cl.kernel("flux_pyramid.cl", "tsis_flux_pyramid_gather")) {}
+      gather_(cl.kernel("flux_tree.cl", "tsis_flux_tree_gather")) {}
 
-void FluxPyramid::setLeaves(const std::vector<float>& positionRGBA) {
+void FluxTree::setLeaves(const std::vector<float>& positionRGBA) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (size_t i = 0; i + 3 < positionRGBA.size(); i += 4)
         if (positionRGBA[i + 3] > 0) {
@@ -95,14 +95,13 @@ void FluxPyramid::setLeaves(const std::vector<float>& positionRGBA) {
         queue.insert(queue.end(), children.begin(), children.end());
     }
     depthBegin_.push_back(static_cast<int>(queue.size()));
-    TSIS_CHECK_LE(depthBegin_.size(), size_t(TSIS_PYRAMID_MAX_DEPTH + 2));
+    TSIS_CHECK_LE(depthBegin_.size(), size_t(TSIS_FLUX_TREE_MAX_DEPTH + 2));
     topologyBuffer_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                                  topology_.size() * sizeof(cl_int4), topology_.data());
     nodes_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, topology_.size() * sizeof(TsisFluxNode));
 }
 
-void FluxPyramid::build(const cl::Buffer& flux, const cl::Buffer& position,
-                        const cl::Buffer& normal) {
+void FluxTree::build(const cl::Buffer& flux, const cl::Buffer& position, const cl::Buffer& normal) {
     TSIS_CHECK(!topology_.empty());  // setLeaves() first
     cl::CommandQueue& q = cl_.queue();
     buildEvents_.clear();
@@ -115,7 +114,7 @@ void FluxPyramid::build(const cl::Buffer& flux, const cl::Buffer& position,
     }
 }
 
-std::vector<int> FluxPyramid::tileOrder(const std::vector<int>& pixels, int width) {
+std::vector<int> FluxTree::tileOrder(const std::vector<int>& pixels, int width) {
     constexpr int kTileW = 4, kTileH = 2;  // kTileW·kTileH = kPointsPerItem
     static_assert(kTileW * kTileH == kPointsPerItem);
     const int tilesPerRow = (width + kTileW - 1) / kTileW;
@@ -131,9 +130,9 @@ std::vector<int> FluxPyramid::tileOrder(const std::vector<int>& pixels, int widt
     return order;
 }
 
-void FluxPyramid::gather(const cl::Buffer& points, const cl::Buffer& order, int count,
-                         float epsilon, float ell, const cl::Buffer& table,
-                         const TsisTableInfo& info, cl::Buffer& out) {
+void FluxTree::gather(const cl::Buffer& points, const cl::Buffer& order, int count, float epsilon,
+                      float ell, const cl::Buffer& table, const TsisTableInfo& info,
+                      cl::Buffer& out) {
     TSIS_CHECK(!topology_.empty());  // setLeaves() and build() first
     TSIS_CHECK_GE(count, 0);
     TSIS_CHECK_GE(info.size, 2u);
@@ -162,7 +161,7 @@ void FluxPyramid::gather(const cl::Buffer& points, const cl::Buffer& order, int 
     enqueue1D(q, gather_, size_t(lastItems_), kLocalGather, &gatherEvents_.back());
 }
 
-long long FluxPyramid::lastEvaluations() {
+long long FluxTree::lastEvaluations() {
     if (lastItems_ == 0 || gatherEvents_.empty()) return 0;
     std::vector<cl_int> used(size_t(lastItems_), 0);
     cl_.queue().enqueueReadBuffer(evaluations_, CL_TRUE, 0, used.size() * sizeof(cl_int),
@@ -171,11 +170,11 @@ long long FluxPyramid::lastEvaluations() {
     return std::accumulate(used.begin(), used.end(), 0LL) * kPointsPerItem;
 }
 
-double FluxPyramid::lastBuildMs() const {
+double FluxTree::lastBuildMs() const {
     return eventMilliseconds(buildEvents_);
 }
 
-double FluxPyramid::lastGatherMs() const {
+double FluxTree::lastGatherMs() const {
     return eventMilliseconds(gatherEvents_);
 }
 

@@ -1,0 +1,204 @@
+#include "render/render_params.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <type_traits>
+
+#include "util/error.h"
+#include "util/parse.h"
+
+namespace tsis {
+
+namespace {
+
+// The values a number accepts as typed: lo to hi, optionally only powers of
+// two, optionally 0 for "automatic" as well.
+struct Range {
+    double lo, hi;
+    bool powerOfTwo = false;
+    bool zeroIsAuto = false;
+};
+
+template <typename T>
+RenderParam number(RenderParam p, T RenderOptions::*field, Range r) {
+    p.text = [field](const RenderOptions& o) { return exactText(o.*field); };
+    p.set = [field, r, what = "--" + p.name](RenderOptions& o, const std::string& value) {
+        double v;
+        if constexpr (std::is_integral_v<T>)
+            v = static_cast<double>(parseInteger(what, value));
+        else
+            v = parseNumber(what, value);
+        if (!(r.zeroIsAuto && v == 0)) {
+            const bool inRange = v >= r.lo && v <= r.hi;
+            const auto i = static_cast<int64_t>(v);
+            if (r.powerOfTwo && (!inRange || (i & (i - 1))))
+                fail(what, " ", value, " must be a power of two from ", exactText(r.lo), " to ",
+                     exactText(r.hi));
+            if (!inRange)
+                fail(what, " ", value, " is out of range [", exactText(r.lo), ", ", exactText(r.hi),
+                     "]", r.zeroIsAuto ? " (0: automatic)" : "");
+        }
+        o.*field = static_cast<T>(v);
+    };
+    const T def = RenderOptions{}.*field;
+    p.example = exactText(static_cast<T>(static_cast<T>(r.lo) == def ? r.hi : r.lo));
+    return p;
+}
+
+template <typename E>
+RenderParam choice(RenderParam p, E RenderOptions::*field, E (*parse)(const std::string&),
+                   const char* (*name)(E), E example) {
+    p.text = [field, name](const RenderOptions& o) { return std::string(name(o.*field)); };
+    p.set = [field, parse](RenderOptions& o, const std::string& value) { o.*field = parse(value); };
+    p.example = name(example);
+    return p;
+}
+
+// A flag that turns a setting that is on by default off ("--no-specular").
+RenderParam turnsOff(RenderParam p, bool RenderOptions::*field) {
+    p.flag = true;
+    p.showDefault = false;
+    p.text = [field](const RenderOptions& o) { return std::string(o.*field ? "0" : "1"); };
+    p.set = [field](RenderOptions& o, const std::string& value) { o.*field = value != "1"; };
+    p.example = "1";
+    return p;
+}
+
+using M = std::vector<std::string>;
+const M kEvery;  // a frame-wide setting
+constexpr auto kLighting = ParamEffect::Lighting;
+constexpr auto kRadiosity = ParamEffect::Radiosity;
+constexpr auto kDisplay = ParamEffect::Display;
+
+std::vector<RenderParam> makeParams() {
+    using O = RenderOptions;
+    return {
+        number({"width", "W  image width", kEvery, kRadiosity}, &O::width, {1, 8192}),
+        number({"height", "H  image height", kEvery, kRadiosity}, &O::height, {1, 8192}),
+        number({"samples", "N  importance samples; lss: samples per pixel",
+                M{"tsis", "hybrid", "mis", "lss"}, kRadiosity},
+               &O::samples, {1, 1 << 22}),
+        number({"seed", "S  random seed", kEvery, kRadiosity}, &O::seed, {0, 0x7fffffff}),
+        number({"spacing",
+                "MM  sample spacing of reference (default ℓ/2) and hierarchical (default ℓ); ℓ = "
+                "1/max σt', the smallest mean free path",
+                M{"reference", "hierarchical"}, kRadiosity, false, false},
+               &O::spacingMm, {1e-4, 1e4}),
+        number({"epsilon", "E  use an octree node whole when its area/distance^2 < E",
+                M{"hierarchical"}, kRadiosity},
+               &O::epsilon, {0, 1e3}),
+        number({"pyramid-epsilon",
+                "E  use a node whole when max(radius^2, area/pi) < E·(d^2 + l^2), 0 ≤ E "
+                "≤ 1",
+                M{"pyramid"}, kRadiosity},
+               &O::pyramidEpsilon, {0, 1}),
+        number({"pyramid-stride",
+                "S  evaluate every S-th pixel and interpolate where the cell is one "
+                "surface; 0 = from the mean free path and the pixel size, 1 = every pixel",
+                M{"pyramid"}, kRadiosity},
+               &O::pyramidStride, {0, 16}),
+        // tsis and ltsm split Rd at Rp too when --rd-part is local or global.
+        number({"rp-bound",
+                "B  Rp is the largest r where Rd(r)·2πr crosses B (tsis, ltsm: with --rd-part "
+                "local or global)",
+                M{"hybrid", "tsis", "ltsm"}, kRadiosity},
+               &O::rpBound, {1e-9, 1e9}),
+        number({"rp-k",
+                "K  slope of the local/global weights around Rp, 1/mm (tsis, ltsm: with --rd-part "
+                "local or global)",
+                M{"hybrid", "tsis", "ltsm"}, kRadiosity},
+               &O::rpK, {0, 1e6}),
+        choice({"rd-part", "P  integrate Rd (full), Rd·Wl (local) or Rd·Wg (global)",
+                M{"tsis", "ltsm"}, kRadiosity},
+               &O::rdPart, parseRdPart, rdPartName, RdPart::Local),
+        choice({"profile",
+                "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's) or pbd (photon "
+                "beam diffusion); README \"Physical accuracy\"",
+                M{"pyramid", "tsis", "hybrid", "mis", "ltsm", "tsm", "lss", "hierarchical",
+                  "reference"},
+                kRadiosity},
+               &O::profile, parseProfileModel, profileModelName, ProfileModel::Pbd),
+        // The exit term changes only the radiance, but volumetric's radiosity
+        // is divided by it.
+        choice(
+            {"exit", "E  the exit term: jensen (Ft/pi·B) or normalized (Ft/(c·pi)·B, exitance B)",
+             kEvery, kRadiosity},
+            &O::exit, parseExitTerm, exitTermName, ExitTerm::Normalized),
+        number({"ltsm-rings", "L  rings of the light-view filter", M{"ltsm", "hybrid"}, kRadiosity},
+               &O::ltsmRings, {0, 64}),
+        number({"ltsm-per-ring", "C  samples per ring (L×C+1 in all)", M{"ltsm", "hybrid"},
+                kRadiosity},
+               &O::ltsmPerRing, {1, 256}),
+        number({"mis-distance", "M  distance-driven samples per pixel and light", M{"mis"},
+                kRadiosity},
+               &O::misDistanceSamples, {0, 1 << 16}),
+        number({"tsm-radius",
+                "K  filter radius K/σtr of the widest channel, at most the object's "
+                "bounding radius",
+                M{"tsm"}, kRadiosity},
+               &O::tsmRadius, {1e-3, 1e3}),
+        number({"spp", "N  paths per pixel (default 16; with --time: until the time is up)",
+                M{"volumetric"}, kRadiosity, false, false},
+               &O::spp, {1, 1 << 20}),
+        number({"time", "S  stop after S seconds of paths (whole passes)", M{"volumetric"},
+                kRadiosity, false, false},
+               &O::timeSeconds, {1e-3, 1e6}),
+        number({"atlas-res", "R  atlas resolution, a power of two", kEvery, kLighting},
+               &O::atlasResolution, {16, 4096, true}),
+        number({"light-res",
+                "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 "
+                "diffusion lengths 1/max σtr across, else 1024",
+                kEvery, kLighting},
+               &O::lightResolution, {16, 8192, false, true}),
+        number({"key", "K  tone-mapping key", kEvery, kDisplay}, &O::key, {1e-4, 100}),
+        turnsOff({"no-specular", "turn off the Phong highlight", kEvery, kDisplay}, &O::specular),
+        turnsOff({"no-reuse-lighting",
+                  "make the light maps and flux atlas every frame, even when the lighting did not "
+                  "change",
+                  kEvery, ParamEffect::None},
+                 &O::reuseLighting),
+    };
+}
+
+}  // namespace
+
+bool RenderParam::usedBy(const std::string& method) const {
+    return methods.empty() || std::find(methods.begin(), methods.end(), method) != methods.end();
+}
+
+std::string RenderParam::usage() const {
+    // "METAVAR  text": the methods go between.
+    const size_t gap = help.find("  ");
+    std::string owners;
+    for (const std::string& m : methods) owners += (owners.empty() ? "" : ", ") + m;
+    std::string line = gap == std::string::npos || owners.empty()
+                           ? help
+                           : help.substr(0, gap + 2) + owners + ": " + help.substr(gap + 2);
+    if (showDefault) line += " (default " + text(RenderOptions{}) + ")";
+    return line;
+}
+
+bool RenderParam::isDefault(const RenderOptions& o) const {
+    return text(o) == text(RenderOptions{});
+}
+
+const std::vector<RenderParam>& renderParams() {
+    static const std::vector<RenderParam> params = makeParams();
+    return params;
+}
+
+const RenderParam* findRenderParam(const std::string& name) {
+    for (const RenderParam& p : renderParams())
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+std::string foreignParamMessage(const RenderParam& p, const std::string& method) {
+    if (p.usedBy(method)) return "";
+    std::string owners;
+    for (size_t i = 0; i < p.methods.size(); ++i)
+        owners += (i == 0 ? "" : i + 1 == p.methods.size() ? " and " : ", ") + p.methods[i];
+    return "--" + p.name + " is a parameter of " + owners + ", not of " + method;
+}
+
+}  // namespace tsis
