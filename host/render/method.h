@@ -14,6 +14,7 @@
 #include "render/frame_graph.h"
 #include "render/frame_resources.h"
 #include "render/frame_stats.h"
+#include "render/profiles.h"
 #include "render/render_options.h"
 #include "scene/projection.h"
 #include "scene/scene.h"
@@ -34,6 +35,9 @@ struct FrameContext {
     glm::mat4 viewProj{1.0f};
     glm::vec3 eye{0.0f};
     int lightResolution = 0;
+    // Rd's per-channel scale from --energy (render/energy_target.h); 1 for
+    // the semi-infinite profile.
+    glm::dvec3 profileScale{1.0};
     // Progressive accumulation: frames of the same view already averaged, so
     // this frame draws sample set `sampleSet` (0 when not accumulating).
     uint32_t sampleSet = 0;
@@ -50,6 +54,11 @@ struct FrameContext {
 
     // The longest distance between two surface points: profile tables reach it.
     double maxDistance() const { return maxSurfaceDistance(boundingRadius); }
+    // The profile every method integrates: --profile's Rd (or one of the
+    // hybrid's parts), scaled by --energy.
+    KeyedProfile profile(RdPart part = RdPart::Full) const {
+        return scaledProfile(radialProfile(scene->material, *options, part), profileScale);
+    }
     cl::Buffer& radiosityBuffer(const FrameGraph::Resources& res, int pointCount) const {
         return res.write(radiosity).storage->reserve(
             cl->context(), static_cast<size_t>(std::max(pointCount, 1)) * 16);

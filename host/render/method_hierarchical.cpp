@@ -42,7 +42,7 @@ void HierarchicalMethod::build(const FrameContext& ctx, double spacing, FrameSta
 
 void HierarchicalMethod::evaluate(const FrameContext& ctx, const SurfacePoints& points,
                                   cl::Buffer& radiosity, FrameStats& stats) {
-    rd_.update(ctx.scene->material, ctx.options->profile, ctx.maxDistance());
+    rd_.update(ctx.profile(), ctx.maxDistance());
     const float epsilon = ctx.options->epsilon;
     const size_t count = static_cast<size_t>(points.count);
     std::vector<float> out(count * 4, 0.0f);

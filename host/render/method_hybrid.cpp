@@ -6,9 +6,8 @@ HybridMethod::HybridMethod(ClRuntime& cl) : global_(cl), local_(cl) {}
 
 void HybridMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    const Material& m = ctx.scene->material;
-    const KeyedProfile global = radialProfile(m, o, RdPart::Global);
-    const KeyedProfile local = radialProfile(m, o, RdPart::Local);
+    const KeyedProfile global = ctx.profile(RdPart::Global);
+    const KeyedProfile local = ctx.profile(RdPart::Local);
     // The global part writes B, the local part adds to it.
     global_.addGlobalPasses(graph, ctx, global, "global_");
     local_.addLocalPasses(graph, ctx, local, "local_", true);

@@ -50,7 +50,7 @@ TsisCamera LssMethod::camera(const Camera& c, int height) {
 void LssMethod::updateTables(const FrameContext& ctx) {
     const double rMax = ctx.maxDistance();
     Timer t;
-    const KeyedProfile rd = radialProfile(ctx.scene->material, ctx.options->profile);
+    const KeyedProfile rd = ctx.profile();
     if (table_.update(rd, rMax)) {
         std::vector<float> radii = RadialImportance(rd.f, rMax).inverseTable(kRadiusEntries);
         radii_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,

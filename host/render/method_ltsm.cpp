@@ -11,7 +11,7 @@ LtsmMethod::LtsmMethod(ClRuntime& cl) : cl_(cl), kernel_(cl.kernel("ltsm.cl", "t
 
 void LtsmMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    addLocalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "", false);
+    addLocalPasses(graph, ctx, ctx.profile(o.rdPart), "", false);
 }
 
 void LtsmMethod::prepare(const FrameContext& ctx, const KeyedProfile& profile,

@@ -21,8 +21,7 @@ MisMethod::MisMethod(ClRuntime& cl)
       gather_(cl.kernel("mis.cl", "tsis_mis_gather")) {}
 
 void MisMethod::prepareTables(const FrameContext& ctx, FrameStats& stats) {
-    const RenderOptions& o = *ctx.options;
-    const KeyedProfile rd = radialProfile(ctx.scene->material, o.profile);
+    const KeyedProfile rd = ctx.profile();
     const double rMax = ctx.maxDistance();
     Timer t;
     if (!table_.update(rd, rMax)) return;

@@ -88,7 +88,7 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
 
 double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
                              cl::Buffer& radiosity, FrameStats& stats) {
-    rd_.update(ctx.scene->material, ctx.options->profile, ctx.maxDistance());
+    rd_.update(ctx.profile(), ctx.maxDistance());
     const RenderOptions& o = *ctx.options;
     const double ell = smallestMeanFreePath(ctx.scene->material);
     const int stride =

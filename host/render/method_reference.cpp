@@ -72,7 +72,7 @@ void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
 
 double ReferenceMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
                                cl::Buffer& radiosity) {
-    rd_.update(ctx.scene->material, ctx.options->profile, ctx.maxDistance());
+    rd_.update(ctx.profile(), ctx.maxDistance());
     const cl::Buffer& table = rd_.device(cl_.context());
     const int n = static_cast<int>(points_.points().size());
     const int count = points.count;

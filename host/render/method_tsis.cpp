@@ -8,7 +8,7 @@ TsisMethod::TsisMethod(ClRuntime& cl) : cl_(cl), sampler_(cl), gatherer_(cl) {}
 
 void TsisMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const RenderOptions& o = *ctx.options;
-    addGlobalPasses(graph, ctx, radialProfile(ctx.scene->material, o, o.rdPart), "");
+    addGlobalPasses(graph, ctx, ctx.profile(o.rdPart), "");
 }
 
 void TsisMethod::addGlobalPasses(FrameGraph& graph, const FrameContext& ctx,

@@ -102,7 +102,7 @@ void TsmMethod::updateTables(const FrameContext& ctx) {
     const double diameter = ctx.maxDistance();
     const double radius =
         filterRadiusMm(ctx.scene->material, ctx.options->tsmRadius, ctx.boundingRadius);
-    const KeyedProfile rd = radialProfile(ctx.scene->material, ctx.options->profile);
+    const KeyedProfile rd = ctx.profile();
     const std::string key = exactKey(rd.key + " R z", {radius, diameter});
     if (key == tableKey_) return;
     Timer t;

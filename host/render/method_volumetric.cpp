@@ -12,6 +12,7 @@
 #include "util/progress.h"
 #include "util/timer.h"
 #include "volumetric/camera_walk.h"
+#include "volumetric/light_trace.h"
 
 namespace tsis {
 
@@ -60,24 +61,67 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     const uint64_t seed = frameSeed(ctx);
     std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
     std::atomic<long long> vertices{0}, nee{0}, unsettled{0};
+    auto tally = [&](const WalkCounters& c) {
+        vertices += c.vertices;
+        nee += c.nee;
+        unsettled += c.neeUnsettled;
+    };
     const bool timed = o.timeSeconds > 0;
     Progress progress("volumetric: " + std::to_string(count) + " pixels",
                       timed ? static_cast<long long>(o.timeSeconds * 1000) : spp);
+    // --estimator light: each pass traces as many photons as there are
+    // covered pixels, in ranges whose connections are summed in range order
+    // (the same bytes for any thread count).
+    const bool photons = o.estimator == VolumetricEstimator::Light;
+    const size_t perPass = std::max<size_t>(count, 1);
+    std::vector<size_t> pixelOf(count);  // row 0 at the top, as the light tracer's
+    for (size_t k = 0; k < count; ++k) {
+        const int p = points.pixel[k], x = p % ctx.width, y = p / ctx.width;
+        pixelOf[k] = static_cast<size_t>(ctx.height - 1 - y) * ctx.width + x;
+    }
+    Pinhole pinhole;
+    pinhole.eye = eye;
+    pinhole.target = glm::dvec3(scene.camera.target);
+    pinhole.up = glm::dvec3(scene.camera.up);
+    pinhole.fovYDegrees = scene.camera.fovYDegrees;
+    pinhole.width = ctx.width;
+    pinhole.height = ctx.height;
+    auto lightPass = [&](uint64_t s) {
+        constexpr size_t kRange = 1024;
+        const size_t ranges = (perPass + kRange - 1) / kRange;
+        std::vector<std::vector<std::pair<int, glm::dvec3>>> added(ranges);
+        parallelFor(ranges, 1, [&](size_t begin, size_t end) {
+            WalkCounters c;
+            for (size_t r = begin; r < end; ++r) {
+                const size_t first = r * kRange, n = std::min(kRange, perPass - first);
+                traceLight(
+                    walk, pinhole, ctx.boundingRadius, s * perPass + first, n, seed,
+                    [&, r](int pixel, const glm::dvec3& l) { added[r].emplace_back(pixel, l); }, c);
+            }
+            tally(c);
+        });
+        std::vector<glm::dvec3> image(static_cast<size_t>(ctx.width) * ctx.height, glm::dvec3(0.0));
+        for (const auto& range : added)
+            for (const auto& [pixel, l] : range) image[static_cast<size_t>(pixel)] += l;
+        for (size_t k = 0; k < count; ++k)
+            sum[k] += image[pixelOf[k]] / static_cast<double>(perPass);
+    };
     int done = 0;
     while (done < spp) {
         const auto s = static_cast<uint64_t>(done);
-        parallelFor(count, 64, [&](size_t begin, size_t end) {
-            WalkCounters c;
-            for (size_t k = begin; k < end; ++k) {
-                if (!seen[k]) continue;
-                Rng rng(seed, (static_cast<uint64_t>(k) << 20u) | s);
-                const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
-                sum[k] += exitantRadiance(walk, hits[k], toEye, rng, c);
-            }
-            vertices += c.vertices;
-            nee += c.nee;
-            unsettled += c.neeUnsettled;
-        });
+        if (photons)
+            lightPass(s);
+        else
+            parallelFor(count, 64, [&](size_t begin, size_t end) {
+                WalkCounters c;
+                for (size_t k = begin; k < end; ++k) {
+                    if (!seen[k]) continue;
+                    Rng rng(seed, (static_cast<uint64_t>(k) << 20u) | s);
+                    const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
+                    sum[k] += exitantRadiance(walk, hits[k], toEye, rng, c);
+                }
+                tally(c);
+            });
         ++done;
         const double seconds = timer.ms() / 1000.0;
         progress.update(timed ? static_cast<long long>(std::min(seconds, o.timeSeconds) * 1000)
@@ -104,6 +148,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
         cl_.queue().enqueueWriteBuffer(radiosity, CL_TRUE, 0, out.size() * sizeof(float),
                                        out.data());
     stats.set("volumetric_spp", done);
+    if (photons) stats.set("volumetric_photons", static_cast<double>(perPass) * done);
     stats.set("volumetric_vertices", static_cast<double>(vertices.load()));
     stats.set("volumetric_nee", static_cast<double>(nee.load()));
     stats.set("volumetric_nee_unsettled", static_cast<double>(unsettled.load()));

@@ -44,6 +44,13 @@ KeyedProfile radialProfile(const Material& m, ProfileModel model) {
     return p;
 }
 
+KeyedProfile scaledProfile(KeyedProfile p, const glm::dvec3& scale) {
+    if (scale == glm::dvec3(1.0)) return p;
+    p.key = exactKey(p.key + " scaled", {scale.x, scale.y, scale.z});
+    p.f = [f = std::move(p.f), scale](double r) { return f(r) * scale; };
+    return p;
+}
+
 KeyedProfile radialProfile(const Material& m, const RenderOptions& o, RdPart part) {
     KeyedProfile p = radialProfile(m, o.profile);
     if (part == RdPart::Full) return p;

@@ -34,5 +34,7 @@ std::string exactKey(const std::string& base, std::initializer_list<double> valu
 KeyedProfile radialProfile(const Material& m, const RenderOptions& o, RdPart part);
 // Rd alone of `m` under `model`, and its key.
 KeyedProfile radialProfile(const Material& m, ProfileModel model);
+// `p` times `scale` per channel, its key extended (unchanged at scale 1).
+KeyedProfile scaledProfile(KeyedProfile p, const glm::dvec3& scale);
 
 }  // namespace tsis

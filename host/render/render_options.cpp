@@ -55,6 +55,26 @@ const char* exitTermName(ExitTerm exit) {
     return exit == ExitTerm::Normalized ? "normalized" : "jensen";
 }
 
+EnergyTarget parseEnergyTarget(const std::string& name) {
+    if (name == "semi-infinite") return EnergyTarget::SemiInfinite;
+    if (name == "object") return EnergyTarget::Object;
+    fail("--energy '", name, "': expected semi-infinite or object");
+}
+
+const char* energyTargetName(EnergyTarget energy) {
+    return energy == EnergyTarget::Object ? "object" : "semi-infinite";
+}
+
+VolumetricEstimator parseVolumetricEstimator(const std::string& name) {
+    if (name == "camera") return VolumetricEstimator::Camera;
+    if (name == "light") return VolumetricEstimator::Light;
+    fail("--estimator '", name, "': expected camera or light");
+}
+
+const char* volumetricEstimatorName(VolumetricEstimator estimator) {
+    return estimator == VolumetricEstimator::Light ? "light" : "camera";
+}
+
 double exitScale(ExitTerm exit, double eta) {
     return exit == ExitTerm::Normalized ? normalizedExitScale(eta) : 1.0;
 }

@@ -30,6 +30,21 @@ const char* exitTermName(ExitTerm exit);
 // The exit term's factor over Jensen's Ft/π for relative index eta.
 double exitScale(ExitTerm exit, double eta);
 
+// The light the profile lets out (render/energy_target.h): the semi-infinite
+// profile's own ∫Rd, or scaled up to what the finite closed object lets out.
+enum class EnergyTarget { SemiInfinite, Object };
+// "semi-infinite" or "object"; throws tsis::Error for anything else.
+EnergyTarget parseEnergyTarget(const std::string& name);
+const char* energyTargetName(EnergyTarget energy);
+
+// volumetric's estimator (render/method_volumetric.h): paths from the camera
+// (connected to the lights through the boundary) or photons from the lights
+// (connected to the pinhole).
+enum class VolumetricEstimator { Camera, Light };
+// "camera" or "light"; throws tsis::Error for anything else.
+VolumetricEstimator parseVolumetricEstimator(const std::string& name);
+const char* volumetricEstimatorName(VolumetricEstimator estimator);
+
 // The user-set fields' names, ranges, help and the methods that read them
 // are declared once, in render/render_params.cpp; a new field needs a row there.
 struct RenderOptions {
@@ -53,6 +68,8 @@ struct RenderOptions {
     // measures the others against volumetric transport.
     ProfileModel profile = ProfileModel::Dipole;
     ExitTerm exit = ExitTerm::Jensen;
+    EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
+    VolumetricEstimator estimator = VolumetricEstimator::Camera;
     int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light

@@ -118,6 +118,14 @@ std::vector<RenderParam> makeParams() {
                   "reference"},
                 kRadiosity},
                &O::profile, parseProfileModel, profileModelName, ProfileModel::Pbd),
+        choice({"energy",
+                "T  the light the profile lets out: semi-infinite (its own ∫Rd) or object (scaled "
+                "up to what the closed object lets out, 1 − σa·4η²·V/S); README \"Physical "
+                "accuracy\"",
+                M{"pyramid", "tsis", "hybrid", "mis", "ltsm", "tsm", "lss", "hierarchical",
+                  "reference"},
+                kRadiosity},
+               &O::energy, parseEnergyTarget, energyTargetName, EnergyTarget::Object),
         // The exit term changes only the radiance, but volumetric's radiosity
         // is divided by it.
         choice(
@@ -140,6 +148,13 @@ std::vector<RenderParam> makeParams() {
         number({"spp", "N  paths per pixel (default 16; with --time: until the time is up)",
                 M{"volumetric"}, kRadiosity, false, false},
                &O::spp, {1, 1 << 20}),
+        choice({"estimator",
+                "E  camera (paths from each pixel, connected to the lights) or light (photons "
+                "from the lights, connected to the pinhole; --spp N: N × the covered pixels "
+                "photons)",
+                M{"volumetric"}, kRadiosity},
+               &O::estimator, parseVolumetricEstimator, volumetricEstimatorName,
+               VolumetricEstimator::Light),
         number({"time", "S  stop after S seconds of paths (whole passes)", M{"volumetric"},
                 kRadiosity, false, false},
                &O::timeSeconds, {1e-3, 1e6}),

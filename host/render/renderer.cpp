@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "physics/dipole.h"
+#include "render/energy_target.h"
 #include "render/frame_keys.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -31,6 +32,9 @@ FrameContext frameContext(const Scene& scene, const RenderOptions& opt, ClRuntim
     ctx.viewProj = cameraViewProj(scene.camera, static_cast<float>(opt.width) / opt.height,
                                   ctx.boundingRadius);
     ctx.eye = scene.camera.eye;
+    if (opt.energy == EnergyTarget::Object)
+        ctx.profileScale = energyScale(scene.material, opt.profile,
+                                       scene.mesh.enclosedVolume() / scene.mesh.surfaceArea());
     return ctx;
 }
 

@@ -90,6 +90,16 @@ Emission emit(const Light& light, double radius, Rng& rng) {
 void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRadius,
                 uint64_t first, uint64_t photons, uint64_t totalPhotons, uint64_t seed,
                 std::vector<glm::dvec3>& radiance, WalkCounters& counters) {
+    const double scale = 1.0 / static_cast<double>(totalPhotons);
+    traceLight(
+        scene, camera, boundingRadius, first, photons, seed,
+        [&](int pixel, const glm::dvec3& l) { radiance[static_cast<size_t>(pixel)] += l * scale; },
+        counters);
+}
+
+void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRadius,
+                uint64_t first, uint64_t photons, uint64_t seed, const RadianceSink& add,
+                WalkCounters& counters) {
     const Medium& m = scene.medium;
     const Boundary& boundary = *scene.boundary;
     const double eps = boundary.epsilon();
@@ -100,7 +110,7 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
     eye.type = Light::Type::Point;
     eye.vec = glm::vec3(camera.eye);
     eye.rgb = glm::vec3(1.0f);
-    const double scale = 1.0 / (m.eta * m.eta * static_cast<double>(totalPhotons));
+    const double scale = 1.0 / (m.eta * m.eta);
     for (const Light& light : scene.lights)
         for (uint64_t i = first; i < first + photons; ++i) {
             Rng rng(seed, i);
@@ -131,9 +141,8 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
                         const int p =
                             frame.pixel(glm::normalize(out.paths[k].entry - frame.eye), solidAngle);
                         if (p < 0) continue;
-                        radiance[static_cast<size_t>(p)] +=
-                            w.value() * kPhase * transmittance(m, out.paths[k].distance) *
-                            out.paths[k].irradiance * (scale / solidAngle);
+                        add(p, w.value() * kPhase * transmittance(m, out.paths[k].distance) *
+                                   out.paths[k].irradiance * (scale / solidAngle));
                     }
                     const glm::dvec3 v = w.value();
                     const double strength = std::max({v.x, v.y, v.z}) /

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -30,12 +31,22 @@ struct Pinhole {
     int width = 64, height = 64;
 };
 
-// Traces `photons` photons from each light of `scene` (point lights into the
-// cone around the object's bounding sphere, directional ones through its
-// disc) and adds each pixel's radiance estimate, already divided by
-// `photons`, to radiance[y·width + x] (row 0 at the top); `boundingRadius`
-// bounds the object around the origin. Photon i uses Rng(seed, i): the same
-// sum for any split of [first, first + photons) into calls.
+// Where a connection's radiance goes: the pixel y·width + x (row 0 at the
+// top) and the radiance estimate (per photon traced).
+using RadianceSink = std::function<void(int pixel, const glm::dvec3& radiance)>;
+
+// Traces photons first … first + photons − 1 from each light of `scene`
+// (point lights into the cone around the object's bounding sphere,
+// directional ones through its disc; `boundingRadius` bounds the object
+// around the origin) and hands every connection's radiance to `add`, in the
+// order traced: a pixel's estimate is the sum of what it was handed divided
+// by the number of photons traced. Photon i uses Rng(seed, i).
+void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRadius,
+                uint64_t first, uint64_t photons, uint64_t seed, const RadianceSink& add,
+                WalkCounters& counters);
+
+// The same into an image: radiance[pixel] += what the photons give, divided
+// by `totalPhotons`.
 void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRadius,
                 uint64_t first, uint64_t photons, uint64_t totalPhotons, uint64_t seed,
                 std::vector<glm::dvec3>& radiance, WalkCounters& counters);
