@@ -96,12 +96,13 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
     Entry e{target, target, {}, Kind::Rename};
     if (target == "-") {
         if (defaultExtension.empty()) fail("'-' (standard output) is not possible for this output");
-        for (const Entry& o : entries_)
-            if (o.kind == Kind::Stdout) fail("two outputs are '-' (standard output)");
+        if (hasStdout_) fail("two outputs are '-' (standard output)");
         e.kind = Kind::Stdout;
         auto tmp = reserveTemporary(fs::temp_directory_path(), "stdout", defaultExtension);
         if (!tmp) cannotWrite(target, "no temporary file: ", std::strerror(errno));
         e.temp = *tmp;
+        hasStdout_ = true;
+        byTarget_.emplace(target, entries_.size());
         entries_.push_back(e);
         return;
     }
@@ -138,10 +139,8 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
         if (ds.type() != fs::file_type::directory)
             cannotWrite(target, "'", dir.string(), "' is not a directory");
-        const fs::path abs = fs::weakly_canonical(fs::absolute(e.dest), ec);
-        for (const Entry& o : entries_)
-            if (o.kind == Kind::Rename && fs::weakly_canonical(fs::absolute(o.dest), ec) == abs)
-                fail("'", target, "' is given for two outputs");
+        e.landing = landingPath(e.dest);
+        if (landings_.count(e.landing)) fail("'", target, "' is given for two outputs");
     }
     if (!stageIn.empty()) {
         e.temp = stageIn / e.dest.filename();
@@ -160,7 +159,21 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         if (!tmp) cannotWrite(target, std::strerror(errno));
         e.temp = *tmp;
     }
+    if (!e.landing.empty()) landings_.insert(e.landing);
+    byTarget_.emplace(target, entries_.size());
     entries_.push_back(e);
+}
+
+std::string OutputSet::landingPath(const fs::path& dest) {
+    // The target is a regular file or a new name (links are resolved, folders
+    // refused), so only its folder can hold links and dot-dots.
+    std::error_code ec;
+    const fs::path abs = fs::absolute(dest, ec);
+    const fs::path dir = abs.parent_path();
+    auto it = canonicalDirs_.find(dir);
+    if (it == canonicalDirs_.end())
+        it = canonicalDirs_.emplace(dir, fs::weakly_canonical(dir, ec)).first;
+    return (it->second / abs.filename()).string();
 }
 
 void OutputSet::makeDirectory(const std::string& dir) {
@@ -192,9 +205,9 @@ fs::path OutputSet::makeStagingDirectory(const std::string& dir) {
 }
 
 const OutputSet::Entry& OutputSet::find(const std::string& target) const {
-    for (const Entry& e : entries_)
-        if (e.target == target) return e;
-    fail("internal: output '", target, "' was not added");
+    const auto it = byTarget_.find(target);
+    if (it == byTarget_.end()) fail("internal: output '", target, "' was not added");
+    return entries_[it->second];
 }
 
 fs::path OutputSet::temporary(const std::string& target) const {
@@ -215,13 +228,17 @@ void OutputSet::write(const std::string& target,
 }
 
 void OutputSet::discard(const std::string& target) {
-    for (auto it = entries_.begin(); it != entries_.end(); ++it)
-        if (it->target == target) {
-            std::error_code ec;
-            fs::remove(it->temp, ec);
-            entries_.erase(it);
-            return;
-        }
+    const auto found = byTarget_.find(target);
+    if (found == byTarget_.end()) return;
+    const auto it = entries_.begin() + static_cast<std::ptrdiff_t>(found->second);
+    std::error_code ec;
+    fs::remove(it->temp, ec);
+    landings_.erase(it->landing);
+    if (it->kind == Kind::Stdout) hasStdout_ = false;
+    entries_.erase(it);
+    // Rare (an AOV nobody asked for): the index is rebuilt, first entry per target.
+    byTarget_.clear();
+    for (size_t i = 0; i < entries_.size(); ++i) byTarget_.emplace(entries_[i].target, i);
 }
 
 void OutputSet::commit() {

@@ -13,7 +13,10 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "util/output_file.h"  // writeText, for callers
@@ -59,11 +62,20 @@ class OutputSet {
         std::filesystem::path dest;  // where the bytes go (a link resolved)
         std::filesystem::path temp;
         Kind kind;
+        std::string landing;  // landingPath(dest) for Rename entries, else ""
     };
     const Entry& find(const std::string& target) const;
+    // The absolute, canonical path a Rename entry lands on, for spotting one
+    // file given twice. Folders are canonicalised once each (cached), so N
+    // outputs cost N lookups, not N² canonicalisations (animate's 100,000 frames).
+    std::string landingPath(const std::filesystem::path& dest);
     void rollback() noexcept;
 
     std::vector<Entry> entries_;
+    std::unordered_map<std::string, size_t> byTarget_;  // target → index in entries_
+    std::unordered_set<std::string> landings_;          // of every Rename entry
+    std::map<std::filesystem::path, std::filesystem::path> canonicalDirs_;
+    bool hasStdout_ = false;
     std::vector<std::filesystem::path> madeDirs_;  // deepest last
     std::vector<std::filesystem::path> stagingDirs_;
     bool committed_ = false;

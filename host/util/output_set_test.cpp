@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -103,6 +104,38 @@ TEST(OutputSet, RefusesBadTargetsBeforeWork) {
               std::string::npos);
     EXPECT_EQ(errorOf([&] { out.add("-", ".json"); }), "");
     EXPECT_NE(errorOf([&] { out.add("-", ".json"); }).find("two outputs"), std::string::npos);
+}
+
+TEST(OutputSet, SameFileThroughALinkedFolderIsGivenTwice) {
+    TempDir d;
+    fs::create_directory(d.file("real"));
+    fs::create_directory_symlink(d.file("real"), d.file("link"));
+    OutputSet out;
+    out.add(d.file("real/x.png"));
+    EXPECT_NE(errorOf([&] { out.add(d.file("link/x.png")); }).find("two outputs"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { out.add(d.file("link/../real/x.png")); }).find("two outputs"),
+              std::string::npos);
+    EXPECT_EQ(errorOf([&] { out.add(d.file("link/y.png")); }), "");
+    out.discard(d.file("real/x.png"));
+    EXPECT_EQ(errorOf([&] { out.add(d.file("link/x.png")); }), "") << "free again once discarded";
+}
+
+// animate stages up to 100,000 frames before the first: each add() must not
+// look at every earlier one (at 5,000 that took minutes).
+TEST(OutputSet, ManyTargetsAreAddedInLinearTime) {
+    TempDir d;
+    OutputSet out;
+    const fs::path stage = out.makeStagingDirectory(d.path.string());
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 5000; ++i)
+        out.add(d.file("frame_" + std::to_string(i) + ".png"), "", stage);
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(s, 5.0);
+    out.write(d.file("frame_4999.png"), [](const fs::path& f) { writeText(f, "last"); });
+    out.commit();
+    EXPECT_EQ(slurp(d.file("frame_4999.png")), "last");
 }
 
 TEST(OutputSet, ErrorsNameTheTargetNotTheTemporary) {
