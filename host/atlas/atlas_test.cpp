@@ -363,6 +363,13 @@ TEST(AtlasCache, HitIsIdenticalAndCorruptEntryIsRebuilt) {
     atlas::buildAtlasCached(mesh, opt, &fourth);
     EXPECT_TRUE(fourth.fromCache);
 
+    // A folder in the entry's place: a miss, and the build goes on.
+    std::filesystem::remove(file);
+    std::filesystem::create_directories(file / "sub");
+    AtlasStats fifth;
+    EXPECT_EQ(atlas::buildAtlasCached(mesh, opt, &fifth).uvs, a.uvs);
+    EXPECT_FALSE(fifth.fromCache);
+
     // Other options, other entry.
     AtlasOptions other = opt;
     other.resolution = 512;
