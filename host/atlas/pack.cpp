@@ -418,6 +418,19 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
             run(probe[1]);
         }
     };
+    // Every chart takes at least its outline at a vanishing density (a texel
+    // and its gutter). When those alone overflow the frame no density fits,
+    // and 30 rounds of shrinking probes would each place thousands of charts
+    // in vain (a soup of co-located one-triangle charts took minutes).
+    {
+        Outlines least(pts, charts, 1e-9 * s0, dilate);
+        long long texels = 0;
+        for (size_t c = 0; c < charts.size(); ++c) texels += least.get(c, 0).texels;
+        if (texels > (long long)W * H)
+            fail("atlas: cannot pack ", charts.size(), " charts into ", resolution,
+                 "² texels (even a texel each, with its gutter, overflows; a mesh of many "
+                 "separate or non-manifold pieces?)");
+    }
     for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.003); ++round) {
         Probe probe[2];
         if (lo == 0 && hi == INFINITY)
