@@ -106,6 +106,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
              byDefault(d.lightResolution)},
         {"key", true, false, "K  tone-mapping key" + byDefault(d.key)},
         {"no-specular", false, false, "turn off the Phong highlight"},
+        {"force", false, false,
+         "reference: run even past the cost bounds (points, memory, Rd evaluations)"},
         {"no-reuse-lighting", false, false,
          "make the light maps and flux atlas every frame, even when the lighting did not change"},
         {"cl-device", true, false, "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
@@ -269,6 +271,7 @@ RenderOptions renderOptionsFromArgs(const Args& args) {
     o.timeSeconds = args.getDouble("time", o.timeSeconds, 1e-3, 1e6);
     o.key = static_cast<float>(args.getDouble("key", o.key, 1e-4, 100.0));
     o.specular = !args.flag("no-specular");
+    o.force = args.flag("force");
     o.reuseLighting = !args.flag("no-reuse-lighting");
     validateRenderOptions(o);
     return o;
@@ -353,6 +356,7 @@ std::vector<std::string> renderOptionArgs(const RenderOptions& o) {
     };
     if (o.spacingMm > 0) a.insert(a.end(), {"--spacing", exact(o.spacingMm)});
     if (!o.specular) a.push_back("--no-specular");
+    if (o.force) a.push_back("--force");
     if (!o.reuseLighting) a.push_back("--no-reuse-lighting");
     return a;
 }
