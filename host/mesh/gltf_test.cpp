@@ -174,7 +174,10 @@ std::string sceneJson(const std::string& roots, const std::string& nodes,
 
 std::string joined(int n, const std::function<std::string(int)>& item) {
     std::string s;
-    for (int i = 0; i < n; ++i) s += (i ? "," : "") + item(i);
+    for (int i = 0; i < n; ++i) {
+        if (i) s += ',';
+        s += item(i);
+    }
     return s;
 }
 
