@@ -143,10 +143,12 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         if (landings_.count(e.landing)) fail("'", target, "' is given for two outputs");
     }
     if (!stageIn.empty()) {
+        // The staging folder is this run's own (mkdtemp), so its names need no
+        // file on disk yet: 100,000 frames would cost as many creations (minutes
+        // on a busy disk) before the first. Two targets of one name would share
+        // a temporary: refused.
         e.temp = stageIn / e.dest.filename();
-        const int fd = ::open(e.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0) cannotWrite(target, std::strerror(errno));
-        ::close(fd);
+        if (!staged_.insert(e.temp.string()).second) cannotWrite(target, std::strerror(EEXIST));
     } else {
         // The format follows the name given (a link to /dev/null named x.png is a
         // PNG), else the file it points to.
@@ -234,6 +236,7 @@ void OutputSet::discard(const std::string& target) {
     std::error_code ec;
     fs::remove(it->temp, ec);
     landings_.erase(it->landing);
+    staged_.erase(it->temp.string());
     if (it->kind == Kind::Stdout) hasStdout_ = false;
     entries_.erase(it);
     // Rare (an AOV nobody asked for): the index is rebuilt, first entry per target.

@@ -34,7 +34,8 @@ class OutputSet {
     // Checks `target` and reserves its temporary; throws tsis::Error naming
     // the target. `defaultExtension` (".png") gives the format of "-" and of a
     // device named without an extension; without it "-" is refused. `stageIn`, when given, is a
-    // folder (made by makeStagingDirectory) whose file of the target's name is the temporary.
+    // folder (made by makeStagingDirectory) whose file of the target's name is the temporary
+    // (made by the writer: the folder is the run's own, so add() creates nothing there).
     void add(const std::string& target, const std::string& defaultExtension = "",
              const std::filesystem::path& stageIn = {});
     // Creates `dir` and missing parents now (they go again unless committed).
@@ -74,6 +75,7 @@ class OutputSet {
     std::vector<Entry> entries_;
     std::unordered_map<std::string, size_t> byTarget_;  // target → index in entries_
     std::unordered_set<std::string> landings_;          // of every Rename entry
+    std::unordered_set<std::string> staged_;            // temporaries in staging folders
     std::map<std::filesystem::path, std::filesystem::path> canonicalDirs_;
     bool hasStdout_ = false;
     std::vector<std::filesystem::path> madeDirs_;  // deepest last
