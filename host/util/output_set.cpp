@@ -84,7 +84,8 @@ OutputSet::~OutputSet() {
 
 void OutputSet::rollback() noexcept {
     std::error_code ec;
-    for (const Entry& e : entries_) fs::remove(e.temp, ec);
+    for (const Entry& e : entries_)
+        if (!e.staged) fs::remove(e.temp, ec);  // staged ones go with their folder
     for (const fs::path& d : stagingDirs_) fs::remove_all(d, ec);
     // Only folders left empty: a committed output keeps its folder.
     for (auto it = madeDirs_.rbegin(); it != madeDirs_.rend(); ++it) fs::remove(*it, ec);
@@ -132,14 +133,7 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
             cannotWrite(target, "it is not a regular file, a character device or a FIFO");
     }
     if (e.kind == Kind::Rename) {
-        const fs::path dir = e.dest.parent_path().empty() ? fs::path(".") : e.dest.parent_path();
-        const fs::file_status ds = fs::status(dir, ec);
-        if (ds.type() == fs::file_type::not_found)
-            cannotWrite(target, "directory '", dir.string(), "' does not exist");
-        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
-        if (ds.type() != fs::file_type::directory)
-            cannotWrite(target, "'", dir.string(), "' is not a directory");
-        e.landing = landingPath(e.dest);
+        e.landing = landingPath(e.dest, target);
         if (landings_.count(e.landing)) fail("'", target, "' is given for two outputs");
     }
     if (!stageIn.empty()) {
@@ -148,6 +142,7 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         // on a busy disk) before the first. Two targets of one name would share
         // a temporary: refused.
         e.temp = stageIn / e.dest.filename();
+        e.staged = true;
         if (!staged_.insert(e.temp.string()).second) cannotWrite(target, std::strerror(EEXIST));
     } else {
         // The format follows the name given (a link to /dev/null named x.png is a
@@ -166,16 +161,23 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
     entries_.push_back(e);
 }
 
-std::string OutputSet::landingPath(const fs::path& dest) {
+std::string OutputSet::landingPath(const fs::path& dest, const std::string& target) {
     // The target is a regular file or a new name (links are resolved, folders
     // refused), so only its folder can hold links and dot-dots.
-    std::error_code ec;
-    const fs::path abs = fs::absolute(dest, ec);
-    const fs::path dir = abs.parent_path();
-    auto it = canonicalDirs_.find(dir);
-    if (it == canonicalDirs_.end())
-        it = canonicalDirs_.emplace(dir, fs::weakly_canonical(dir, ec)).first;
-    return (it->second / abs.filename()).string();
+    const fs::path dir = dest.parent_path().empty() ? fs::path(".") : dest.parent_path();
+    auto it = canonicalDirs_.find(dir.string());
+    if (it == canonicalDirs_.end()) {
+        std::error_code ec;
+        const fs::file_status ds = fs::status(dir, ec);
+        if (ds.type() == fs::file_type::not_found)
+            cannotWrite(target, "directory '", dir.string(), "' does not exist");
+        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
+        if (ds.type() != fs::file_type::directory)
+            cannotWrite(target, "'", dir.string(), "' is not a directory");
+        const fs::path canonical = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+        it = canonicalDirs_.emplace(dir.string(), canonical.string()).first;
+    }
+    return it->second + "/" + dest.filename().string();
 }
 
 void OutputSet::makeDirectory(const std::string& dir) {

@@ -13,7 +13,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -64,19 +63,21 @@ class OutputSet {
         std::filesystem::path temp;
         Kind kind;
         std::string landing;  // landingPath(dest) for Rename entries, else ""
+        bool staged = false;  // temp is in a staging folder
     };
     const Entry& find(const std::string& target) const;
     // The absolute, canonical path a Rename entry lands on, for spotting one
-    // file given twice. Folders are canonicalised once each (cached), so N
-    // outputs cost N lookups, not N² canonicalisations (animate's 100,000 frames).
-    std::string landingPath(const std::filesystem::path& dest);
+    // file given twice. Each folder is checked (exists, is a folder; errors
+    // name `target`) and canonicalised once (cached), so N outputs cost N
+    // lookups, not N² canonicalisations (animate's 100,000 frames).
+    std::string landingPath(const std::filesystem::path& dest, const std::string& target);
     void rollback() noexcept;
 
     std::vector<Entry> entries_;
-    std::unordered_map<std::string, size_t> byTarget_;  // target → index in entries_
-    std::unordered_set<std::string> landings_;          // of every Rename entry
-    std::unordered_set<std::string> staged_;            // temporaries in staging folders
-    std::map<std::filesystem::path, std::filesystem::path> canonicalDirs_;
+    std::unordered_map<std::string, size_t> byTarget_;            // target → index in entries_
+    std::unordered_set<std::string> landings_;                    // of every Rename entry
+    std::unordered_set<std::string> staged_;                      // temporaries in staging folders
+    std::unordered_map<std::string, std::string> canonicalDirs_;  // folder as given → canonical
     bool hasStdout_ = false;
     std::vector<std::filesystem::path> madeDirs_;  // deepest last
     std::vector<std::filesystem::path> stagingDirs_;
