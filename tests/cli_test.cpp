@@ -141,6 +141,9 @@ const BadInput kBadInputs[] = {
     {"UnknownImageFormat", "render --mesh @DIR@/nope.off -o @DIR@/x.xyz", "", "no image format"},
     {"StatsOnFullDevice", "render " + kFast + "--stats /dev/full", "",
      "cannot write '/dev/full': No space left on device"},
+    // Hours and gigabytes: refused at once with the estimate (--force runs it).
+    {"ReferenceTooFine", "render --method reference --spacing 0.002 -o @DIR@/x.png", "",
+     "90.6 M surface points"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, CliBadInput, ::testing::ValuesIn(kBadInputs),
