@@ -161,6 +161,9 @@ const BadInput kBadInputs[] = {
      "TSIS_MEMORY_LIMIT_MB=2000", "of memory but 2.0 GB is available"},
     {"StatsOnFullDevice", "render " + kFast + "--stats /dev/full", "",
      "cannot write '/dev/full': No space left on device"},
+    // Hours and gigabytes: refused at once with the estimate (--force runs it).
+    {"ReferenceTooFine", "render --method reference --spacing 0.002 -o @DIR@/x.png", "",
+     "90.6 M surface points"},
 };
 
 INSTANTIATE_TEST_SUITE_P(All, CliBadInput, ::testing::ValuesIn(kBadInputs),

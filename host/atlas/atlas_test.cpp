@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <map>
@@ -260,6 +263,88 @@ TEST(Atlas, DegenerateAndNonManifoldTrianglesStillGetUVs) {
     EXPECT_EQ(st.overlaps, 0u);
 }
 
+double secondsOf(const std::function<void()>& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One triangle N times over the same three vertices (repair would drop them;
+// the builder must not need it): every face its own chart, every vertex a hub
+// of N faces. The vertex-ring filter was faces × degree × labels there (3,000
+// copies: 13 s on an idle machine, 6,000: 87 s).
+Mesh coincident(int n) {
+    Mesh m;
+    m.name = "coincident";
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < n; ++i)
+        m.triangles.push_back(i % 2 ? glm::uvec3(0, 2, 1) : glm::uvec3(1, 2, 0));
+    return m;
+}
+
+TEST(Atlas, CoincidentFacesAreNotQuadratic) {
+    const Mesh big = coincident(6000);
+    std::vector<int> labels(big.triangles.size());
+    std::iota(labels.begin(), labels.end(), 0);
+    const atlas::Adjacency adj = atlas::buildAdjacency(big);
+    EXPECT_LT(secondsOf([&] { atlas::smoothLabels(big, adj, labels, 1, 0); }), 2.0);
+
+    const Mesh m = coincident(3000);
+    AtlasOptions opt;
+    opt.resolution = 512;
+    opt.useCache = false;
+    Mesh out;
+    EXPECT_LT(secondsOf([&] { out = buildAtlas(m, opt); }), 10.0);
+    EXPECT_EQ(out.triangles.size(), m.triangles.size());
+}
+
+// Loose triangles, each its own component: VSA's seeding costs components ×
+// faces and no density can pack 60,000 charts into 512²: a clear error, soon.
+TEST(Atlas, TooManyLooseTrianglesFailSoon) {
+    Mesh m;
+    m.name = "loose";
+    for (uint32_t i = 0; i < 60000; ++i) {
+        const float e = 1e-7f * float(i);
+        m.positions.insert(m.positions.end(), {{e, 0, 0}, {1 + e, 0, 0}, {0, 1 - e, e}});
+        m.triangles.emplace_back(3 * i, 3 * i + 1, 3 * i + 2);
+    }
+    AtlasOptions opt;
+    opt.resolution = 512;
+    opt.useCache = false;
+    std::string msg;
+    const double s = secondsOf([&] {
+        try {
+            buildAtlas(m, opt);
+        } catch (const Error& e) {
+            msg = e.what();
+        }
+    });
+    EXPECT_LT(s, 15.0);
+    EXPECT_NE(msg.find("cannot pack 60000 charts"), std::string::npos) << msg;
+}
+
+// A fan of N faces around one vertex, 80% of them label 0 and pairs of label 1
+// (so the edge rule leaves them): the vertex-ring rule gives the pairs to the
+// majority, with the centre a hub (N = 400) as with an ordinary vertex (N = 200).
+TEST(Atlas, VertexRingRuleSameAtHubs) {
+    for (int n : {200, 400}) {
+        Mesh m;
+        m.positions.push_back({0, 0, 0});
+        for (int i = 0; i < n; ++i) {
+            const double a = 2 * M_PI * i / n;
+            m.positions.push_back({float(std::cos(a)), float(std::sin(a)), 0});
+        }
+        std::vector<int> labels;
+        for (int i = 0; i < n; ++i) {
+            m.triangles.emplace_back(0, 1 + i, 1 + (i + 1) % n);
+            labels.push_back(i % 10 < 8 ? 0 : 1);
+        }
+        const atlas::Adjacency adj = atlas::buildAdjacency(m);
+        atlas::smoothLabels(m, adj, labels, 1, 0);
+        EXPECT_EQ(std::count(labels.begin(), labels.end(), 0), n) << n;
+    }
+}
+
 TEST(Atlas, ClearErrors) {
     Mesh empty;
     empty.name = "empty.off";
@@ -362,6 +447,13 @@ TEST(AtlasCache, HitIsIdenticalAndCorruptEntryIsRebuilt) {
     EXPECT_FALSE(third.fromCache);
     atlas::buildAtlasCached(mesh, opt, &fourth);
     EXPECT_TRUE(fourth.fromCache);
+
+    // A folder in the entry's place: a miss, and the build goes on.
+    std::filesystem::remove(file);
+    std::filesystem::create_directories(file / "sub");
+    AtlasStats fifth;
+    EXPECT_EQ(atlas::buildAtlasCached(mesh, opt, &fifth).uvs, a.uvs);
+    EXPECT_FALSE(fifth.fromCache);
 
     // Other options, other entry.
     AtlasOptions other = opt;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "util/cache_dir.h"
+#include "util/input_file.h"
 #include "util/output_file.h"
 #include "util/timer.h"
 
@@ -58,7 +59,7 @@ void append(std::string& out, const void* p, size_t n) {
 }  // namespace
 
 std::optional<std::filesystem::path> atlasCacheDirectory() {
-    const std::string root = tsis::cacheDirectory();
+    const std::string root = tsis::usableCacheDirectory();
     if (root.empty()) return std::nullopt;
     return std::filesystem::path(root) / "atlas";
 }
@@ -100,6 +101,9 @@ void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceV
 
 std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh,
                                     AtlasStats* stats) {
+    // A folder, FIFO or device where the entry should be is a miss (reading
+    // one would throw or block).
+    if (!notRegularFile(file.string()).empty()) return std::nullopt;
     std::ifstream in(file, std::ios::binary);
     if (!in) return std::nullopt;
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

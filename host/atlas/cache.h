@@ -8,8 +8,9 @@
 // copied from the mesh at load time).
 // File <key>.atlas: header, per output vertex its input vertex and UV, the
 // triangles, the build statistics, and a 64-bit checksum of all of that. An
-// entry that is short, fails the checksum, or does not fit the mesh is ignored
-// and rebuilt; any failure to write is ignored.
+// entry that is short, fails the checksum, does not fit the mesh or is not a
+// regular file (a folder, say) is ignored and rebuilt; any failure to write is
+// ignored. Without TSIS_CACHE_DIR the folder must be private (util/cache_dir.h).
 #pragma once
 
 #include <filesystem>

@@ -41,7 +41,8 @@ struct ChartMesh {
 };
 
 // segment.cpp — VSA labels per face (-1 for unusable faces), or an empty
-// vector when CGAL cannot make a polygon mesh of the soup.
+// vector when CGAL cannot make a polygon mesh of the soup or it has at least
+// `proxies` connected components (VSA would cost components × faces).
 std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, int proxies);
 
 // parameterize.cpp — ARAP (λ = 1000) of a disk. Returns false (with a reason)

@@ -177,6 +177,13 @@ Adjacency buildAdjacency(const Mesh& mesh) {
 
 namespace {
 
+// Vertices of more faces than this (coincident copies of a triangle, a fan of
+// thousands) are hubs: visiting their faces from each of their faces costs
+// degree², so the filters below count a hub's labels in a histogram instead
+// (vertexRingRule) or do not walk through it (straightenBorders). Ordinary
+// vertices, poles of fine spheres included, stay below it.
+constexpr uint32_t kHubDegree = 256;
+
 // Strict-majority filter over the faces within `radius` vertex rings of each
 // border face (start/ring: the faces around each vertex), in place, until
 // nothing changes (at most 4·radius passes). After the first pass only faces
@@ -205,7 +212,8 @@ void straightenBorders(const Mesh& mesh, const std::vector<uint32_t>& start,
                 for (uint32_t g : front)
                     for (int k = 0; k < 3; ++k) {
                         const uint32_t v = mesh.triangles[g][k];
-                        if (vertexSeen[v] == stamp) continue;
+                        if (vertexSeen[v] == stamp || start[v + 1] - start[v] > kHubDegree)
+                            continue;
                         vertexSeen[v] = stamp;
                         for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
                             const uint32_t h = ring[i];
@@ -227,6 +235,91 @@ void straightenBorders(const Mesh& mesh, const std::vector<uint32_t>& start,
                     labels[f] = l;
                     ++changed;
                     for (uint32_t h : near) dirty[h] = 1;
+                    break;
+                }
+        }
+        if (changed == 0) break;
+    }
+}
+
+// The vertex-ring rule of smoothLabels: a face's votes are the labels of the
+// faces around each of its vertices (a face sharing two vertices votes twice),
+// its own excepted. An ordinary vertex's faces are visited; a hub's are counted
+// in a (vertex, label) histogram kept up to date as labels change. Only a label
+// with 60% of a hub's faces can win through it, and that label is the hub's
+// `top` (a strict majority is always the top: a hub's face count is fixed and
+// top follows every increment), so the candidates stay few and the rule costs
+// O(faces · ordinary degree), however many faces share a hub.
+void vertexRingRule(const Mesh& mesh, const std::vector<uint32_t>& start,
+                    const std::vector<uint32_t>& ring, std::vector<int>& labels) {
+    const size_t n = labels.size();
+    auto degree = [&](uint32_t v) { return start[v + 1] - start[v]; };
+    std::unordered_map<uint64_t, int> hubCount;  // (vertex << 32 | label) -> faces
+    std::unordered_map<uint32_t, int> top;       // hub -> its most frequent label
+    auto count = [&](uint32_t v, int l) {
+        const auto it = hubCount.find((uint64_t(v) << 32) | uint32_t(l));
+        return it == hubCount.end() ? 0 : it->second;
+    };
+    auto bump = [&](uint32_t v, int l, int delta) {
+        const int c = hubCount[(uint64_t(v) << 32) | uint32_t(l)] += delta;
+        auto [it, fresh] = top.emplace(v, l);
+        if (!fresh && delta > 0 && c > count(v, it->second)) it->second = l;
+    };
+    for (uint32_t v = 0; v + 1 < start.size(); ++v)
+        if (degree(v) > kHubDegree)
+            for (uint32_t i = start[v]; i < start[v + 1]; ++i) bump(v, labels[ring[i]], 1);
+
+    std::vector<std::pair<int, int>> votes;  // label, count
+    std::vector<uint32_t> hubs;
+    for (int pass = 0; pass < 6; ++pass) {
+        size_t changed = 0;
+        for (size_t f = 0; f < n; ++f) {
+            if (labels[f] < 0) continue;
+            votes.clear();
+            hubs.clear();
+            int own = 0, total = 0;
+            auto vote = [&](int l, int c) {
+                auto it =
+                    std::find_if(votes.begin(), votes.end(), [&](auto& p) { return p.first == l; });
+                if (it == votes.end())
+                    votes.emplace_back(l, c);
+                else
+                    it->second += c;
+            };
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[f][k];
+                if (degree(v) > kHubDegree) {
+                    hubs.push_back(v);  // f is one of its faces
+                    total += int(degree(v)) - 1;
+                    own += count(v, labels[f]) - 1;
+                    continue;
+                }
+                for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+                    const int l = labels[ring[i]];
+                    if (ring[i] == f || l < 0) continue;
+                    ++total;
+                    if (l == labels[f])
+                        ++own;
+                    else
+                        vote(l, 1);
+                }
+            }
+            if (!hubs.empty()) {
+                for (uint32_t h : hubs) {
+                    const int t = top.at(h);
+                    if (t != labels[f]) vote(t, 0);
+                }
+                for (auto& [l, c] : votes)
+                    for (uint32_t h : hubs) c += count(h, l);
+            }
+            for (auto [l, c] : votes)
+                if (c > own && 10 * c >= 6 * total) {
+                    for (uint32_t h : hubs) {
+                        bump(h, labels[f], -1);
+                        bump(h, l, 1);
+                    }
+                    labels[f] = l;
+                    ++changed;
                     break;
                 }
         }
@@ -284,40 +377,7 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
             if (labels[f] >= 0)
                 for (int k = 0; k < 3; ++k) ring[fillAt[mesh.triangles[f][k]]++] = uint32_t(f);
     }
-    std::vector<std::pair<int, int>> votes;  // label, count
-    for (int pass = 0; pass < 6; ++pass) {
-        size_t changed = 0;
-        for (size_t f = 0; f < n; ++f) {
-            if (labels[f] < 0) continue;
-            votes.clear();
-            int own = 0, total = 0;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = mesh.triangles[f][k];
-                for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
-                    const int l = labels[ring[i]];
-                    if (ring[i] == f || l < 0) continue;
-                    ++total;
-                    if (l == labels[f]) {
-                        ++own;
-                        continue;
-                    }
-                    auto it = std::find_if(votes.begin(), votes.end(),
-                                           [&](auto& p) { return p.first == l; });
-                    if (it == votes.end())
-                        votes.emplace_back(l, 1);
-                    else
-                        ++it->second;
-                }
-            }
-            for (auto [l, c] : votes)
-                if (c > own && 10 * c >= 6 * total) {
-                    labels[f] = l;
-                    ++changed;
-                    break;
-                }
-        }
-        if (changed == 0) break;
-    }
+    vertexRingRule(mesh, start, ring, labels);
     if (borderRadius > 0) straightenBorders(mesh, start, ring, labels, borderRadius);
 
     // Small connected pieces join the neighbouring label they share most edges with.

@@ -218,7 +218,8 @@ class Occupancy {
 
 // The lowest (then leftmost) position where `ol` fits with its bottom row at
 // most at yLimit; false when none.
-bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int& by) {
+bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int& by, int startY = 0,
+              int startX = 0) {
     const int W = occ.width();
     int hot = ol.testOrder.front();  // the row that collided last is tried first
     auto collide = [&](int r, int x, int y) {
@@ -228,7 +229,7 @@ bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int&
         }
         return -1;
     };
-    for (int y = 0; y <= yLimit; ++y) {
+    for (int y = startY; y <= yLimit; ++y) {
         bool rowsFree = true;
         for (int r : ol.testOrder) {
             if (ol.longest[r] == 0) break;
@@ -238,7 +239,7 @@ bool firstFit(const Occupancy& occ, const Outline& ol, int yLimit, int& bx, int&
             }
         }
         if (!rowsFree) continue;
-        for (int x = 0; x + ol.w <= W;) {
+        for (int x = y == startY ? startX : 0; x + ol.w <= W;) {
             int jump = collide(hot, x, y);
             if (jump < 0)
                 for (int r : ol.testOrder) {
@@ -302,6 +303,17 @@ bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, in
     Occupancy occ(W, H);
     placed.assign(order.size(), Placed());
     long long used = 0;
+    // Where the last search per orientation stopped. Positions scanned before
+    // it did not fit an outline of the same shape, and only fill up since, so
+    // the next chart of that shape (copies of one triangle: thousands in a
+    // row) resumes there instead of rescanning every full row.
+    struct Resume {
+        const Outline* shape = nullptr;
+        int y = 0, x = 0;
+    } resume[4];
+    auto sameShape = [](const Outline& a, const Outline& b) {
+        return a.w == b.w && a.h == b.h && a.runs == b.runs;
+    };
     for (size_t c : order) {
         int bestMid = INT_MAX;
         const Outline* best = nullptr;
@@ -312,12 +324,18 @@ bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, in
             // The lowest middle row wins (measured a little better than the
             // lowest top or the lowest bottom); only y < bestMid - h/2 can.
             const int yLimit = std::min(H - ol.h, bestMid == INT_MAX ? H : bestMid - ol.h / 2 - 1);
+            if (yLimit < 0) continue;
+            Resume& r = resume[o];
+            const bool same = r.shape && sameShape(*r.shape, ol);
             int x, y;
-            if (yLimit >= 0 && firstFit(occ, ol, yLimit, x, y)) {
+            if (firstFit(occ, ol, yLimit, x, y, same ? r.y : 0, same ? r.x : 0)) {
                 bestMid = y + ol.h / 2;
                 bestX = x;
                 bestY = y;
                 best = &ol;
+                r = {&ol, y, x};
+            } else {
+                r = {&ol, yLimit + 1, 0};  // nothing fits up to yLimit
             }
         }
         if (!best) return false;
@@ -418,6 +436,19 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
             run(probe[1]);
         }
     };
+    // Every chart takes at least its outline at a vanishing density (a texel
+    // and its gutter). When those alone overflow the frame no density fits,
+    // and 30 rounds of shrinking probes would each place thousands of charts
+    // in vain (a soup of co-located one-triangle charts took minutes).
+    {
+        Outlines least(pts, charts, 1e-9 * s0, dilate);
+        long long texels = 0;
+        for (size_t c = 0; c < charts.size(); ++c) texels += least.get(c, 0).texels;
+        if (texels > (long long)W * H)
+            fail("atlas: cannot pack ", charts.size(), " charts into ", resolution,
+                 "² texels (even a texel each, with its gutter, overflows; a mesh of many "
+                 "separate or non-manifold pieces?)");
+    }
     for (int round = 0; round < 30 && !(lo > 0 && hi / lo < 1.003); ++round) {
         Probe probe[2];
         if (lo == 0 && hi == INFINITY)

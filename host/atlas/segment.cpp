@@ -6,6 +6,7 @@
 // 5 Lloyd iterations and 2 seeding relaxations: measured against CGAL's 20 and
 // 5 on elephant and armadillo, the same chart counts, coverage and distortion
 // (±2%) at a third of the time (armadillo: 1.6 s instead of 4.1 s CPU).
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
@@ -51,8 +52,15 @@ std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, i
     PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
     if (sm.number_of_faces() != polygons.size()) return {};
 
-    auto proxyMap = sm.add_property_map<FaceDescriptor, std::size_t>("f:proxy", 0).first;
     const std::size_t maxProxies = std::min<std::size_t>(std::size_t(proxies), polygons.size());
+    // VSA seeds one proxy per connected component, finding each by a scan from
+    // the first face: components × faces (100,000 loose triangles: minutes).
+    // With at least as many components as proxies it would stop there, one
+    // chart per component; the caller's patches do that in linear time.
+    auto componentMap = sm.add_property_map<FaceDescriptor, std::size_t>("f:cc", 0).first;
+    if (PMP::connected_components(sm, componentMap) >= maxProxies) return {};
+
+    auto proxyMap = sm.add_property_map<FaceDescriptor, std::size_t>("f:proxy", 0).first;
     VSA::approximate_triangle_mesh(sm, CGAL::parameters::max_number_of_proxies(maxProxies)
                                            .number_of_iterations(5)
                                            .number_of_relaxations(2)

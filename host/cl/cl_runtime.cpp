@@ -6,6 +6,7 @@
 
 #include "cl/pocl_cache.h"
 #include "cl/program_cache.h"
+#include "util/cache_dir.h"
 #include "util/embedded.h"
 #include "util/error.h"
 
@@ -106,7 +107,7 @@ ClRuntime::ClRuntime(const std::string& selector) {
     name_ = chosen->name;
     context_ = cl::Context(device_);
     queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
-    cacheDir_ = ProgramCache::defaultDir();
+    cacheDir_ = usableCacheDirectory();
     sources_ = embeddedKernels();
 }
 

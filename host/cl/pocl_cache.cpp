@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "cl/program_cache.h"
+#include "util/cache_dir.h"
 
 namespace tsis {
 
@@ -28,6 +28,8 @@ std::string env(const char* name) {
 }  // namespace
 
 std::string preparePoclCache() {
+    // PoCL aborts on an empty POCL_CACHE_DIR: empty means unset, as for tsis' own variables.
+    if (const char* set = std::getenv("POCL_CACHE_DIR"); set && !*set) ::unsetenv("POCL_CACHE_DIR");
     if (const std::string set = env("POCL_CACHE_DIR"); !set.empty())
         return writableDir(set)
                    ? ""
@@ -41,18 +43,25 @@ std::string preparePoclCache() {
     else
         return "";  // PoCL uses /tmp
     if (writableDir(def / "kcache")) return "";
+    // Folders tsis picks itself hold code PoCL will dlopen: private ones only
+    // (util/cache_dir.h), never one a local user planted in the temporary folder.
     std::error_code ec;
-    const std::string tsisCache = ProgramCache::defaultDir();
-    const fs::path tmp = fs::temp_directory_path(ec) / ("tsis-pocl-" + std::to_string(::getuid()));
+    const std::string tsisCache = usableCacheDirectory();
+    const fs::path tmpRoot = fs::temp_directory_path(ec);
+    const fs::path tmp = ec ? fs::path() : tmpRoot / ("tsis-pocl-" + std::to_string(::geteuid()));
+    std::string refused;
     for (const fs::path& dir :
          {tsisCache.empty() ? fs::path() : fs::path(tsisCache) / "pocl", tmp}) {
-        if (!dir.empty() && writableDir(dir)) {
-            ::setenv("POCL_CACHE_DIR", dir.c_str(), 1);
-            return "";
+        if (dir.empty()) continue;
+        if (const std::string why = privateDirectory(dir); !why.empty()) {
+            refused = "; '" + dir.string() + "' is not safe to use: " + why;
+            continue;
         }
+        ::setenv("POCL_CACHE_DIR", dir.c_str(), 1);
+        return "";
     }
     return "PoCL cannot write its cache folder '" + def.string() +
-           "'; set POCL_CACHE_DIR to a writable folder";
+           "'; set POCL_CACHE_DIR to a writable folder" + refused;
 }
 
 }  // namespace tsis

@@ -10,9 +10,11 @@
 namespace tsis {
 
 // Sets POCL_CACHE_DIR to tsis' cache folder (program_cache.h) + "/pocl", else
-// to a folder under the system's temporary folder, when PoCL's default is not
-// writable. Returns "" when PoCL can cache, else why it cannot (for the "no
-// OpenCL device" message). Idempotent.
+// to $TMPDIR/tsis-pocl-<euid>, when PoCL's default is not writable; either
+// only when private (util/cache_dir.h: created 0700, refused when a link, of
+// another owner or writable by others). An empty POCL_CACHE_DIR is unset
+// (PoCL would abort). Returns "" when PoCL can cache, else why it cannot (for
+// the "no OpenCL device" message). Idempotent.
 std::string preparePoclCache();
 
 }  // namespace tsis

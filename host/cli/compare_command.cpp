@@ -8,6 +8,7 @@
 #include "compare/image_compare.h"
 #include "image/image_io.h"
 #include "util/error.h"
+#include "util/input_file.h"
 #include "util/output_set.h"
 
 namespace tsis {
@@ -30,6 +31,7 @@ comparison (exit 1) unless --allow-nonfinite is given.
 
 ImageF readInput(const std::string& path, const char* what) {
     if (!std::filesystem::exists(path)) fail(what, " '", path, "' does not exist");
+    requireRegularFile(path, what);  // a FIFO or /dev/zero would hang the image reader
     return readImageF(path);
 }
 

@@ -6,10 +6,20 @@
 // with v flipped (glTF's origin is the image's top left, the atlas' the
 // bottom left, as in OBJ); normals likewise. Images are never decoded. Every
 // accessor is bounds-checked here rather than trusting the file.
+//
+// A small file can name a huge scene: nodes are instances. Before anything is
+// allocated the node graph is checked to be a forest (a node with two parents,
+// which the spec forbids, doubles the work at every level; a cycle never ends)
+// and the instanced triangles and vertices are counted against a limit
+// (maxInstancedTriangles). External files (buffers) are read only from the
+// glTF's own folder, links resolved, and only when they are regular files.
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -20,6 +30,7 @@
 #include "mesh/mesh_io.h"
 #include "mesh/parse_util.h"
 #include "mesh/repair.h"
+#include "util/input_file.h"
 
 namespace tsis {
 
@@ -47,6 +58,49 @@ bool noRead(std::vector<unsigned char>*, std::string* err, const std::string& pa
 }
 bool noWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
     return false;
+}
+
+// With a folder: files inside it only. tinygltf joins the URI to the folder
+// (and then to "."); "../", an absolute path or a link that leads out is refused.
+struct Folder {
+    std::filesystem::path root;  // canonical
+};
+bool anyFile(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);  // ReadWholeFile says why one is refused
+}
+bool readInside(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                void* user) {
+    namespace fs = std::filesystem;
+    const fs::path& root = static_cast<const Folder*>(user)->root;
+    std::error_code ec;
+    const fs::path file = fs::canonical(path, ec);
+    const auto [r, f] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+    if (ec || r != root.end() || f == file.end()) {
+        if (err) *err = "outside the glTF's folder";
+        return false;
+    }
+    try {
+        const std::string bytes = readRegularFile(file.string(), "buffer");
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const Error& e) {
+        if (err) *err = e.what();
+        return false;
+    }
+}
+
+// Instanced triangles a glTF may expand to: $TSIS_MAX_TRIANGLES, else 4 M
+// (about 0.5 GB as a mesh; the largest data mesh has 1.9 M). Vertices: 3× that.
+uint64_t maxInstancedTriangles(const std::string& name) {
+    const char* env = std::getenv("TSIS_MAX_TRIANGLES");
+    if (!env || !*env) return 4'000'000;
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long v = std::strtoull(env, &end, 10);
+    if (*end != '\0' || errno != 0 || v == 0 || env[0] == '-')
+        failIn(name, "TSIS_MAX_TRIANGLES='", env, "' is not a positive integer");
+    return std::min<unsigned long long>(v, 1ull << 40);
 }
 
 // A dense accessor's elements in memory: element i starts at at(i); the
@@ -165,6 +219,86 @@ glm::mat4 localTransform(const tinygltf::Node& n) {
     return m;
 }
 
+// The default scene's nodes must form a forest: every node at most one
+// parent, no cycle. Returns the nodes in the order the walk meets them.
+std::vector<int> checkForest(const tinygltf::Model& model, const std::vector<int>& roots,
+                             const std::string& name) {
+    const int n = static_cast<int>(model.nodes.size());
+    auto valid = [&](int i) {
+        if (i < 0 || i >= n) failIn(name, "node ", i, " does not exist");
+    };
+    std::vector<int> parent(static_cast<size_t>(n), -1);
+    for (int p = 0; p < n; ++p)
+        for (int c : model.nodes[static_cast<size_t>(p)].children) {
+            valid(c);
+            if (parent[static_cast<size_t>(c)] >= 0)
+                failIn(name, "node ", c, " has two parents (nodes ", parent[static_cast<size_t>(c)],
+                       " and ", p, "); glTF allows one");
+            parent[static_cast<size_t>(c)] = p;
+        }
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    std::vector<int> order;
+    std::vector<std::pair<int, int>> stack;  // node, depth
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, 0);
+    while (!stack.empty()) {
+        const auto [i, depth] = stack.back();
+        stack.pop_back();
+        valid(i);
+        if (seen[static_cast<size_t>(i)])
+            failIn(name, "node ", i, " is reached twice (a cycle, or a scene root with a parent)");
+        if (depth > kMaxNodeDepth) failIn(name, "nodes nested deeper than ", kMaxNodeDepth);
+        seen[static_cast<size_t>(i)] = 1;
+        order.push_back(i);
+        const std::vector<int>& children = model.nodes[static_cast<size_t>(i)].children;
+        for (auto c = children.rbegin(); c != children.rend(); ++c)
+            stack.emplace_back(*c, depth + 1);
+    }
+    return order;
+}
+
+// Triangles and vertices of one instance of a primitive, as the file declares
+// them (the readers check the accessors later).
+std::pair<uint64_t, uint64_t> declaredSize(const tinygltf::Model& m, const tinygltf::Primitive& p) {
+    if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != -1) return {0, 0};
+    auto count = [&](int a) -> uint64_t {
+        return a >= 0 && a < static_cast<int>(m.accessors.size())
+                   ? m.accessors[static_cast<size_t>(a)].count
+                   : 0;
+    };
+    const auto pos = p.attributes.find("POSITION");
+    const uint64_t vertices = pos == p.attributes.end() ? 0 : count(pos->second);
+    return {(p.indices >= 0 ? count(p.indices) : vertices) / 3, vertices};
+}
+
+// Refuses a scene that instances more than the limit, before any is read:
+// O(primitives + nodes), whatever the product.
+void checkInstancedSize(const tinygltf::Model& model, const std::vector<int>& meshUses,
+                        const std::string& name) {
+    std::vector<std::pair<uint64_t, uint64_t>> perMesh(model.meshes.size());
+    for (size_t m = 0; m < model.meshes.size(); ++m)
+        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
+            const auto [t, v] = declaredSize(model, p);
+            perMesh[m].first = std::min<uint64_t>(perMesh[m].first + t, UINT64_MAX / 4);
+            perMesh[m].second = std::min<uint64_t>(perMesh[m].second + v, UINT64_MAX / 4);
+        }
+    const uint64_t maxTriangles = maxInstancedTriangles(name);
+    uint64_t triangles = 0, vertices = 0;
+    for (int mesh : meshUses) {
+        if (mesh < 0) continue;
+        if (mesh >= static_cast<int>(model.meshes.size()))
+            failIn(name, "mesh ", mesh, " does not exist");
+        // Both stay below 2⁶² + the limit: they stop at the first that passes it.
+        triangles += perMesh[static_cast<size_t>(mesh)].first;
+        vertices += perMesh[static_cast<size_t>(mesh)].second;
+        if (triangles > maxTriangles)
+            failIn(name, "the scene instances more than ", maxTriangles,
+                   " triangles (the limit; TSIS_MAX_TRIANGLES raises it)");
+        if (vertices > 3 * maxTriangles)
+            failIn(name, "the scene instances more than ", 3 * maxTriangles,
+                   " vertices (the limit, 3 × TSIS_MAX_TRIANGLES)");
+    }
+}
+
 struct Builder {
     const tinygltf::Model& model;
     const std::string& name;
@@ -174,10 +308,8 @@ struct Builder {
     bool allNormals = true, allUVs = true;
     size_t skippedPrimitives = 0;
 
-    void node(int index, const glm::mat4& parent, int depth) {
-        if (index < 0 || index >= static_cast<int>(model.nodes.size()))
-            failIn(name, "node ", index, " does not exist");
-        if (depth > kMaxNodeDepth) failIn(name, "nodes nested deeper than ", kMaxNodeDepth);
+    // Nodes checked by checkForest: valid indices, a tree, depth bounded.
+    void node(int index, const glm::mat4& parent) {
         const tinygltf::Node& n = model.nodes[static_cast<size_t>(index)];
         const glm::mat4 world = parent * localTransform(n);
         if (n.mesh >= 0) {
@@ -187,7 +319,7 @@ struct Builder {
                  model.meshes[static_cast<size_t>(n.mesh)].primitives)
                 primitive(p, world);
         }
-        for (int child : n.children) node(child, world, depth + 1);
+        for (int child : n.children) node(child, world);
     }
 
     void primitive(const tinygltf::Primitive& p, const glm::mat4& world) {
@@ -255,7 +387,15 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
     if (bytes.empty()) failIn(name, "empty file");
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
-    if (folder.empty()) loader.SetFsCallbacks({noFile, samePath, noRead, noWrite, nullptr});
+    Folder root;
+    if (folder.empty()) {
+        loader.SetFsCallbacks({noFile, samePath, noRead, noWrite, nullptr});
+    } else {
+        std::error_code ec;
+        root.root = std::filesystem::canonical(folder, ec);
+        if (ec) failIn(name, "its folder '", folder, "': ", ec.message());
+        loader.SetFsCallbacks({anyFile, samePath, readInside, noWrite, &root});
+    }
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
@@ -278,11 +418,20 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
         failIn(name, "not a valid glTF 2.0 file (", first.empty() ? "no reason given" : first, ")");
     }
     Builder b{model, name, {}, {}, {}};
+    b.mesh.name = name;  // repair's notes name the file
     const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
     if (scene < static_cast<int>(model.scenes.size())) {
-        for (int n : model.scenes[static_cast<size_t>(scene)].nodes) b.node(n, glm::mat4(1.0f), 0);
+        const std::vector<int>& roots = model.scenes[static_cast<size_t>(scene)].nodes;
+        std::vector<int> meshUses;
+        for (int n : checkForest(model, roots, name))
+            meshUses.push_back(model.nodes[static_cast<size_t>(n)].mesh);
+        checkInstancedSize(model, meshUses, name);
+        for (int n : roots) b.node(n, glm::mat4(1.0f));
     } else {
         // No scene: every mesh once, untransformed.
+        std::vector<int> meshUses(model.meshes.size());
+        for (size_t m = 0; m < meshUses.size(); ++m) meshUses[m] = static_cast<int>(m);
+        checkInstancedSize(model, meshUses, name);
         for (size_t m = 0; m < model.meshes.size(); ++m)
             for (const tinygltf::Primitive& p : model.meshes[m].primitives)
                 b.primitive(p, glm::mat4(1.0f));

@@ -1,14 +1,18 @@
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <string>
 #include <vector>
 
 #include "mesh/mesh_io.h"
+#include "support/scoped_env.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -152,6 +156,125 @@ TEST(GLTF, BadFilesAreOneLineErrors) {
         EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
         EXPECT_NE(msg.find("bad.gltf"), std::string::npos) << msg;
     }
+}
+
+// The quad's buffer and accessors with the given scene, nodes and meshes.
+std::string sceneJson(const std::string& roots, const std::string& nodes,
+                      const std::string& meshes) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [)" + roots +
+           R"(]}], "nodes": [)" + nodes + R"(], "meshes": [)" + meshes +
+           R"(], "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,)" +
+           base64(quadBuffer()) + R"("}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                      {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                     "min": [0, 0, 0], "max": [1, 1, 0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+}
+
+std::string joined(int n, const std::function<std::string(int)>& item) {
+    std::string s;
+    for (int i = 0; i < n; ++i) {
+        if (i) s += ',';
+        s += item(i);
+    }
+    return s;
+}
+
+double secondsOf(const std::function<void()>& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Two nodes per level, each parent of both nodes of the next: 2²⁵ instances
+// of the leaf from a 3 kB file if the walk followed it.
+TEST(GLTF, NodeWithTwoParentsIsRefusedAtOnce) {
+    const int levels = 25;
+    const std::string nodes = joined(2 * levels, [&](int i) {
+        const int next = (i / 2 + 1) * 2;
+        return i / 2 + 1 < levels ? R"({"children": [)" + std::to_string(next) + "," +
+                                        std::to_string(next + 1) + "]}"
+                                  : std::string(R"({"mesh": 0})");
+    });
+    const std::string file = sceneJson(
+        "0,1", nodes, R"({"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]})");
+    std::string msg;
+    EXPECT_LT(secondsOf([&] { msg = errorOf(file); }), 1.0);
+    EXPECT_NE(msg.find("node 2 has two parents (nodes 0 and 1)"), std::string::npos) << msg;
+}
+
+TEST(GLTF, CyclesAndRepeatedRootsAreRefused) {
+    const std::string mesh = R"({"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]})";
+    for (const auto& [roots, nodes] : std::vector<std::pair<std::string, std::string>>{
+             {"0", R"({"children": [1]}, {"children": [0], "mesh": 0})"},
+             {"0", R"({"children": [0], "mesh": 0})"},
+             {"0,0", R"({"mesh": 0})"}}) {
+        const std::string msg = errorOf(sceneJson(roots, nodes, mesh));
+        EXPECT_NE(msg.find("reached twice"), std::string::npos) << nodes << ": " << msg;
+    }
+}
+
+// Legal but huge: N nodes × N primitives, all the same two triangles.
+TEST(GLTF, InstancedTrianglesAreCountedBeforeReading) {
+    auto file = [](int n) {
+        const std::string prims = joined(
+            n, [](int) { return std::string(R"({"attributes": {"POSITION": 0}, "indices": 1})"); });
+        const std::string nodes = joined(n, [](int i) {
+            return R"({"mesh": 0, "translation": [)" + std::to_string(2 * i) + ", 0, 0]}";
+        });
+        return sceneJson(joined(n, [](int i) { return std::to_string(i); }), nodes,
+                         R"({"primitives": [)" + prims + "]}");
+    };
+    // The issue's 3,000 × 3,000: 18 M triangles, refused by the default limit.
+    const std::string huge = file(3000);
+    std::string msg;
+    EXPECT_LT(secondsOf([&] { msg = errorOf(huge); }), 1.0);
+    EXPECT_NE(msg.find("instances more than 4000000 triangles"), std::string::npos) << msg;
+    {
+        const test::ScopedEnv limit("TSIS_MAX_TRIANGLES", "199");
+        EXPECT_NE(errorOf(file(10)).find("more than 199 triangles"), std::string::npos);
+    }
+    const test::ScopedEnv limit("TSIS_MAX_TRIANGLES", "200");
+    EXPECT_EQ(parseGLTF(file(10), "ten.gltf").triangles.size(), 20u)
+        << "10 × 10 primitives of 2 triangles; the copies in one node coincide";
+    const test::ScopedEnv bad("TSIS_MAX_TRIANGLES", "lots");
+    EXPECT_NE(errorOf(file(1)).find("not a positive integer"), std::string::npos);
+}
+
+// External files: only regular files inside the glTF's folder.
+TEST(GLTF, ExternalFilesOutsideTheFolderOrNotRegularAreRefused) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("tsis-gltf-uri-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "sub");
+    std::ofstream(dir / "quad.bin", std::ios::binary) << quadBuffer();
+    fs::create_symlink(dir / "quad.bin", dir / "sub" / "link.bin");
+    ASSERT_EQ(::mkfifo((dir / "sub" / "fifo.bin").c_str(), 0600), 0);
+    const std::string gltf = (dir / "sub" / "quad.gltf").string();
+    auto load = [&](const std::string& uri) {
+        std::ofstream(gltf) << quadJson(R"({"byteLength": 140, "uri": ")" + uri + R"("})");
+        try {
+            loadMesh(gltf);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(load("../quad.bin").find("outside the glTF's folder"), std::string::npos);
+    // tinygltf joins an absolute URI to the folder, then to the working
+    // folder: not found, or found outside.
+    for (const std::string& uri : {(dir / "quad.bin").string(), std::string("/dev/zero")}) {
+        const std::string msg = load(uri);
+        EXPECT_TRUE(msg.find("not found") != std::string::npos ||
+                    msg.find("outside the glTF's folder") != std::string::npos)
+            << uri << ": " << msg;
+    }
+    EXPECT_NE(load("link.bin").find("outside the glTF's folder"), std::string::npos);
+    EXPECT_NE(load("fifo.bin").find("is a FIFO"), std::string::npos);
+    fs::rename(dir / "quad.bin", dir / "sub" / "quad.bin");
+    EXPECT_EQ(load("quad.bin"), "");
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <memory>
 
 #include "mesh/builtin.h"
 #include "util/error.h"
+#include "util/input_file.h"
 
 #ifndef TSIS_DATA_DIR
 #define TSIS_DATA_DIR "data"
@@ -23,16 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string readFile(const std::string& path) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) fail("mesh '", path, "': is a directory");
-    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) fail("mesh '", path, "': cannot open (", std::strerror(errno), ")");
-    std::string bytes;
-    char buffer[1 << 16];
-    size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) bytes.append(buffer, n);
-    if (std::ferror(f.get())) fail("mesh '", path, "': read error (", std::strerror(errno), ")");
-    return bytes;
+    return readRegularFile(path, "mesh");
 }
 
 std::string lowerExtension(const std::string& spec) {

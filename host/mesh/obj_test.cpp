@@ -43,13 +43,13 @@ TEST(OBJ, SplitsVerticesPerUniqueCornerAndNegativeIndices) {
         "vn 0 0 1\n"
         "f 1/1/1 2/2/1 3/3/1\n"
         "f -3/-2/-1 -1/-1/-1 -2/-5/-1\n"  // = 2/5/1 4/6/1 3/2/1
-        "f 1/1/1 2/2/1 3/3/1\n";          // a repeat: no new vertices
+        "f 1/1/1 3/3/1 2/2/1\n";          // reversed repeat: no new vertices
     testing::internal::CaptureStderr();
     const Mesh m = parseOBJ(text, "seam.obj");
     testing::internal::GetCapturedStderr();
     EXPECT_EQ(m.positions.size(), 6u);
     ASSERT_EQ(m.triangles.size(), 3u);
-    EXPECT_EQ(m.triangles[0], m.triangles[2]);
+    EXPECT_EQ(m.triangles[2], glm::uvec3(m.triangles[0].x, m.triangles[0].z, m.triangles[0].y));
     const glm::uvec3 t = m.triangles[1];
     EXPECT_EQ(m.positions[t.x], glm::vec3(1, 0, 0));
     EXPECT_EQ(m.uvs[t.x], glm::vec2(0.5f, 1));

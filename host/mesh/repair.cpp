@@ -92,6 +92,35 @@ size_t dropDegenerate(Mesh& mesh) {
     return dropped;
 }
 
+// Drops every later copy of a triangle with the same corners in the same
+// cyclic order ((a,b,c), (b,c,a), (c,a,b)); the first stays where it was. A
+// reversed copy (a,c,b) is another face, the back of the first, and stays.
+size_t dropDuplicateTriangles(Mesh& mesh) {
+    auto canonical = [&](uint32_t t) {
+        const glm::uvec3 v = mesh.triangles[t];
+        const int k = v.x <= v.y && v.x <= v.z ? 0 : (v.y <= v.z ? 1 : 2);
+        return std::make_tuple(v[k], v[(k + 1) % 3], v[(k + 2) % 3]);
+    };
+    const size_t n = mesh.triangles.size();
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return canonical(a) < canonical(b); });
+    std::vector<char> keep(n, 1);
+    size_t dropped = 0;
+    for (size_t i = 1; i < n; ++i)
+        if (canonical(order[i]) == canonical(order[i - 1])) {
+            keep[order[i]] = 0;
+            ++dropped;
+        }
+    if (dropped == 0) return 0;
+    size_t kept = 0;
+    for (size_t t = 0; t < n; ++t)
+        if (keep[t]) mesh.triangles[kept++] = mesh.triangles[t];
+    mesh.triangles.resize(kept);
+    return dropped;
+}
+
 size_t dropUnreferenced(Mesh& mesh) {
     const size_t n = mesh.positions.size();
     std::vector<uint32_t> remap(n, UINT32_MAX);
@@ -158,6 +187,11 @@ RepairReport repairMesh(Mesh& mesh) {
     if (mesh.triangles.empty())
         fail("mesh '", mesh.name, "': no triangles left after removing ",
              report.degenerateTriangles, " degenerate ones");
+    report.duplicateTriangles = dropDuplicateTriangles(mesh);
+    if (report.duplicateTriangles)
+        note(mesh, concat("removed ", report.duplicateTriangles, " duplicate ",
+                          plural(report.duplicateTriangles, "triangle", "triangles"),
+                          " (same corners as an earlier one)"));
     // Vertices left over by merging or used only by degenerate triangles: the
     // notes above already account for them.
     dropUnreferenced(mesh);

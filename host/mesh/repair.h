@@ -20,14 +20,15 @@ EdgeStats edgeStats(const Mesh& mesh);
 struct RepairReport {
     size_t mergedVertices = 0;        // exact duplicates folded into one (only without UVs)
     size_t degenerateTriangles = 0;   // repeated index or area < 1e-12 · diagonal²
+    size_t duplicateTriangles = 0;    // same corners, same order (up to rotation) as an earlier one
     size_t unreferencedVertices = 0;  // used by no triangle, dropped
     size_t nonManifoldEdges = 0;      // reported, kept
 };
 
 // Refuses non-finite positions or UVs and out-of-range indices (bugs in a
 // parser, or a mesh built by hand); merges exact duplicate vertices when the
-// mesh has no UVs (merging would close UV seams); drops degenerate triangles
-// and unreferenced vertices; reports non-manifold edges. Throws when no
+// mesh has no UVs (merging would close UV seams); drops degenerate triangles,
+// exact duplicate triangles and unreferenced vertices; reports non-manifold edges. Throws when no
 // triangle is left.
 RepairReport repairMesh(Mesh& mesh);
 

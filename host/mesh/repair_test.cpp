@@ -100,6 +100,35 @@ TEST(Repair, DropsDegenerateAndUnreferenced) {
         for (int k = 0; k < 3; ++k) EXPECT_LT(t[k], 4u);
 }
 
+TEST(Repair, DropsExactDuplicateTrianglesKeepsReversedOnes) {
+    Mesh m = square();
+    m.triangles.push_back({0, 1, 2});  // the same
+    m.triangles.push_back({1, 2, 0});  // the same, rotated
+    m.triangles.push_back({3, 2, 1});  // the same as {2, 1, 3}
+    m.triangles.push_back({0, 2, 1});  // reversed: the back face, kept
+    std::string notes;
+    const RepairReport r = quietRepair(m, &notes);
+    EXPECT_EQ(r.duplicateTriangles, 3u);
+    ASSERT_EQ(m.triangles.size(), 3u);
+    EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2)) << "the first copy stays in place";
+    EXPECT_EQ(m.triangles[1], glm::uvec3(2, 1, 3));
+    EXPECT_EQ(m.triangles[2], glm::uvec3(0, 2, 1));
+    EXPECT_THAT(notes, HasSubstr("removed 3 duplicate triangles"));
+}
+
+TEST(Repair, DuplicatesOfSeparateButEqualVerticesGoAfterMerging) {
+    Mesh m = square();
+    for (int copy = 0; copy < 1000; ++copy) {  // 1,000 copies with their own corners
+        const uint32_t base = uint32_t(m.positions.size());
+        m.positions.insert(m.positions.end(), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        m.triangles.push_back({base, base + 1, base + 2});
+    }
+    const RepairReport r = quietRepair(m);
+    EXPECT_EQ(r.duplicateTriangles, 1000u);
+    EXPECT_EQ(m.triangles.size(), 2u);
+    EXPECT_EQ(m.positions.size(), 4u);
+}
+
 TEST(Repair, ReportsNonManifoldEdgesButKeepsThem) {
     Mesh m = square();
     m.positions.push_back({0.5f, 0.5f, 1});

@@ -1,6 +1,7 @@
 #include "render/method_reference.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,34 @@ double ReferenceMethod::defaultSpacing(const Material& m) {
     return 0.5 * smallestMeanFreePath(m);
 }
 
+std::string ReferenceCost::describe() const {
+    char s[256];
+    // 0.56 G evaluations/s: bench_kernels on a 2-core PoCL device (README).
+    std::snprintf(s, sizeof s,
+                  "%.3g M surface points (%.2g GB), %.2g Rd evaluations per frame (%.2g h at "
+                  "0.56 G/s)",
+                  points / 1e6, bytes / 1e9, evaluations, evaluations / 0.56e9 / 3600);
+    return s;
+}
+
+ReferenceCost ReferenceMethod::estimate(const Mesh& mesh, double spacing, double pixels) {
+    ReferenceCost c;
+    c.points = surfacePointCount(mesh, spacing);
+    // A SurfacePoint and a TsisSample on the host, the sample again on the device.
+    c.bytes = double(c.points) * double(sizeof(SurfacePoint) + 2 * sizeof(TsisSample));
+    c.evaluations = double(c.points) * pixels;
+    return c;
+}
+
+void ReferenceMethod::checkCost(const ReferenceCost& cost, bool force) {
+    if (cost.withinBounds()) return;
+    if (!force)
+        fail("reference: ", cost.describe(), "; more than the bounds of ",
+             kMaxReferencePoints / 1e6, " M points and ", kMaxReferenceEvaluations,
+             " evaluations (use a larger --spacing, a smaller image, or --force)");
+    std::fprintf(stderr, "tsis: note: reference: %s (--force)\n", cost.describe().c_str());
+}
+
 void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const double spacing =
         ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(ctx.scene->material);
@@ -31,6 +60,10 @@ void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     graph.addPass(
         "reference_points", [&](FrameGraph::Builder& b) { b.write(samples); },
         [this, &ctx, spacing](FrameGraph::Resources& res) {
+            if (!points_.holds(*ctx.scene, spacing))
+                checkCost(estimate(ctx.scene->mesh, spacing,
+                                   double(ctx.options->width) * ctx.options->height),
+                          ctx.options->force);
             const bool built = points_.update(*ctx.scene, spacing, "reference");
             const std::vector<SurfacePoint>& pts = points_.points();
             if (built) {

@@ -13,8 +13,14 @@
 // chunks of pixels so a terminal shows progress.
 // Cost: points ≈ Σ_triangles max(1, ⌈longest edge/h⌉²) ≈ max(T, 2.3 A/h²); their
 // irradiance once per mesh, lights, η and h (cached across frames); then
-// pixels × points Rd evaluations every frame.
+// pixels × points Rd evaluations every frame. A small --spacing makes that
+// hours and gigabytes, so the cost is estimated before any point is made
+// (ReferenceCost) and a run past kMaxReferencePoints or
+// kMaxReferenceEvaluations is refused, with the estimate, unless --force.
 #pragma once
+
+#include <cstdint>
+#include <string>
 
 #include "cl/gather.h"
 #include "render/method.h"
@@ -22,6 +28,23 @@
 #include "render/surface_points.h"
 
 namespace tsis {
+
+// Bounds of a run without --force: 20 M points (≈ 2 GB with their device copy)
+// and 2·10¹² Rd evaluations per frame (about an hour on a 2-core PoCL device
+// at 0.56 G/s, README).
+constexpr uint64_t kMaxReferencePoints = 20'000'000;
+constexpr double kMaxReferenceEvaluations = 2e12;
+
+struct ReferenceCost {
+    uint64_t points = 0;
+    double bytes = 0;        // host and device memory the points take
+    double evaluations = 0;  // Rd evaluations per frame, every pixel covered
+    bool withinBounds() const {
+        return points <= kMaxReferencePoints && evaluations <= kMaxReferenceEvaluations;
+    }
+    std::string describe()
+        const;  // "1.2 M surface points (0.1 GB), 3e+11 Rd evaluations per frame (…)"
+};
 
 class ReferenceMethod : public Method {
   public:
@@ -31,6 +54,11 @@ class ReferenceMethod : public Method {
 
     // The default spacing h for a material: ℓ_min / 2.
     static double defaultSpacing(const Material& m);
+    // What a frame of `pixels` pixels costs at spacing h (no point is made).
+    static ReferenceCost estimate(const Mesh& mesh, double spacing, double pixels);
+    // Throws tsis::Error with the estimate when it is past the bounds and
+    // force is false; with force, notes the estimate on stderr.
+    static void checkCost(const ReferenceCost& cost, bool force);
 
   private:
     // Returns the device milliseconds.

@@ -74,6 +74,7 @@ struct RenderOptions {
     int ltsmPerRing = 4;
     int misDistanceSamples = 16;  // mis: distance-driven samples per pixel and light
     double spacingMm = 0;         // reference / hierarchical sample spacing; 0 = the method's rule
+    bool force = false;           // reference: run past its cost bounds (method_reference.h)
     float epsilon = 0.05f;        // hierarchical: a node is used whole when ΔA/r² < epsilon
     // pyramid: a node is used whole when max(radius², area/π) < ε·(d² + ℓ²)
     float pyramidEpsilon = 0.05f;

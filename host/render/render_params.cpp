@@ -54,12 +54,17 @@ RenderParam choice(RenderParam p, E RenderOptions::*field, E (*parse)(const std:
     return p;
 }
 
-// A flag that turns a setting that is on by default off ("--no-specular").
-RenderParam turnsOff(RenderParam p, bool RenderOptions::*field) {
+// A flag: given, it sets its bool field to `whenGiven` ("--no-specular"
+// turns the highlight off, "--force" turns the cost bounds' override on).
+RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
     p.flag = true;
     p.showDefault = false;
-    p.text = [field](const RenderOptions& o) { return std::string(o.*field ? "0" : "1"); };
-    p.set = [field](RenderOptions& o, const std::string& value) { o.*field = value != "1"; };
+    p.text = [field, whenGiven](const RenderOptions& o) {
+        return std::string(o.*field == whenGiven ? "1" : "0");
+    };
+    p.set = [field, whenGiven](RenderOptions& o, const std::string& value) {
+        o.*field = (value == "1") == whenGiven;
+    };
     p.example = "1";
     return p;
 }
@@ -166,12 +171,17 @@ std::vector<RenderParam> makeParams() {
                 kEvery, kLighting},
                &O::lightResolution, {16, 8192, false, true}),
         number({"key", "K  tone-mapping key", kEvery, kDisplay}, &O::key, {1e-4, 100}),
-        turnsOff({"no-specular", "turn off the Phong highlight", kEvery, kDisplay}, &O::specular),
-        turnsOff({"no-reuse-lighting",
-                  "make the light maps and flux atlas every frame, even when the lighting did not "
-                  "change",
-                  kEvery, ParamEffect::None},
-                 &O::reuseLighting),
+        flag({"no-specular", "turn off the Phong highlight", kEvery, kDisplay}, &O::specular,
+             false),
+        // Not the pixels: whether a costly run may start (method_reference.h).
+        flag({"force", "run even past the cost bounds (points, memory, Rd evaluations)",
+              M{"reference"}, ParamEffect::None},
+             &O::force, true),
+        flag({"no-reuse-lighting",
+              "make the light maps and flux atlas every frame, even when the lighting did not "
+              "change",
+              kEvery, ParamEffect::None},
+             &O::reuseLighting, false),
     };
 }
 

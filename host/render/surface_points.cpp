@@ -272,6 +272,12 @@ class IrradianceSampler {
 
 }  // namespace
 
+uint64_t surfacePointCount(const Mesh& mesh, double spacing) {
+    uint64_t total = 0;
+    for (uint32_t kt : subdivisions(mesh, spacing)) total += uint64_t{kt} * kt;
+    return total;
+}
+
 std::vector<SurfacePoint> placeSurfacePoints(const Mesh& mesh, double spacing) {
     const std::vector<uint32_t> k = subdivisions(mesh, spacing);
     std::vector<SurfacePoint> points;
@@ -399,10 +405,18 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
     return out;
 }
 
-bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label) {
+uint64_t SurfaceSampleCache::keyOf(const Scene& scene, double spacing) {
     Hasher h(meshHash(scene.mesh));
     hashIrradiance(h, scene);
-    const uint64_t key = h.add(spacing).digest();
+    return h.add(spacing).digest();
+}
+
+bool SurfaceSampleCache::holds(const Scene& scene, double spacing) const {
+    return valid_ && keyOf(scene, spacing) == key_;
+}
+
+bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label) {
+    const uint64_t key = keyOf(scene, spacing);
     if (valid_ && key == key_) return false;
     Timer t;
     {

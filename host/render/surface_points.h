@@ -33,6 +33,8 @@ double smallestMeanFreePath(const Material& m);
 // linear integrands, second order otherwise). Order: triangle by triangle.
 // The mesh needs normals; irradiance is left 0.
 std::vector<SurfacePoint> placeSurfacePoints(const Mesh& mesh, double spacing);
+// How many points placeSurfacePoints makes (Σ k²), without making them.
+uint64_t surfacePointCount(const Mesh& mesh, double spacing);
 
 // E(x) of docs/design.md §2 summed over the lights, with V(x) = 1 when the segment from
 // x + offset·n to the light (a point light's position, or `reach` mm against a
@@ -69,10 +71,13 @@ class SurfaceSampleCache {
   public:
     // Returns true when it (re)built the points; `label` names the progress line.
     bool update(const Scene& scene, double spacing, const std::string& label);
+    // True when update() would keep the points it has.
+    bool holds(const Scene& scene, double spacing) const;
     const std::vector<SurfacePoint>& points() const { return points_; }
     double lastBuildMs() const { return buildMs_; }
 
   private:
+    static uint64_t keyOf(const Scene& scene, double spacing);
     uint64_t key_ = 0;
     bool valid_ = false;
     std::vector<SurfacePoint> points_;

@@ -72,6 +72,14 @@ TEST(SurfacePoints, AreasSumToTheMeshArea) {
     EXPECT_NEAR(area / m.surfaceArea(), 1.0, 1e-5);
 }
 
+TEST(SurfacePoints, CountWithoutPlacing) {
+    Mesh m = builtinSphere();
+    normalizeMesh(m, 10.0);
+    ensureNormals(m);
+    for (double spacing : {10.0, 0.5, 0.05})
+        EXPECT_EQ(surfacePointCount(m, spacing), placeSurfacePoints(m, spacing).size()) << spacing;
+}
+
 TEST(SurfacePoints, IrradianceOfPointAndDirectionalLightsWithShadow) {
     Mesh m;
     addSquare(m, 0.0f, 4.0f);

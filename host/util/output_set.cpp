@@ -130,7 +130,8 @@ OutputSet::~OutputSet() {
 
 void OutputSet::rollback() noexcept {
     std::error_code ec;
-    for (const Entry& e : entries_) removeFile(e.temp);
+    for (const Entry& e : entries_)
+        if (!e.staged) removeFile(e.temp);  // staged ones go with their folder
     for (const fs::path& d : stagingDirs_) {
         fs::remove_all(d, ec);
         unregisterTemporary(d);
@@ -145,13 +146,14 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
     Entry e{target, target, {}, Kind::Rename};
     if (target == "-") {
         if (defaultExtension.empty()) fail("'-' (standard output) is not possible for this output");
-        for (const Entry& o : entries_)
-            if (o.kind == Kind::Stdout) fail("two outputs are '-' (standard output)");
+        if (hasStdout_) fail("two outputs are '-' (standard output)");
         e.kind = Kind::Stdout;
         e.ext = defaultExtension;
         auto tmp = reserveTemporary(fs::temp_directory_path(), "stdout", defaultExtension);
         if (!tmp) cannotWrite(target, "no temporary file: ", std::strerror(errno));
         e.temp = *tmp;
+        hasStdout_ = true;
+        byTarget_.emplace(target, entries_.size());
         entries_.push_back(e);
         return;
     }
@@ -181,26 +183,18 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
             cannotWrite(target, "it is not a regular file, a character device or a FIFO");
     }
     if (e.kind == Kind::Rename) {
-        const fs::path dir = e.dest.parent_path().empty() ? fs::path(".") : e.dest.parent_path();
-        const fs::file_status ds = fs::status(dir, ec);
-        if (ds.type() == fs::file_type::not_found)
-            cannotWrite(target, "directory '", dir.string(), "' does not exist");
-        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
-        if (ds.type() != fs::file_type::directory)
-            cannotWrite(target, "'", dir.string(), "' is not a directory");
-        const fs::path abs = fs::weakly_canonical(fs::absolute(e.dest), ec);
-        for (const Entry& o : entries_)
-            if (o.kind == Kind::Rename && fs::weakly_canonical(fs::absolute(o.dest), ec) == abs)
-                fail("'", target, "' is given for two outputs");
+        e.landing = landingPath(e.dest, target);
+        if (landings_.count(e.landing)) fail("'", target, "' is given for two outputs");
     }
     if (!stageIn.empty()) {
+        // The staging folder is this run's own (mkdtemp), so its names need no
+        // file on disk yet: 100,000 frames would cost as many creations (minutes
+        // on a busy disk) before the first. Two targets of one name would share
+        // a temporary: refused.
         e.ext = e.dest.extension().string();
         e.temp = stageIn / e.dest.filename();
-        // Not inside a signal's cleanup of the staging folder (it would stay).
-        const auto hold = holdTemporaries();
-        const int fd = ::open(e.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0) cannotWrite(target, std::strerror(errno));
-        ::close(fd);
+        e.staged = true;
+        if (!staged_.insert(e.temp.string()).second) cannotWrite(target, std::strerror(EEXIST));
     } else {
         // The format follows the name given (a link to /dev/null named x.png is a
         // PNG), else the file it points to.
@@ -214,7 +208,28 @@ void OutputSet::add(const std::string& target, const std::string& defaultExtensi
         if (!tmp) cannotWrite(target, std::strerror(errno));
         e.temp = *tmp;
     }
+    if (!e.landing.empty()) landings_.insert(e.landing);
+    byTarget_.emplace(target, entries_.size());
     entries_.push_back(e);
+}
+
+std::string OutputSet::landingPath(const fs::path& dest, const std::string& target) {
+    // The target is a regular file or a new name (links are resolved, folders
+    // refused), so only its folder can hold links and dot-dots.
+    const fs::path dir = dest.parent_path().empty() ? fs::path(".") : dest.parent_path();
+    auto it = canonicalDirs_.find(dir.string());
+    if (it == canonicalDirs_.end()) {
+        std::error_code ec;
+        const fs::file_status ds = fs::status(dir, ec);
+        if (ds.type() == fs::file_type::not_found)
+            cannotWrite(target, "directory '", dir.string(), "' does not exist");
+        if (ds.type() == fs::file_type::none) cannotWrite(target, ec.message());
+        if (ds.type() != fs::file_type::directory)
+            cannotWrite(target, "'", dir.string(), "' is not a directory");
+        const fs::path canonical = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+        it = canonicalDirs_.emplace(dir.string(), canonical.string()).first;
+    }
+    return it->second + "/" + dest.filename().string();
 }
 
 void OutputSet::makeDirectory(const std::string& dir) {
@@ -250,9 +265,9 @@ fs::path OutputSet::makeStagingDirectory(const std::string& dir) {
 }
 
 const OutputSet::Entry& OutputSet::find(const std::string& target) const {
-    for (const Entry& e : entries_)
-        if (e.target == target) return e;
-    fail("internal: output '", target, "' was not added");
+    const auto it = byTarget_.find(target);
+    if (it == byTarget_.end()) fail("internal: output '", target, "' was not added");
+    return entries_[it->second];
 }
 
 fs::path OutputSet::temporary(const std::string& target) const {
@@ -280,12 +295,17 @@ void OutputSet::write(const std::string& target,
 }
 
 void OutputSet::discard(const std::string& target) {
-    for (auto it = entries_.begin(); it != entries_.end(); ++it)
-        if (it->target == target) {
-            removeFile(it->temp);
-            entries_.erase(it);
-            return;
-        }
+    const auto found = byTarget_.find(target);
+    if (found == byTarget_.end()) return;
+    const auto it = entries_.begin() + static_cast<std::ptrdiff_t>(found->second);
+    removeFile(it->temp);
+    landings_.erase(it->landing);
+    staged_.erase(it->temp.string());
+    if (it->kind == Kind::Stdout) hasStdout_ = false;
+    entries_.erase(it);
+    // Rare (an AOV nobody asked for): the index is rebuilt, first entry per target.
+    byTarget_.clear();
+    for (size_t i = 0; i < entries_.size(); ++i) byTarget_.emplace(entries_[i].target, i);
 }
 
 void OutputSet::commit() {

@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "util/output_file.h"  // writeText, for callers
@@ -33,7 +35,8 @@ class OutputSet {
     // Checks `target` and reserves its temporary; throws tsis::Error naming
     // the target. `defaultExtension` (".png") gives the format of "-" and of a
     // device named without an extension; without it "-" is refused. `stageIn`, when given, is a
-    // folder (made by makeStagingDirectory) whose file of the target's name is the temporary.
+    // folder (made by makeStagingDirectory) whose file of the target's name is the temporary
+    // (made by the writer: the folder is the run's own, so add() creates nothing there).
     void add(const std::string& target, const std::string& defaultExtension = "",
              const std::filesystem::path& stageIn = {});
     // Creates `dir` and missing parents now (they go again unless committed).
@@ -67,12 +70,24 @@ class OutputSet {
         std::filesystem::path dest;  // where the bytes go (a link resolved)
         std::filesystem::path temp;
         Kind kind;
-        std::string ext;  // the format's extension (see extension())
+        std::string ext;      // the format's extension (see extension())
+        std::string landing;  // landingPath(dest) for Rename entries, else ""
+        bool staged = false;  // temp is in a staging folder
     };
     const Entry& find(const std::string& target) const;
+    // The absolute, canonical path a Rename entry lands on, for spotting one
+    // file given twice. Each folder is checked (exists, is a folder; errors
+    // name `target`) and canonicalised once (cached), so N outputs cost N
+    // lookups, not N² canonicalisations (animate's 100,000 frames).
+    std::string landingPath(const std::filesystem::path& dest, const std::string& target);
     void rollback() noexcept;
 
     std::vector<Entry> entries_;
+    std::unordered_map<std::string, size_t> byTarget_;            // target → index in entries_
+    std::unordered_set<std::string> landings_;                    // of every Rename entry
+    std::unordered_set<std::string> staged_;                      // temporaries in staging folders
+    std::unordered_map<std::string, std::string> canonicalDirs_;  // folder as given → canonical
+    bool hasStdout_ = false;
     std::vector<std::filesystem::path> madeDirs_;  // deepest last
     std::vector<std::filesystem::path> stagingDirs_;
     bool committed_ = false;

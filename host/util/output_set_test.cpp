@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -103,6 +104,54 @@ TEST(OutputSet, RefusesBadTargetsBeforeWork) {
               std::string::npos);
     EXPECT_EQ(errorOf([&] { out.add("-", ".json"); }), "");
     EXPECT_NE(errorOf([&] { out.add("-", ".json"); }).find("two outputs"), std::string::npos);
+}
+
+TEST(OutputSet, SameFileThroughALinkedFolderIsGivenTwice) {
+    TempDir d;
+    fs::create_directory(d.file("real"));
+    fs::create_directory_symlink(d.file("real"), d.file("link"));
+    OutputSet out;
+    out.add(d.file("real/x.png"));
+    EXPECT_NE(errorOf([&] { out.add(d.file("link/x.png")); }).find("two outputs"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { out.add(d.file("link/../real/x.png")); }).find("two outputs"),
+              std::string::npos);
+    EXPECT_EQ(errorOf([&] { out.add(d.file("link/y.png")); }), "");
+    out.discard(d.file("real/x.png"));
+    EXPECT_EQ(errorOf([&] { out.add(d.file("link/x.png")); }), "") << "free again once discarded";
+}
+
+// animate stages up to 100,000 frames before the first: each add() must
+// neither look at every earlier one (5,000 took minutes) nor touch the disk
+// beyond a stat or two.
+TEST(OutputSet, ManyStagedTargetsAreAddedInLinearTime) {
+    TempDir d;
+    OutputSet out;
+    const fs::path stage = out.makeStagingDirectory(d.path.string());
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 20000; ++i)
+        out.add(d.file("frame_" + std::to_string(i) + ".png"), "", stage);
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(s, 2.0);
+    EXPECT_EQ(entries(stage), 0u) << "nothing created before the writers";
+    // Two targets of one file name cannot share the staging folder.
+    fs::create_directory(d.file("other"));
+    EXPECT_NE(errorOf([&] { out.add(d.file("other/frame_7.png"), "", stage); }).find("exists"),
+              std::string::npos);
+}
+
+TEST(OutputSet, StagedTargetIsWrittenAndCommitted) {
+    TempDir d;
+    {
+        OutputSet out;
+        const fs::path stage = out.makeStagingDirectory(d.path.string());
+        out.add(d.file("frame_0.png"), "", stage);
+        out.write(d.file("frame_0.png"), [](const fs::path& f) { writeText(f, "first"); });
+        out.commit();
+    }
+    EXPECT_EQ(slurp(d.file("frame_0.png")), "first");
+    EXPECT_EQ(entries(d.path), 1u) << "the staging folder went";
 }
 
 TEST(OutputSet, ErrorsNameTheTargetNotTheTemporary) {
