@@ -122,7 +122,8 @@ std::vector<SceneCase> sceneCases(const BenchArgs& a) {
     std::vector<SceneCase> scenes = {{"builtin:sphere", "marble", "10"},
                                      {"builtin:sphere", "skin1", "30"},
                                      {"builtin:default", "marble", "10"},
-                                     {"builtin:default", "skin1", "10"}};
+                                     {"builtin:default", "skin1", "10"},
+                                     {"cow", "marble", "10"}};
     if (a.quick) scenes.resize(1);
     return scenes;
 }
@@ -146,8 +147,11 @@ const ProfileModel kModels[] = {ProfileModel::Dipole, ProfileModel::BetterDipole
                                 ProfileModel::Pbd};
 const ExitTerm kExits[] = {ExitTerm::Jensen, ExitTerm::Normalized};
 
-std::string combination(ProfileModel m, ExitTerm e) {
-    return std::string(profileModelName(m)) + " + " + exitTermName(e);
+const EnergyTarget kEnergies[] = {EnergyTarget::SemiInfinite, EnergyTarget::Object};
+
+std::string combination(ProfileModel m, ExitTerm e, EnergyTarget t = EnergyTarget::SemiInfinite) {
+    return std::string(profileModelName(m)) + " + " + exitTermName(e) +
+           (t == EnergyTarget::Object ? " + energy object" : "");
 }
 
 // Item 4: every profile model and exit term against volumetric transport.
@@ -156,8 +160,9 @@ int runModels(const BenchArgs& a, long long photons, int spp, int size) {
     md += "Made by `build/bench/bench_physical --models --photons " + std::to_string(photons) +
           " --spp " + std::to_string(spp) + " --size " + std::to_string(size) +
           "` (bench/bench_physical.cpp) on " + timestamp() +
-          "; the slab and scenes of [physical.md](physical.md), each profile (`--profile`) and "
-          "exit term (`--exit`) against `--method volumetric`.\n\n";
+          "; the slab and scenes of [physical.md](physical.md), each profile (`--profile`), "
+          "exit term (`--exit`) and energy target (`--energy`) against `--method "
+          "volumetric`.\n\n";
     std::vector<std::string> header = {"material", "channel", "R vol."};
     for (ProfileModel m : kModels)
         header.push_back(std::string("R ") + profileModelName(m) + " / vol.");
@@ -221,27 +226,34 @@ int runModels(const BenchArgs& a, long long photons, int spp, int size) {
     const std::vector<SceneCase> scenes = sceneCases(a);
     for (const SceneCase& s : scenes) sceneHeader.push_back(s.name() + ": rel. RMSE (scaled)");
     Table summary(sceneHeader);
-    std::vector<std::vector<std::string>> cells(slabError.size());
-    for (size_t k = 0; k < cells.size(); ++k)
-        cells[k] = {combination(kModels[k / 2], kExits[k % 2]),
-                    fmt(100 * slabError[k] / std::max(rows, 1), 1) + "%"};
+    // Rows: model × exit × energy target (--energy object is 1 on the slab).
+    const size_t nE = std::size(kEnergies);
+    std::vector<std::vector<std::string>> cells(slabError.size() * nE);
+    for (size_t k = 0; k < cells.size(); ++k) {
+        const size_t me = k / nE;
+        cells[k] = {combination(kModels[me / 2], kExits[me % 2], kEnergies[k % nE]),
+                    fmt(100 * slabError[me] / std::max(rows, 1), 1) + "%"};
+    }
     for (const SceneCase& s : scenes) {
         BenchCase c = makeCase(s.args(size));
         const FrameResult vol = renderVolumetric(renderer, c, spp, 1);
         const double exits[] = {1.0, normalizedExitScale(c.scene.material.eta)};
-        for (size_t mi = 0; mi < std::size(kModels); ++mi) {
-            c.options.profile = kModels[mi];
-            const ReferenceImage ref = renderReference(renderer, c);
-            for (size_t e = 0; e < std::size(kExits); ++e) {
-                ImageF radiance = ref.radiance;
-                for (float& p : radiance.pixels) p = static_cast<float>(p * exits[e]);
-                const SceneError err = sceneError(radiance, vol.radiance, ref.coverage);
-                cells[mi * 2 + e].push_back(fmt(100 * err.err, 1) + "% (" +
-                                            fmt(100 * err.errScaled, 1) + "%)");
-                std::fprintf(stderr, "%s %s: %.3f\n", s.name().c_str(),
-                             combination(kModels[mi], kExits[e]).c_str(), err.err);
+        for (size_t mi = 0; mi < std::size(kModels); ++mi)
+            for (size_t t = 0; t < nE; ++t) {
+                c.options.profile = kModels[mi];
+                c.options.energy = kEnergies[t];
+                const ReferenceImage ref = renderReference(renderer, c);
+                for (size_t e = 0; e < std::size(kExits); ++e) {
+                    ImageF radiance = ref.radiance;
+                    for (float& p : radiance.pixels) p = static_cast<float>(p * exits[e]);
+                    const SceneError err = sceneError(radiance, vol.radiance, ref.coverage);
+                    cells[(mi * 2 + e) * nE + t].push_back(fmt(100 * err.err, 1) + "% (" +
+                                                           fmt(100 * err.errScaled, 1) + "%)");
+                    std::fprintf(stderr, "%s %s: %.3f\n", s.name().c_str(),
+                                 combination(kModels[mi], kExits[e], kEnergies[t]).c_str(),
+                                 err.err);
+                }
             }
-        }
     }
     for (const auto& row : cells) summary.add(row);
     md +=

@@ -9,8 +9,8 @@
 // every hit from inside. Point and directional lights and the pinhole camera
 // of the other methods; refraction at the flat facets' geometric normals.
 //
-// The estimator: a path tracer from the camera. Each covered pixel's ray (eye
-// → the G-buffer's surface point) refracts in (deterministic: Ft/η² for the
+// The estimators (--estimator). camera, the default: a path tracer from the camera. Each covered
+// pixel's ray (eye → the G-buffer's surface point) refracts in (deterministic: Ft/η² for the
 // radiance crossing out), then random-walks: free flights with the σt of a
 // hero channel drawn per path, the other two channels weighted by the
 // one-sample balance heuristic (volumetric/medium.h), internal Fresnel
@@ -19,10 +19,15 @@
 // or directional light reaches x only along the refracted path light → y → x,
 // whose entry point y Snell's law fixes; volumetric/refracted_light.h solves
 // it on the facet and gives the refracted irradiance (Fresnel transmittance
-// and the beam's spreading included). A light tracer could not connect to a
-// pinhole through the smooth boundary either, and a light tracer depositing
-// exitance into pixels is a density estimate (biased, blurred); this
-// estimator needs neither.
+// and the beam's spreading included).
+// light: its twin from the lights (volumetric/light_trace.h): photons refract
+// in and random-walk the same way, and every scattering vertex is connected
+// to the pinhole through the boundary by the same solve with the eye as the
+// source; each connection lands in the pixel its exit point projects to, so
+// it estimates each pixel's mean radiance (the camera walk: its centre's).
+// A pass traces as many photons as there are covered pixels. The two agree
+// within noise (light_trace_test.cpp; tests/volumetric_truth_test.cpp holds
+// the camera walk to the light tracer's truth of two spheres).
 //
 // Bias. None for the paths it samples; it misses light reflected inside the
 // object between entering and its first scattering (Fr ≈ 2–4% of light that
@@ -46,11 +51,11 @@
 // radiance.exr is the volumetric radiance and `tsis compare` of radiance.exr
 // (or radiosity.exr) against another method measures the whole model's error.
 //
-// Budgets: `--spp N` paths per pixel (default 16) and `--time S` (stop after
-// the pass that passes S seconds; without --spp it runs until then). Each
-// (pixel, path) pair has its own random stream from --seed, so an --spp
-// render is the same bytes for any thread count. Progress on a terminal.
-// Cost: ~ events per path × (1 + 2–3 per NEE) rays; Embree on the host cores.
+// Budgets: `--spp N` paths per pixel (default 16; light: N passes of photons) and `--time S` (stop
+// after the pass that passes S seconds; without --spp it runs until then). Each (pixel, path) pair
+// has its own random stream from --seed, so an --spp render is the same bytes for any thread count.
+// Progress on a terminal. Cost: ~ events per path × (1 + 2–3 per NEE) rays; Embree on the host
+// cores.
 #pragma once
 
 #include <memory>
