@@ -58,12 +58,10 @@ Options& Options::set(const std::string& name, double value) {
 Options& Options::set(const std::string& name, const std::string& value) {
     const OptionSpec* spec = specOf(name);
     std::vector<std::string> next = spec && !spec->repeatable ? without(args_, name) : args_;
-    if (!spec) {
-        next.push_back("--" + name);  // Args names the unknown option as the CLI does
-    } else if (spec->takesValue) {
+    if (spec && spec->takesValue) {
         next.insert(next.end(), {"--" + name, value});
-    } else if (value == "true") {
-        next.push_back("--" + name);
+    } else if (!spec || value == "true") {
+        next.push_back("--" + name);  // unknown: Args names it as the CLI does
     } else if (value != "false") {
         fail("option --", name, " is a flag: true or false, not '", value, "'");
     }
