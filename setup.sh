@@ -136,7 +136,7 @@ case "${1:-}" in
     ;;
   python)
     # Into the interpreter's own site directory (/usr/local/lib/python3.11/dist-packages).
-    cmake --install "$BUILD_DIR" --component python
+    cmake --install "$BUILD_DIR" --component python --strip
     /usr/bin/python3 -c 'import tsis; print("setup: import tsis works:", tsis.__file__)'
     ;;
   clang)
