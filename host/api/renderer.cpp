@@ -30,7 +30,7 @@ Renderer::~Renderer() = default;
 Frame Renderer::render(const Scene& scene, const Options& options) {
     RenderOptions ro = renderOptionsFromArgs(Args("render", sceneOptionSpecs(), options.args()));
     ro.keepAovs = true;
-    const tsis::Scene& s = scene.impl().scene;
+    const tsis::Scene& s = scene.impl_->scene;
     FrameResult r = guarded([&] { return impl_->renderer.render(s, ro); });
     Frame f;
     f.width = r.width;

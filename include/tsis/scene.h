@@ -69,9 +69,9 @@ class Scene {
     size_t triangleCount() const;
 
     struct Impl;
-    const Impl& impl() const { return *impl_; }
 
   private:
+    friend class Renderer;
     explicit Scene(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
