@@ -33,6 +33,8 @@ def test_scene_from_numpy_arrays():
         tsis.Scene.from_arrays(v, np.array([[0, 1, 9]]))
     with pytest.raises(tsis.Error, match="N×3"):
         tsis.Scene.from_arrays(v.ravel(), t)
+    f = tsis.render(s, **SMALL)
+    assert (f.coverage > 0.5).any() and f.stats["mesh"] == "arrays"
 
 
 def test_errors_are_the_clis_one_line():
