@@ -8,6 +8,9 @@
 #   ./setup.sh fuzz [S]   install clang + build and run the mesh-loader fuzzer for S seconds (default 60)
 #   ./setup.sh sanitize   build with ASan+UBSan into build-sanitize/ and run the whole suite
 #   ./setup.sh sanitize-quick   the same for the loaders, physics, CL host code and one render (CI)
+#   ./setup.sh python     install + build + install `import tsis` for /usr/bin/python3
+#   ./setup.sh clang      build everything with clang and -Werror into build-clang/ (CI)
+#   ./setup.sh tidy       clang-tidy (.clang-tidy) on the C++ files changed since .ci/tidy-base (CI)
 #
 # Idempotent; run as root on a fresh machine (or with the packages present).
 set -euo pipefail
@@ -21,6 +24,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libembree-dev clang-format python3
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+  clang clang-tidy
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}
 JOBS=${TSIS_JOBS:-$(nproc)}
@@ -74,6 +79,15 @@ build() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 
+# Everything (tests, bench, the Python module) with clang and warnings as
+# errors; its compile_commands.json is what `tidy` reads.
+CLANG_DIR=${TSIS_CLANG_BUILD_DIR:-build-clang}
+clang_build() {
+  CC=clang CXX=clang++ cmake -S . -B "$CLANG_DIR" -DCMAKE_BUILD_TYPE=Release -DTSIS_WERROR=ON \
+      -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
+  cmake --build "$CLANG_DIR" -j "$JOBS"
+}
+
 # ASan+UBSan build of our code (PoCL, LLVM and Mesa stay as Debian ships them;
 # what they leak is suppressed by library in tests/sanitize/). -O1 -g1: stacks
 # with lines at a fraction of -O0's run time. Usage: sanitize [TARGET…]
@@ -88,12 +102,12 @@ sanitize_build() {
 }
 
 if [ "${1:-}" = fuzz ]; then
-  PACKAGES+=(clang libclang-rt-14-dev)
+  PACKAGES+=(libclang-rt-14-dev)
 fi
 install_packages
 unpack_meshes
 case "${1:-}" in
-  fuzz | sanitize | sanitize-quick) ;;
+  fuzz | sanitize | sanitize-quick | clang | tidy) ;;
   *) build ;;
 esac
 case "${1:-}" in
@@ -120,6 +134,18 @@ case "${1:-}" in
     cd "$SANITIZE_DIR"
     ctest --output-on-failure -j "$JOBS" --timeout 1800 -L '^(mesh|physics|cl|smoke)$'
     ;;
+  python)
+    # Into the interpreter's own site directory (/usr/local/lib/python3.11/dist-packages).
+    cmake --install "$BUILD_DIR" --component python --strip
+    /usr/bin/python3 -c 'import tsis; print("setup: import tsis works:", tsis.__file__)'
+    ;;
+  clang)
+    clang_build
+    ;;
+  tidy)
+    [ -f "$CLANG_DIR/compile_commands.json" ] || clang_build
+    .ci/tidy "$CLANG_DIR"
+    ;;
   "") ;;
-  *) log "unknown step '$1' (render, test, fuzz, sanitize or sanitize-quick)"; exit 2 ;;
+  *) log "unknown step '$1' (render, test, fuzz, sanitize, sanitize-quick, python, clang or tidy)"; exit 2 ;;
 esac

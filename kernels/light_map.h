@@ -17,6 +17,13 @@ typedef struct {
     float pad0, pad1;
 } TsisLightMapInfo;
 
+TSIS_CHECK_SIZE(TsisLightMapInfo, 80);
+TSIS_CHECK_OFFSET(TsisLightMapInfo, view_proj, 0);
+TSIS_CHECK_OFFSET(TsisLightMapInfo, tau_per_w, 64);
+TSIS_CHECK_OFFSET(TsisLightMapInfo, res, 68);
+TSIS_CHECK_OFFSET(TsisLightMapInfo, pad0, 72);
+TSIS_CHECK_OFFSET(TsisLightMapInfo, pad1, 76);
+
 #ifdef __OPENCL_VERSION__
 
 /* (x, y) in continuous texel coordinates (texel centres at i + 0.5) and clip w

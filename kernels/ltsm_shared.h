@@ -5,6 +5,8 @@
 #ifndef TSIS_LTSM_SHARED_H
 #define TSIS_LTSM_SHARED_H
 
+#include "tsis_shared.h" /* TSIS_CHECK_SIZE, TSIS_CHECK_OFFSET */
+
 typedef struct {
     float dx, dy; /* offset on the plane (mm) */
     float r;      /* its length (mm) */
@@ -14,5 +16,15 @@ typedef struct {
     float ar, ag, ab;
     float pad1;
 } TsisRingSample;
+
+TSIS_CHECK_SIZE(TsisRingSample, 32);
+TSIS_CHECK_OFFSET(TsisRingSample, dx, 0);
+TSIS_CHECK_OFFSET(TsisRingSample, dy, 4);
+TSIS_CHECK_OFFSET(TsisRingSample, r, 8);
+TSIS_CHECK_OFFSET(TsisRingSample, pad0, 12);
+TSIS_CHECK_OFFSET(TsisRingSample, ar, 16);
+TSIS_CHECK_OFFSET(TsisRingSample, ag, 20);
+TSIS_CHECK_OFFSET(TsisRingSample, ab, 24);
+TSIS_CHECK_OFFSET(TsisRingSample, pad1, 28);
 
 #endif /* TSIS_LTSM_SHARED_H */

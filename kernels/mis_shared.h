@@ -21,4 +21,18 @@ typedef struct {
     float pad0, pad1, pad2;
 } TsisMisInfo;
 
+TSIS_CHECK_SIZE(TsisMisInfo, 48);
+TSIS_CHECK_OFFSET(TsisMisInfo, lights, 0);
+TSIS_CHECK_OFFSET(TsisMisInfo, res, 4);
+TSIS_CHECK_OFFSET(TsisMisInfo, n_tex, 8);
+TSIS_CHECK_OFFSET(TsisMisInfo, n_dist, 12);
+TSIS_CHECK_OFFSET(TsisMisInfo, segments, 16);
+TSIS_CHECK_OFFSET(TsisMisInfo, q_size, 20);
+TSIS_CHECK_OFFSET(TsisMisInfo, q_inv_step, 24);
+TSIS_CHECK_OFFSET(TsisMisInfo, tex_scale, 28);
+TSIS_CHECK_OFFSET(TsisMisInfo, seed, 32);
+TSIS_CHECK_OFFSET(TsisMisInfo, pad0, 36);
+TSIS_CHECK_OFFSET(TsisMisInfo, pad1, 40);
+TSIS_CHECK_OFFSET(TsisMisInfo, pad2, 44);
+
 #endif /* TSIS_MIS_SHARED_H */

@@ -12,6 +12,18 @@ typedef uint32_t tsis_uint;
 typedef uint tsis_uint;
 #endif
 
+/* Layout checks for the structs below and those of the other shared headers:
+ * the same sizes and offsets are asserted by the host's compiler and by the
+ * kernel compiler (a negative array size fails an OpenCL build), so the two
+ * sides cannot drift apart. */
+#ifdef __OPENCL_VERSION__
+#define TSIS_LAYOUT(name, cond) typedef char tsis_layout_##name[(cond) ? 1 : -1]
+#else
+#define TSIS_LAYOUT(name, cond) static_assert(cond, "layout of " #name)
+#endif
+#define TSIS_CHECK_SIZE(T, n) TSIS_LAYOUT(sizeof_##T, sizeof(T) == (n))
+#define TSIS_CHECK_OFFSET(T, f, n) TSIS_LAYOUT(offsetof_##T##_##f, __builtin_offsetof(T, f) == (n))
+
 /* One importance sample of the flux atlas: where it is, and its estimator
  * weight per channel w_c = Phi_i(c) / (N p_i), with p_i = Y(Phi_i) / sum Y.
  * B(xo) = sum_i w_i * Rd(|xo - x_i|). */
@@ -21,6 +33,15 @@ typedef struct {
     float wr, wg, wb;
     float pad;
 } TsisSample;
+TSIS_CHECK_SIZE(TsisSample, 32);
+TSIS_CHECK_OFFSET(TsisSample, px, 0);
+TSIS_CHECK_OFFSET(TsisSample, py, 4);
+TSIS_CHECK_OFFSET(TsisSample, pz, 8);
+TSIS_CHECK_OFFSET(TsisSample, texel, 12);
+TSIS_CHECK_OFFSET(TsisSample, wr, 16);
+TSIS_CHECK_OFFSET(TsisSample, wg, 20);
+TSIS_CHECK_OFFSET(TsisSample, wb, 24);
+TSIS_CHECK_OFFSET(TsisSample, pad, 28);
 
 /* A radially symmetric profile f(r) (Rd, Rd*Wl, Rd*Wg) tabulated per channel at
  * TSIS_TABLE_SIZE points r_k = k * r_max / (TSIS_TABLE_SIZE - 1), stored as
@@ -33,6 +54,11 @@ typedef struct {
     tsis_uint size;
     tsis_uint pad;
 } TsisTableInfo;
+TSIS_CHECK_SIZE(TsisTableInfo, 16);
+TSIS_CHECK_OFFSET(TsisTableInfo, r_max, 0);
+TSIS_CHECK_OFFSET(TsisTableInfo, inv_step, 4);
+TSIS_CHECK_OFFSET(TsisTableInfo, size, 8);
+TSIS_CHECK_OFFSET(TsisTableInfo, pad, 12);
 
 /* A node of the flux tree (kernels/flux_tree.cl, --method pyramid): atlas
  * texels close in 3D summed -- flux sum E*A per channel (fr, fg, fb) and
@@ -43,6 +69,15 @@ typedef struct {
     float fr, fg, fb, area;
     float px, py, pz, radius;
 } TsisFluxNode;
+TSIS_CHECK_SIZE(TsisFluxNode, 32);
+TSIS_CHECK_OFFSET(TsisFluxNode, fr, 0);
+TSIS_CHECK_OFFSET(TsisFluxNode, fg, 4);
+TSIS_CHECK_OFFSET(TsisFluxNode, fb, 8);
+TSIS_CHECK_OFFSET(TsisFluxNode, area, 12);
+TSIS_CHECK_OFFSET(TsisFluxNode, px, 16);
+TSIS_CHECK_OFFSET(TsisFluxNode, py, 20);
+TSIS_CHECK_OFFSET(TsisFluxNode, pz, 24);
+TSIS_CHECK_OFFSET(TsisFluxNode, radius, 28);
 
 /* Depth of the flux tree below its root, at most (21 bits of Morton code an
  * axis in steps of 3, plus the splits of texels that share a code): bounds
@@ -68,6 +103,11 @@ typedef struct {
     float area;
     float ring;
 } TsisTsmTap;
+TSIS_CHECK_SIZE(TsisTsmTap, 16);
+TSIS_CHECK_OFFSET(TsisTsmTap, x, 0);
+TSIS_CHECK_OFFSET(TsisTsmTap, y, 4);
+TSIS_CHECK_OFFSET(TsisTsmTap, area, 8);
+TSIS_CHECK_OFFSET(TsisTsmTap, ring, 12);
 
 /* The camera for image-space sampling (lss). */
 typedef struct {
@@ -76,5 +116,14 @@ typedef struct {
     float fx, fy, fz;  /* unit view direction */
     float min_cos;     /* clamp of |n . view| in a pixel's surface area */
 } TsisCamera;
+TSIS_CHECK_SIZE(TsisCamera, 32);
+TSIS_CHECK_OFFSET(TsisCamera, ex, 0);
+TSIS_CHECK_OFFSET(TsisCamera, ey, 4);
+TSIS_CHECK_OFFSET(TsisCamera, ez, 8);
+TSIS_CHECK_OFFSET(TsisCamera, pixel_angle, 12);
+TSIS_CHECK_OFFSET(TsisCamera, fx, 16);
+TSIS_CHECK_OFFSET(TsisCamera, fy, 20);
+TSIS_CHECK_OFFSET(TsisCamera, fz, 24);
+TSIS_CHECK_OFFSET(TsisCamera, min_cos, 28);
 
 #endif /* TSIS_SHARED_H */

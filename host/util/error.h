@@ -6,16 +6,12 @@
 #pragma once
 
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
-namespace tsis {
+#include "tsis/error.h"  // tsis::Error, part of the public API
 
-class Error : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
+namespace tsis {
 
 // Concatenates its arguments with operator<< into one message.
 template <typename... Args>

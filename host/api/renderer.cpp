@@ -1,0 +1,68 @@
+#include "tsis/renderer.h"
+
+#include "api/api_internal.h"
+#include "cli/args.h"
+#include "cli/scene_options.h"
+#include "image/image_io.h"
+#include "render/renderer.h"
+#include "util/json.h"
+
+namespace tsis::api {
+
+namespace {
+
+Image fromInternal(ImageF&& image) {
+    return {image.width, image.height, image.channels, std::move(image.pixels)};
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+    explicit Impl(const std::string& clDevice) : renderer(clDevice) {}
+    tsis::Renderer renderer;
+};
+
+Renderer::Renderer(const std::string& clDevice)
+    : impl_(guarded([&] { return std::make_unique<Impl>(clDevice); })) {}
+
+Renderer::~Renderer() = default;
+
+Frame Renderer::render(const Scene& scene, const Options& options) {
+    RenderOptions ro = renderOptionsFromArgs(Args("render", sceneOptionSpecs(), options.args()));
+    ro.keepAovs = true;
+    const tsis::Scene& s = scene.impl_->scene;
+    FrameResult r = guarded([&] { return impl_->renderer.render(s, ro); });
+    Frame f;
+    f.width = r.width;
+    f.height = r.height;
+    f.rgb8 = std::move(r.rgb8);
+    f.radiosity = fromInternal(std::move(r.radiosity));
+    f.radiance = fromInternal(std::move(r.radiance));
+    f.position = fromInternal(std::move(r.position));
+    f.normal = fromInternal(std::move(r.normal));
+    f.coverage = fromInternal(std::move(r.coverage));
+    f.fluxAtlas = fromInternal(std::move(r.fluxAtlas));
+    f.lavg = r.lavg;
+    Json j = r.stats.toJson();
+    j["mesh"] = s.mesh.name;
+    j["material"] = s.material.name;
+    j["lavg"] = r.lavg;
+    f.statsJson = dumpJson(j);
+    return f;
+}
+
+void writeImage(const Frame& frame, const std::string& path) {
+    requireImageFormat(path);
+    writeImage8(path, frame.width, frame.height, 3, frame.rgb8);
+}
+
+void writeImage(const Image& image, const std::string& path) {
+    requireImageFormat(path);
+    writeImageF(path, {image.width, image.height, image.channels, image.pixels});
+}
+
+Image readImage(const std::string& path) {
+    return fromInternal(readImageF(path));
+}
+
+}  // namespace tsis::api

@@ -1,0 +1,55 @@
+// Renders frames of a Scene with the render options (method, samples, width,
+// height, …: Options). One Renderer keeps its GL context, OpenCL programs and
+// light maps across frames: make it once, render many.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tsis/options.h"
+#include "tsis/scene.h"
+
+namespace tsis::api {
+
+// A linear float image, channels interleaved, row 0 = top.
+struct Image {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> pixels;
+};
+
+struct Frame {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb8;  // tone-mapped sRGB, row 0 = top
+    // The AOVs `tsis render --aov` writes: radiosity and radiance (RGB),
+    // position (mm) and normal (XYZ), coverage (1 channel), the flux atlas.
+    Image radiosity, radiance, position, normal, coverage, fluxAtlas;
+    float lavg = 0;         // log-average luminance of the covered pixels
+    std::string statsJson;  // what `tsis render --stats` writes: stage timings, counts
+};
+
+class Renderer {
+  public:
+    // clDevice: a substring of the OpenCL device's name ("": $TSIS_CL_DEVICE,
+    // else PoCL). Throws tsis::Error when GL or OpenCL is missing.
+    explicit Renderer(const std::string& clDevice = "");
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // The scene options among `options` are checked, not used (the scene has them).
+    Frame render(const Scene& scene, const Options& options = {});
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Writes the tone-mapped frame as an 8-bit image (PNG; the format by extension).
+void writeImage(const Frame& frame, const std::string& path);
+// Writes a linear image (EXR).
+void writeImage(const Image& image, const std::string& path);
+Image readImage(const std::string& path);
+
+}  // namespace tsis::api
