@@ -273,22 +273,6 @@ int runModels(const BenchArgs& a, long long photons, int spp, int size) {
     return 0;
 }
 
-// The pixels whose 4-neighbourhood is covered: where the camera walk's
-// centre sample and the light tracer's pixel mean see the same surface.
-std::vector<char> interiorMask(const ImageF& coverage) {
-    const int w = coverage.width, h = coverage.height;
-    std::vector<char> mask(static_cast<size_t>(w) * h, 0);
-    auto covered = [&](int x, int y) {
-        return x >= 0 && y >= 0 && x < w && y < h && coverage.at(x, y, 0) > 0.5f;
-    };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            mask[static_cast<size_t>(y) * w + x] = covered(x, y) && covered(x - 1, y) &&
-                                                   covered(x + 1, y) && covered(x, y - 1) &&
-                                                   covered(x, y + 1);
-    return mask;
-}
-
 // Issue 24 item 2: the spheres' truth by light tracing.
 int runTruth(const BenchArgs& a, int size) {
     const double budget = static_cast<double>(optionValue(a.rest, "--seconds", 1200));
@@ -304,7 +288,7 @@ int runTruth(const BenchArgs& a, int size) {
     for (const SceneCase& s : scenes) {
         BenchCase c = makeCase(s.args(size));
         c.options.keepAovs = true;
-        const std::vector<char> mask = interiorMask(renderer.render(c.scene, c.options).coverage);
+        const std::vector<char> mask = interiorPixels(renderer.render(c.scene, c.options).coverage);
         const MeshBoundary boundary(c.scene.mesh);
         const WalkScene walk{&boundary, Medium(c.scene.material), c.scene.lights, glm::dvec3(0.0)};
         Pinhole cam;

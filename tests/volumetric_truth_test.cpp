@@ -9,6 +9,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "compare/image_compare.h"
 #include "image/image_io.h"
 #include "support/tsis_cli.h"
 
@@ -16,21 +17,6 @@ namespace tsis::test {
 namespace {
 
 const std::string kValidation = std::string(TSIS_SOURCE_DIR) + "/tests/validation/";
-
-// The pixels whose 4-neighbourhood is covered (as bench_physical's truth).
-std::vector<char> interior(const ImageF& coverage) {
-    const int w = coverage.width, h = coverage.height;
-    auto covered = [&](int x, int y) {
-        return x >= 0 && y >= 0 && x < w && y < h && coverage.at(x, y, 0) > 0.5f;
-    };
-    std::vector<char> mask(static_cast<size_t>(w) * h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            mask[static_cast<size_t>(y) * w + x] = covered(x, y) && covered(x - 1, y) &&
-                                                   covered(x + 1, y) && covered(x, y - 1) &&
-                                                   covered(x, y + 1);
-    return mask;
-}
 
 class VolumetricTruth : public testing::TestWithParam<const char*> {};
 
@@ -51,7 +37,7 @@ TEST_P(VolumetricTruth, MeanAndPixelsAgreeWithTheLightTracer) {
         ASSERT_EQ(r.exitCode, 0) << r.err;
         img[s] = readImageF(aov + "/radiance.exr");
     }
-    const std::vector<char> mask = interior(readImageF(dir.file("s0/coverage.exr")));
+    const std::vector<char> mask = interiorPixels(readImageF(dir.file("s0/coverage.exr")));
     const ImageF ref = readImageF(kValidation + "truth_" + name.substr(6) + ".exr");
     const ImageF refErr = readImageF(kValidation + "truth_" + name.substr(6) + "_stderr.exr");
     for (int c = 0; c < 3; ++c) {
@@ -76,8 +62,8 @@ TEST_P(VolumetricTruth, MeanAndPixelsAgreeWithTheLightTracer) {
         const double truthErr = truth.at("interior_mean_error")[c].get<double>();
         EXPECT_NEAR(refSum / n, truthMean, 1e-4 * truthMean) << "the mask is the truth's";
         EXPECT_NEAR(mean, truthMean, 3 * std::hypot(meanErr, truthErr))
-            << name << " channel " << c << ": volumetric " << mean << " ± " << meanErr
-            << ", truth " << truthMean << " ± " << truthErr;
+            << name << " channel " << c << ": volumetric " << mean << " ± " << meanErr << ", truth "
+            << truthMean << " ± " << truthErr;
         // Per pixel: the RMSE is the noise of both images (within 25%).
         EXPECT_LT(std::sqrt(sq / n), 1.25 * std::sqrt(expectedSq / n)) << name << " channel " << c;
     }

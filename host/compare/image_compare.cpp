@@ -134,4 +134,18 @@ std::string compareTable(const CompareMetrics& m) {
     return table;
 }
 
+std::vector<char> interiorPixels(const ImageF& coverage) {
+    const int w = coverage.width, h = coverage.height;
+    auto covered = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h && coverage.at(x, y, 0) > 0.5f;
+    };
+    std::vector<char> mask(static_cast<size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            mask[static_cast<size_t>(y) * w + x] = covered(x, y) && covered(x - 1, y) &&
+                                                   covered(x + 1, y) && covered(x, y - 1) &&
+                                                   covered(x, y + 1);
+    return mask;
+}
+
 }  // namespace tsis

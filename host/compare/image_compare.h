@@ -49,4 +49,9 @@ Json compareJson(const CompareMetrics& m);
 // A short human-readable table (non-finite pixels only when there are some).
 std::string compareTable(const CompareMetrics& m);
 
+// The pixels (y·width + x) whose 4-neighbourhood is covered (coverage > 0.5
+// in channel 0): where an image of pixel means and one of pixel centres see
+// the same surface.
+std::vector<char> interiorPixels(const ImageF& coverage);
+
 }  // namespace tsis

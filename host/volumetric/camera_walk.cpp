@@ -7,6 +7,7 @@
 #include "physics/fresnel.h"
 #include "volumetric/dielectric.h"
 #include "volumetric/refracted_light.h"
+#include "volumetric/walk_steps.h"
 
 namespace tsis {
 
@@ -15,8 +16,6 @@ namespace {
 // Paths are cut after this many events (a bias far below the noise: at
 // albedo 0.9995, marble's highest, e^(−100000·0.0005) of the weight is left).
 constexpr int kMaxEvents = 100000;
-// Russian roulette below this path weight (relative to the start).
-constexpr double kRouletteWeight = 0.05;
 
 // Next-event estimation only pays where light from the surface reaches x:
 // beyond ~5 mean free paths below the nearest facet towards the light it is
@@ -72,26 +71,13 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
             }
             if (++scatterings == scene.maxScatterings) break;
             const glm::dvec3 v = w.value();
-            const double strength = std::max({v.x, v.y, v.z});
-            if (strength < kRouletteWeight) {
-                const double survive = strength / kRouletteWeight;
-                if (rng.uniform() >= survive) break;
-                w.scale(glm::dvec3(1.0 / survive));
-            }
+            if (!survivesRoulette(w, std::max({v.x, v.y, v.z}), rng)) break;
             const double u1 = rng.uniform(), u2 = rng.uniform();
             dir = uniformSphere(u1, u2);
             continue;
         }
         if (!bounded) break;  // an open mesh: the walk left through a hole
-        // At the boundary from inside (leaving: dir·n > 0): reflect with
-        // probability Fr, else leave.
-        const double cosI = glm::dot(dir, surface.normal);
-        const double fr = fresnelReflectance(1.0 / m.eta, std::abs(cosI));
-        if (rng.uniform() < fr) {
-            dir = reflect(dir, surface.normal);
-            pos = surface.position - surface.normal * (cosI > 0 ? eps : -eps);
-            continue;
-        }
+        if (reflectsInside(m, surface, eps, dir, pos, rng)) continue;
         glm::dvec3 sky = scene.sky;
         if (scene.environment) {
             glm::dvec3 out;

@@ -7,6 +7,7 @@
 #include "physics/fresnel.h"
 #include "volumetric/dielectric.h"
 #include "volumetric/refracted_light.h"
+#include "volumetric/walk_steps.h"
 
 namespace tsis {
 
@@ -14,7 +15,6 @@ namespace {
 
 // As the camera walk's (camera_walk.cpp).
 constexpr int kMaxEvents = 100000;
-constexpr double kRouletteWeight = 0.05;
 constexpr double kPhase = 1.0 / (4.0 * M_PI);
 
 // Where a direction from the eye lands on the image, and the solid angle of
@@ -145,24 +145,17 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
                                    out.paths[k].irradiance * (scale / solidAngle));
                     }
                     const glm::dvec3 v = w.value();
-                    const double strength = std::max({v.x, v.y, v.z}) /
-                                            std::max({e.power.x, e.power.y, e.power.z, 1e-300});
-                    if (strength < kRouletteWeight) {
-                        const double survive = strength / kRouletteWeight;
-                        if (rng.uniform() >= survive) break;
-                        w.scale(glm::dvec3(1.0 / survive));
-                    }
+                    if (!survivesRoulette(w,
+                                          std::max({v.x, v.y, v.z}) /
+                                              std::max({e.power.x, e.power.y, e.power.z, 1e-300}),
+                                          rng))
+                        break;
                     const double u1 = rng.uniform(), u2 = rng.uniform();
                     dir = uniformSphere(u1, u2);
                     continue;
                 }
                 if (!bounded) break;
-                const double cosO = glm::dot(dir, surface.normal);
-                if (rng.uniform() < fresnelReflectance(1.0 / m.eta, std::abs(cosO))) {
-                    dir = reflect(dir, surface.normal);
-                    pos = surface.position - surface.normal * (cosO > 0 ? eps : -eps);
-                    continue;
-                }
+                if (reflectsInside(m, surface, eps, dir, pos, rng)) continue;
                 break;  // left the object: a pinhole is never hit
             }
         }
