@@ -19,8 +19,9 @@ import sys
 
 # Options of programs other than tsis that the docs name, by program.
 OTHER_PROGRAMS = {
-    "bench/run.sh and the bench programs": {"quick", "models", "photons", "size", "repeat"},
-    "cmake, ctest": {"build", "target", "output-on-failure", "preset"},
+    "bench/run.sh and the bench programs": {"quick", "models", "truth", "seconds", "photons",
+                                            "size", "repeat"},
+    "cmake, ctest": {"build", "target", "output-on-failure", "preset", "install", "prefix"},
     "clang-format": {"dry-run", "Werror"},
     "duplicates": {"change", "base"},
 }
@@ -104,8 +105,9 @@ def parameter_methods(tsis, registry):
     """Option → the methods `tsis render --help` says read it (its table's column)."""
     out = subprocess.run([tsis, "render", "--help"], capture_output=True, text=True).stdout
     owners = {}
-    for name, rest in re.findall(r"^  --([a-z-]+) +\S+ +(.*)$", out, re.M):
-        m = re.match(r"([a-z, ]+): ", rest)
+    for name, line in re.findall(r"^  --([a-z-]+) +(.*)$", out, re.M):
+        # "METAVAR  methods: help", or a flag's "methods: help".
+        m = re.match(r"([a-z, ]+): ", line) or re.match(r"\S+ +([a-z, ]+): ", line)
         names = m.group(1).split(", ") if m else []
         if names and all(n in registry for n in names):
             owners[name] = set(names)

@@ -33,18 +33,24 @@ TEST(ApiOptions, SetReplacesAddsLightsAndReadsBack) {
 // The message is the CLI's for the same option, and a refused value leaves
 // the options as they were.
 TEST(ApiOptions, ErrorsAreTheClisAndLeaveTheOptions) {
-    Options o{{"samples", "64"}};
+    Options o{{"method", "tsis"}, {"samples", "64"}};
     auto cli = [](std::vector<std::string> argv) {
+        argv.insert(argv.begin(), {"--method", "tsis"});
         return errorOf([&] { renderOptionsFromArgs(Args("render", sceneOptionSpecs(), argv)); });
     };
     EXPECT_EQ(errorOf([&] { o.set("samples", "0"); }), cli({"--samples", "0"}));
-    EXPECT_EQ(errorOf([&] { o.set("method", "nope"); }), cli({"--method", "nope"}));
+    EXPECT_EQ(errorOf([&] { o.set("method", "nope"); }), errorOf([&] {
+                  renderOptionsFromArgs(
+                      Args("render", sceneOptionSpecs(), {"--method", "nope", "--samples", "64"}));
+              }));
     EXPECT_EQ(errorOf([&] { o.set("nope", "1"); }), cli({"--nope", "1"}));
     EXPECT_EQ(errorOf([&] { o.set("material", "nope"); }), errorOf([&] {
                   parseScene(Args("render", sceneOptionSpecs(), {"--material", "nope"}));
               }));
     EXPECT_NE(errorOf([&] { o.set("no-specular", "yes"); }), "(no error)");
-    EXPECT_EQ(o.args(), (std::vector<std::string>{"--samples", "64"}));
+    // A parameter the method does not read: the CLI's line naming its methods.
+    EXPECT_EQ(errorOf([&] { o.set("pyramid-epsilon", "0.1"); }), cli({"--pyramid-epsilon", "0.1"}));
+    EXPECT_EQ(o.args(), (std::vector<std::string>{"--method", "tsis", "--samples", "64"}));
 }
 
 TEST(ApiScene, FromOptionsAsTheCliMakesIt) {

@@ -1,11 +1,15 @@
 #include "tsis/renderer.h"
 
+#include <filesystem>
+#include <functional>
+
 #include "api/api_internal.h"
 #include "cli/args.h"
 #include "cli/scene_options.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "util/json.h"
+#include "util/output_set.h"
 
 namespace tsis::api {
 
@@ -51,14 +55,31 @@ Frame Renderer::render(const Scene& scene, const Options& options) {
     return f;
 }
 
+namespace {
+
+// As the CLI writes its outputs: through a temporary, checked, renamed into
+// place only when whole (util/output_set.h).
+void writeOutput(const std::string& path,
+                 const std::function<void(const std::filesystem::path&)>& write) {
+    OutputSet outputs;
+    outputs.add(path, ".png");
+    requireImageFormat(outputs, path);
+    outputs.write(path, write);
+    outputs.commit();
+}
+
+}  // namespace
+
 void writeImage(const Frame& frame, const std::string& path) {
-    requireImageFormat(path);
-    writeImage8(path, frame.width, frame.height, 3, frame.rgb8);
+    writeOutput(path, [&](const std::filesystem::path& f) {
+        writeImage8(f.string(), frame.width, frame.height, 3, frame.rgb8);
+    });
 }
 
 void writeImage(const Image& image, const std::string& path) {
-    requireImageFormat(path);
-    writeImageF(path, {image.width, image.height, image.channels, image.pixels});
+    writeOutput(path, [&](const std::filesystem::path& f) {
+        writeImageF(f.string(), {image.width, image.height, image.channels, image.pixels});
+    });
 }
 
 Image readImage(const std::string& path) {

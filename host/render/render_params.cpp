@@ -196,8 +196,9 @@ std::string RenderParam::usage() const {
     const size_t gap = help.find("  ");
     std::string owners;
     for (const std::string& m : methods) owners += (owners.empty() ? "" : ", ") + m;
-    std::string line = gap == std::string::npos || owners.empty()
-                           ? help
+    std::string line = owners.empty() ? help
+                       : gap == std::string::npos
+                           ? owners + ": " + help  // a flag
                            : help.substr(0, gap + 2) + owners + ": " + help.substr(gap + 2);
     if (showDefault) line += " (default " + text(RenderOptions{}) + ")";
     return line;

@@ -39,7 +39,7 @@ def test_scene_from_numpy_arrays():
 
 def test_errors_are_the_clis_one_line():
     with pytest.raises(tsis.Error) as e:
-        tsis.render(tsis.Scene(mesh="builtin:sphere"), samples=0)
+        tsis.render(tsis.Scene(mesh="builtin:sphere"), method="tsis", samples=0)
     assert str(e.value) == "--samples 0 is out of range [1, 4194304]"
     with pytest.raises(tsis.Error, match="unknown option '--nope' for 'tsis render'"):
         tsis.Scene(nope=1)
