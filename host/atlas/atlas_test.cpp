@@ -287,14 +287,15 @@ TEST(Atlas, CoincidentFacesAreNotQuadratic) {
     std::vector<int> labels(big.triangles.size());
     std::iota(labels.begin(), labels.end(), 0);
     const atlas::Adjacency adj = atlas::buildAdjacency(big);
-    EXPECT_LT(secondsOf([&] { atlas::smoothLabels(big, adj, labels, 1, 0); }), 2.0);
+    EXPECT_LT(secondsOf([&] { atlas::smoothLabels(big, adj, labels, 1, 0); }),
+              10.0);  // well above the fix (room for a loaded CI)
 
     const Mesh m = coincident(3000);
     AtlasOptions opt;
     opt.resolution = 512;
     opt.useCache = false;
     Mesh out;
-    EXPECT_LT(secondsOf([&] { out = buildAtlas(m, opt); }), 10.0);
+    EXPECT_LT(secondsOf([&] { out = buildAtlas(m, opt); }), 30.0);
     EXPECT_EQ(out.triangles.size(), m.triangles.size());
 }
 

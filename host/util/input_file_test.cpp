@@ -36,7 +36,7 @@ TEST(InputFile, FifosDevicesAndFoldersAreRefusedAtOnce) {
     EXPECT_THAT(errorOf([&] { readRegularFile(fifo, "mesh"); }, fifo),
                 HasSubstr("is a FIFO, not a regular file"));
     EXPECT_THAT(errorOf([&] { requireRegularFile(fifo, "image"); }, fifo), HasSubstr("FIFO"));
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
     EXPECT_THAT(errorOf([&] { readRegularFile("/dev/zero", "mesh"); }, "/dev/zero"),
                 HasSubstr("is a character device"));
     EXPECT_THAT(errorOf([&] { readRegularFile(d.path().string(), "mesh"); }),

@@ -133,7 +133,7 @@ TEST(OutputSet, ManyStagedTargetsAreAddedInLinearTime) {
         out.add(d.file("frame_" + std::to_string(i) + ".png"), "", stage);
     const double s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(s, 2.0);
+    EXPECT_LT(s, 10.0);  // ~0.3 s here; the old loop took minutes (room for a loaded CI)
     EXPECT_EQ(entries(stage), 0u) << "nothing created before the writers";
     // Two targets of one file name cannot share the staging folder.
     fs::create_directory(d.file("other"));
