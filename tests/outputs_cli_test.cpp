@@ -130,7 +130,7 @@ TEST(Outputs, DashIsStandardOutput) {
     ScratchDir dir;
     RunResult stats = runTsis("render " + kFast + "-o " + dir.file("a.png") + " --stats -");
     ASSERT_EQ(stats.exitCode, 0) << stats.err;
-    EXPECT_EQ(stats.out.rfind("{", 0), 0u) << stats.out;
+    EXPECT_EQ(stats.out.rfind('{', 0), 0u) << stats.out;
     EXPECT_NE(stats.out.find("\"total\""), std::string::npos);
     EXPECT_FALSE(fs::exists(dir.file("-")));
     RunResult png = runTsis("render " + kFast + "-o -");

@@ -147,7 +147,7 @@ pid_t deadPid() {
 TEST(StaleTemporaries, ALaterRunRemovesThoseOfDeadRuns) {
     ScratchDir dir;
     const std::string dead = std::to_string(deadPid()), alive = std::to_string(::getpid());
-    const fs::path d = dir.path();
+    const fs::path& d = dir.path();
     std::ofstream(d / (".out.tsis-tmp-" + dead + "-a1B2c3.png")) << "partial";
     std::ofstream(d / (".atlas.tsis-tmp-" + dead + ".bin")) << "partial";  // a cache's
     fs::create_directory(d / (".tsis-tmp-" + dead + "-Zz9yX8"));

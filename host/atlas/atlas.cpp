@@ -131,6 +131,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     splitElongatedCharts(charts, kMaxChartAspect);
 
     std::vector<PackChart> packIn;
+    packIn.reserve(charts.size());
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
     const PackResult packed =
         packCharts(packIn, opt.resolution, opt.gutterTexels,

@@ -105,8 +105,8 @@ double minChartGap(const Mesh& m, int resolution) {
 }
 
 std::filesystem::path scratchDir(const std::string& tag) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("tsis_atlas_test_" + tag + "_" + std::to_string(::getpid()));
+    auto dir = std::filesystem::temp_directory_path() /
+               ("tsis_atlas_test_" + tag + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
@@ -207,8 +207,8 @@ TEST(Atlas, BorderFilterStraightensTeeth) {
     for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
             const int border = rings / 2 + ((s / 4) % 2 ? 4 : -4);
-            teeth[size_t(2 * (r * segments + s))] = teeth[size_t(2 * (r * segments + s) + 1)] =
-                r < border ? 0 : 1;
+            const size_t i = 2 * (size_t(r) * size_t(segments) + size_t(s));
+            teeth[i] = teeth[i + 1] = r < border ? 0 : 1;
         }
     std::vector<int> kept = teeth, straight = teeth;
     atlas::smoothLabels(tube, adj, kept, 20);

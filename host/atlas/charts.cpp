@@ -491,8 +491,8 @@ Topology analyse(const Mesh& mesh, const Adjacency& adj, const FaceSet& faces) {
             comps.unite(i, j);
         }
     }
-    topo.corner.assign(size_t(3 * n), -1);
-    std::vector<int> classId(size_t(3 * n), -1);
+    topo.corner.assign(3 * size_t(n), -1);
+    std::vector<int> classId(3 * size_t(n), -1);
     for (int c = 0; c < 3 * n; ++c) {
         const int r = corners.find(c);
         if (classId[r] < 0) classId[r] = topo.vertices++;

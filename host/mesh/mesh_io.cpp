@@ -78,7 +78,7 @@ Mesh loadMesh(const std::string& spec) {
     dirs.emplace_back(TSIS_DATA_DIR "/meshes");
     for (const std::string& dir : dirs)
         for (const char* e : {".off", ".obj", ".ply"}) {
-            const std::string path = dir + "/" + spec + e;
+            const std::string path = (fs::path(dir) / spec).string() + e;
             std::error_code ec;
             if (fs::is_regular_file(path, ec)) return loadByExtension(path, e);
         }

@@ -86,16 +86,16 @@ class FrameGraph {
 
     // A resource the graph owns for this frame, starting as `initial`.
     template <typename T>
-    FrameGraphId<T> create(std::string name, T initial = T{}) {
+    FrameGraphId<T> create(const std::string& name, T initial = T{}) {
         auto owned = std::make_shared<T>(std::move(initial));
         T* ptr = owned.get();
-        return FrameGraphId<T>(addResource(std::move(name), ptr, std::move(owned), false));
+        return FrameGraphId<T>(addResource(name, ptr, std::move(owned), false));
     }
     // A resource that lives outside the graph (kept across frames); it counts
     // as written before the first pass.
     template <typename T>
-    FrameGraphId<T> import(std::string name, T& external) {
-        return FrameGraphId<T>(addResource(std::move(name), &external, nullptr, true));
+    FrameGraphId<T> import(const std::string& name, T& external) {
+        return FrameGraphId<T>(addResource(name, &external, nullptr, true));
     }
 
     void addPass(std::string name, const std::function<void(Builder&)>& setup,

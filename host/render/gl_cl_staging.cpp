@@ -8,6 +8,11 @@ namespace {
 
 constexpr size_t kTexelBytes = 4 * sizeof(float);
 
+// What a float vector moves, for the stage's bytes.
+long long bytesOf(const std::vector<float>& v) {
+    return static_cast<long long>(v.size()) * static_cast<long long>(sizeof(float));
+}
+
 // Blocking: the host vector dies when the pass returns.
 void upload(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data) {
     if (!data.empty())
@@ -43,7 +48,7 @@ void GlClStaging::addAtlasUpload(FrameGraph& graph, const FrameContext& ctx, con
                 upload(ctx.cl->queue(),
                        buffer.reserve(ctx.cl->context(), texels.size() * sizeof(float)), texels);
                 uploaded = gl.version;
-                res.addBytes(static_cast<long long>(texels.size() * sizeof(float)));
+                res.addBytes(bytesOf(texels));
             } else {
                 res.addBytes(0);
             }
@@ -79,7 +84,7 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             p.count = static_cast<int>(p.pixel.size());
             p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
             upload(ctx.cl->queue(), p.xyz, p.host);
-            res.addBytes(static_cast<long long>(p.host.size() * sizeof(float)));
+            res.addBytes(bytesOf(p.host));
         });
     // Full-resolution camera buffers, for methods that work in image space.
     graph.addPass(
@@ -150,7 +155,7 @@ FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph, const F
                 std::memcpy(&rgba[i], &packed[k * 4], 3 * sizeof(float));
                 rgba[i + 3] = 1.0f;
             }
-            res.addBytes(static_cast<long long>(packed.size() * sizeof(float)));
+            res.addBytes(bytesOf(packed));
         });
     return image;
 }

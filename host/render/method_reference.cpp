@@ -130,7 +130,7 @@ double ReferenceMethod::gather(const FrameContext& ctx, const SurfacePoints& poi
             radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         gatherer_.run(in, static_cast<int>(len), samples_, n, table, rd_.table().info, out);
         ms += gatherer_.lastMs();  // waits for the chunk
-        progress.update(static_cast<long long>(begin + len));
+        progress.update(static_cast<long long>(begin) + static_cast<long long>(len));
     }
     progress.finish();
     return ms;

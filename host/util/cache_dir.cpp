@@ -54,7 +54,7 @@ std::string privateDirectory(const std::string& dir) {
 }
 
 std::string usableCacheDirectory() {
-    const std::string dir = cacheDirectory();
+    std::string dir = cacheDirectory();
     if (dir.empty() || !env("TSIS_CACHE_DIR").empty()) return dir;
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(dir).parent_path(), ec);

@@ -61,7 +61,7 @@ fs::path keepOld(const fs::path& dest) {
         name += "old";
         name += std::to_string(i);
         name += dest.extension().string();
-        const fs::path old = dir / name;
+        fs::path old = dir / name;
         if (::link(dest.c_str(), old.c_str()) == 0) {
             registerTemporary(old, TemporaryKind::File);
             return old;

@@ -27,7 +27,9 @@ std::optional<std::string> findInPath(const std::string& name) {
         if (end == std::string::npos) end = path.size();
         // An empty entry is the current folder.
         const std::string dir = end > begin ? path.substr(begin, end - begin) : std::string(".");
-        const std::string file = dir + "/" + name;
+        std::string file = dir;
+        file += '/';
+        file += name;
         struct stat st;
         if (::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
             ::access(file.c_str(), X_OK) == 0)

@@ -62,7 +62,7 @@ std::shared_ptr<const Mesh> scaledMesh(const ViewState& state) {
     return mesh;
 }
 
-Scene sceneOf(const ViewState& state, std::shared_ptr<const Mesh> mesh) {
+Scene sceneOf(const ViewState& state, const std::shared_ptr<const Mesh>& mesh) {
     Scene scene;
     if (mesh) scene.mesh = *mesh;
     scene.material = state.material;

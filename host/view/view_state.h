@@ -39,7 +39,7 @@ void resize(ViewState& state, double sizeMm);
 std::shared_ptr<const Mesh> scaledMesh(const ViewState& state);
 
 // The frame's scene, on the mesh scaledMesh() made.
-Scene sceneOf(const ViewState& state, std::shared_ptr<const Mesh> mesh);
+Scene sceneOf(const ViewState& state, const std::shared_ptr<const Mesh>& mesh);
 
 // Whether frames of `method` differ by their sample set (so that averaging
 // them converges): tsis, hybrid, mis, lss.

@@ -448,7 +448,9 @@ void Viewer::drawImage() {
     const float scale = std::min({1.0f, areaW / float(frame_.width), areaH / float(frame_.height)});
     const bool heat = relRmse_ && fields_.heatmap;
     ImGui::GetBackgroundDrawList()->AddImage(
-        reinterpret_cast<ImTextureID>(static_cast<intptr_t>(window_.texture(heat ? 1 : 0))),
+        // ImGui takes a GL texture name as a pointer-sized id.
+        reinterpret_cast<ImTextureID>(  // NOLINT(performance-no-int-to-ptr)
+            static_cast<intptr_t>(window_.texture(heat ? 1 : 0))),
         ImVec2(0, 0), ImVec2(frame_.width * scale, frame_.height * scale));
     if (meshTask_ && !state_.mesh) {
         const WorkProgress p = meshTask_->progress();

@@ -75,7 +75,7 @@ TEST(LightTrace, AgreesWithTheCameraWalkOnASphere) {
             cameraSum += walk.mean().y;
             cameraVar += walk.error(1) * walk.error(1);
             for (int b = 0; b < batches; ++b)
-                batchSums[b] += images[b][static_cast<size_t>(py * camera.width + px)].y;
+                batchSums[b] += images[b][static_cast<size_t>(py) * camera.width + px].y;
         }
     double lightSum = 0, lightSq = 0;
     for (double s : batchSums) {
