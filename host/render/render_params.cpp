@@ -71,6 +71,9 @@ RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
 
 using M = std::vector<std::string>;
 const M kEvery;  // a frame-wide setting
+// The methods that integrate a profile: every one but volumetric.
+const M kProfiled{"pyramid", "tsis", "hybrid",       "mis",      "ltsm",
+                  "tsm",     "lss",  "hierarchical", "reference"};
 constexpr auto kLighting = ParamEffect::Lighting;
 constexpr auto kRadiosity = ParamEffect::Radiosity;
 constexpr auto kDisplay = ParamEffect::Display;
@@ -119,17 +122,13 @@ std::vector<RenderParam> makeParams() {
         choice({"profile",
                 "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's) or pbd (photon "
                 "beam diffusion); README \"Physical accuracy\"",
-                M{"pyramid", "tsis", "hybrid", "mis", "ltsm", "tsm", "lss", "hierarchical",
-                  "reference"},
-                kRadiosity},
+                kProfiled, kRadiosity},
                &O::profile, parseProfileModel, profileModelName, ProfileModel::Pbd),
         choice({"energy",
                 "T  the light the profile lets out: semi-infinite (its own ∫Rd) or object (scaled "
                 "up to what the closed object lets out, 1 − σa·4η²·V/S); README \"Physical "
                 "accuracy\"",
-                M{"pyramid", "tsis", "hybrid", "mis", "ltsm", "tsm", "lss", "hierarchical",
-                  "reference"},
-                kRadiosity},
+                kProfiled, kRadiosity},
                &O::energy, parseEnergyTarget, energyTargetName, EnergyTarget::Object),
         // The exit term changes only the radiance, but volumetric's radiosity
         // is divided by it.

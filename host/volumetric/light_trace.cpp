@@ -55,6 +55,14 @@ struct Emission {
     glm::dvec3 origin{0.0}, dir{0.0}, power{0.0};
 };
 
+// The unit vector at angle phi around the unit `axis`, across it.
+glm::dvec3 across(const glm::dvec3& axis, double phi) {
+    const glm::dvec3 t1 = glm::normalize(
+        glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 t2 = glm::cross(axis, t1);
+    return std::cos(phi) * t1 + std::sin(phi) * t2;
+}
+
 Emission emit(const Light& light, double radius, Rng& rng) {
     Emission e;
     const double u1 = rng.uniform(), u2 = rng.uniform();
@@ -67,20 +75,14 @@ Emission emit(const Light& light, double radius, Rng& rng) {
             dist > radius ? std::sqrt(1.0 - radius * radius / (dist * dist)) : -1.0;
         const double cosT = 1.0 - u1 * (1.0 - cosMax), sinT = std::sqrt(1.0 - cosT * cosT);
         const glm::dvec3 axis = dist > 0 ? -e.origin / dist : glm::dvec3(0, 0, -1);
-        const glm::dvec3 t1 = glm::normalize(
-            glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-        const glm::dvec3 t2 = glm::cross(axis, t1);
-        e.dir = cosT * axis + sinT * (std::cos(phi) * t1 + std::sin(phi) * t2);
+        e.dir = cosT * axis + sinT * across(axis, phi);
         e.power = glm::dvec3(light.rgb) * (2.0 * M_PI * (1.0 - cosMax));
         return e;
     }
     // Uniform over the bounding sphere's disc across the light's direction.
     e.dir = glm::normalize(glm::dvec3(light.vec));
-    const glm::dvec3 t1 = glm::normalize(
-        glm::cross(e.dir, std::abs(e.dir.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    const glm::dvec3 t2 = glm::cross(e.dir, t1);
     const double r = radius * std::sqrt(u1);
-    e.origin = -e.dir * (2.0 * radius) + r * (std::cos(phi) * t1 + std::sin(phi) * t2);
+    e.origin = -e.dir * (2.0 * radius) + r * across(e.dir, phi);
     e.power = glm::dvec3(light.rgb) * (M_PI * radius * radius);
     return e;
 }
