@@ -197,6 +197,8 @@ PYBIND11_MODULE(tsis, m) {
             d["max_abs"] = x.maxAbs;
             d["psnr"] = x.psnr;
             d["pixels"] = x.pixels;
+            d["nonfinite_a"] = x.nonfiniteImage;
+            d["nonfinite_b"] = x.nonfiniteReference;
             return d;
         },
         py::arg("image"), py::arg("reference"), py::arg("mask") = py::none(),

@@ -3,6 +3,7 @@
 // renderer's for the same options.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/args.h"
@@ -131,7 +132,18 @@ TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {
     EXPECT_EQ(same.rmse, 0);
     EXPECT_TRUE(std::isinf(same.psnr));
     EXPECT_GT(same.pixels, 0);
+    EXPECT_EQ(same.nonfiniteImage + same.nonfiniteReference, 0);
     EXPECT_NE(errorOf([&] { compare(f.radiance, f.coverage); }), "(no error)");
+    // A NaN pixel is counted and left out, as `tsis compare` does.
+    Image nan = f.radiance;
+    const size_t covered =
+        static_cast<size_t>(std::find_if(f.coverage.pixels.begin(), f.coverage.pixels.end(),
+                                         [](float c) { return c > 0.5f; }) -
+                            f.coverage.pixels.begin());
+    nan.pixels[covered * 3] = std::nanf("");
+    const Metrics withNan = compare(nan, f.radiance, &f.coverage);
+    EXPECT_EQ(withNan.nonfiniteImage, 1);
+    EXPECT_EQ(withNan.pixels, same.pixels - 1);
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ Metrics compare(const Image& image, const Image& reference, const Image* mask) {
     const CompareMetrics c = compareImages(toInternal(image), toInternal(reference),
                                            mask ? &m : nullptr, "image", "reference", "mask")
                                  .metrics;
-    return {c.rmse, c.relRmse, c.meanRelErr, c.maxAbs, c.psnr, c.pixels};
+    return {c.rmse, c.relRmse, c.meanRelErr, c.maxAbs,
+            c.psnr, c.pixels,  c.nonfiniteA, c.nonfiniteB};
 }
 
 }  // namespace tsis::api

@@ -1,5 +1,6 @@
 // Error metrics of an image against a reference, as `tsis compare` prints them
-// (rmse, rel_rmse, mean_rel_err, max_abs, psnr over the masked pixels).
+// (rmse, rel_rmse, mean_rel_err, max_abs, psnr over the masked pixels whose
+// values are finite in both, and how many selected pixels hold NaN or ∞).
 #pragma once
 
 #include "tsis/renderer.h"
@@ -10,10 +11,14 @@ struct Metrics {
     double rmse = 0, relRmse = 0, meanRelErr = 0, maxAbs = 0;
     double psnr = 0;  // dB; infinity when the images are equal
     long long pixels = 0;
+    // Selected pixels left out for NaN or ∞ in the image / the reference
+    // (`tsis compare` fails on any unless --allow-nonfinite).
+    long long nonfiniteImage = 0, nonfiniteReference = 0;
 };
 
 // mask: null for every pixel, else the pixels whose first channel > 0.5 (e.g.
-// Frame::coverage). Throws tsis::Error for mismatched sizes or channel counts.
+// Frame::coverage). Throws tsis::Error for mismatched sizes or channel counts,
+// and when no selected pixel is finite in both.
 Metrics compare(const Image& image, const Image& reference, const Image* mask = nullptr);
 
 }  // namespace tsis::api
