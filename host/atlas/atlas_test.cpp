@@ -17,6 +17,7 @@
 
 #include "atlas/cache.h"
 #include "atlas/chart.h"
+#include "atlas/pack.h"
 #include "support/atlas_meshes.h"
 #include "support/scoped_env.h"
 #include "util/error.h"
@@ -322,6 +323,26 @@ TEST(Atlas, TooManyLooseTrianglesFailSoon) {
     });
     EXPECT_LT(s, 15.0);
     EXPECT_NE(msg.find("cannot pack 60000 charts"), std::string::npos) << msg;
+}
+
+// An L of two needles: its frame is a unit square but its area 1e-12, so the
+// density from the area alone put a 10^6-texel-wide raster on it (the fuzzer
+// found such a mesh: 5 s at 64², beyond its time limit). The longest side caps
+// the density, and an outline too big for the frame is never rasterised.
+TEST(Atlas, ChartOfNoAreaPacksAtOnce) {
+    const std::vector<glm::dvec2> uv = {{0, 0}, {1, 0}, {1, 1e-12}, {1 + 1e-12, 1}, {1, 1}};
+    const std::vector<atlas::Tri> tris = {{0, 1, 2}, {1, 4, 3}};
+    const std::vector<atlas::PackChart> charts = {{&uv, &tris}};
+    atlas::PackResult r;
+    EXPECT_LT(secondsOf([&] { r = atlas::packCharts(charts, 64, 2, 1); }), 2.0);
+    ASSERT_EQ(r.uv.size(), 1u);
+    for (const glm::dvec2& p : r.uv[0]) {
+        EXPECT_GE(p.x, 0.0);
+        EXPECT_LE(p.x, 1.0);
+        EXPECT_GE(p.y, 0.0);
+        EXPECT_LE(p.y, 1.0);
+    }
+    EXPECT_GT(r.texelsPerUnit, 30.0);  // fills most of the frame, not a speck
 }
 
 // A fan of N faces around one vertex, 80% of them label 0 and pairs of label 1

@@ -83,8 +83,11 @@ glm::dvec2 quarterTurns(glm::dvec2 p, int o) {
     return p;
 }
 
+// An outline wider than maxW or taller than maxH cannot be placed: it gets its
+// size (clamped to maxW+1 × maxH+1) and no raster, so a chart of vanishing area
+// at a huge density costs nothing (the fuzzer found one that took seconds).
 Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& tris, double scale,
-                    int o, int dilate) {
+                    int o, int dilate, int maxW, int maxH) {
     constexpr double kEps = 1e-3;  // texels: float rounding of the final UVs stays inside
     Outline out;
     out.orientation = o;
@@ -98,8 +101,10 @@ Outline makeOutline(const std::vector<glm::dvec2>& pts, const std::vector<Tri>& 
     out.shift = glm::dvec2(dilate + kEps) - lo;
     for (glm::dvec2& p : q) p += out.shift;
     hi += out.shift;
-    out.w = int(std::floor(hi.x + kEps)) + 1 + dilate;
-    out.h = int(std::floor(hi.y + kEps)) + 1 + dilate;
+    const double w = std::floor(hi.x + kEps) + 1 + dilate, h = std::floor(hi.y + kEps) + 1 + dilate;
+    out.w = w <= maxW ? int(w) : maxW + 1;  // NaN too
+    out.h = h <= maxH ? int(h) : maxH + 1;
+    if (out.w > maxW || out.h > maxH) return out;
     std::vector<uint8_t> mask(size_t(out.w) * out.h, 0);
     for (const Tri& t : tris) {
         const glm::dvec2 v[3] = {q[t[0]], q[t[1]], q[t[2]]};
@@ -272,17 +277,19 @@ struct Placed {
 class Outlines {
   public:
     Outlines(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
-             double scale, int dilate)
+             double scale, int dilate, int W, int H)
         : pts_(pts),
           charts_(charts),
           scale_(scale),
           dilate_(dilate),
+          W_(W),
+          H_(H),
           made_(4 * charts.size(), 0),
           outlines_(4 * charts.size()) {}
     const Outline& get(size_t c, int o) {
         const size_t i = 4 * c + size_t(o);
         if (!made_[i]) {
-            outlines_[i] = makeOutline(pts_[c], *charts_[c].triangles, scale_, o, dilate_);
+            outlines_[i] = makeOutline(pts_[c], *charts_[c].triangles, scale_, o, dilate_, W_, H_);
             made_[i] = 1;
         }
         return outlines_[i];
@@ -292,7 +299,7 @@ class Outlines {
     const std::vector<std::vector<glm::dvec2>>& pts_;
     const std::vector<PackChart>& charts_;
     double scale_;
-    int dilate_;
+    int dilate_, W_, H_;
     std::vector<char> made_;
     std::vector<Outline> outlines_;
 };
@@ -356,7 +363,7 @@ bool packInOrder(Outlines& outlines, const std::vector<size_t>& order, int W, in
 bool packAt(const std::vector<std::vector<glm::dvec2>>& pts, const std::vector<PackChart>& charts,
             const std::vector<std::vector<size_t>>& orders, double scale, int W, int H, int dilate,
             std::vector<Placed>& placed, double* footprint) {
-    Outlines outlines(pts, charts, scale, dilate);
+    Outlines outlines(pts, charts, scale, dilate, W, H);
     for (const std::vector<size_t>& order : orders)
         if (packInOrder(outlines, order, W, H, placed, footprint)) return true;
     return false;
@@ -392,6 +399,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     // Measured better than by short side, long side or chart area alone, and
     // than either order by itself.
     std::vector<double> key1(charts.size()), key2(charts.size());
+    double longestSide = 0;
     for (size_t c = 0; c < charts.size(); ++c) {
         glm::dvec2 lo(INFINITY), hi(-INFINITY);
         for (glm::dvec2 p : pts[c]) {
@@ -399,6 +407,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
             hi = glm::max(hi, p);
         }
         const double w = hi.x - lo.x, h = hi.y - lo.y, shortSide = std::min(w, h);
+        longestSide = std::max({longestSide, w, h});
         key1[c] = std::max(w, h) * shortSide * shortSide;
         key2[c] = w * h;
     }
@@ -422,7 +431,11 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     const bool parallel = threads > 1;
     double lo = 0, hi = INFINITY;
     Probe best;
-    const double s0 = std::sqrt(0.7 * double(W) * H / std::max(totalArea, 1e-300));
+    // From the area, but no denser than lets the longest chart side fit: a
+    // chart of (almost) no area spanning its frame would start at an absurd
+    // density and shrink 30 rounds to nowhere.
+    const double s0 = std::min(std::sqrt(0.7 * double(W) * H / std::max(totalArea, 1e-300)),
+                               double(W - 2 * dilate - 2) / std::max(longestSide, 1e-300));
     auto run = [&](Probe& p) {
         p.fits = packAt(pts, charts, orders, p.scale, W, H, dilate, p.placed, &p.footprint);
     };
@@ -441,7 +454,7 @@ PackResult packCharts(const std::vector<PackChart>& charts, int resolution, int 
     // and 30 rounds of shrinking probes would each place thousands of charts
     // in vain (a soup of co-located one-triangle charts took minutes).
     {
-        Outlines least(pts, charts, 1e-9 * s0, dilate);
+        Outlines least(pts, charts, 1e-9 * s0, dilate, W, H);
         long long texels = 0;
         for (size_t c = 0; c < charts.size(); ++c) texels += least.get(c, 0).texels;
         if (texels > (long long)W * H)
