@@ -18,6 +18,7 @@
 #include "atlas/cache.h"
 #include "atlas/chart.h"
 #include "atlas/pack.h"
+#include "mesh/mesh_io.h"
 #include "support/atlas_meshes.h"
 #include "support/scoped_env.h"
 #include "util/error.h"
@@ -343,6 +344,34 @@ TEST(Atlas, ChartOfNoAreaPacksAtOnce) {
         EXPECT_LE(p.y, 1.0);
     }
     EXPECT_GT(r.texelsPerUnit, 30.0);  // fills most of the frame, not a speck
+}
+
+// The fuzzer's binary STL (float words as read): denormal corners and one whose
+// corners span 10^31. Scaled to 10 mm a sliver survives repair whose in-plane
+// frame rounds to collinear; it was an internal CHECK, it now gets UVs.
+TEST(Atlas, SliverTriangleRoundedCollinearGetsUVs) {
+    const uint32_t words[4][12] = {
+        {0, 0, 0, 0, 0, 0, 0x80000000, 0x3f, 0, 0, 0, 0x80000000},
+        {0, 0, 0, 0, 0, 0, 0, 0, 0x80000000, 0x3f, 0x80000000, 0x3f},
+        {0x60, 0, 0, 0x80000000, 0x3f, 0, 0, 0x80000000, 0x3f, 0, 0x3f800000, 0},
+        {0, 0, 0, 0x3f800000, 0x74726576, 0x695f7865, 0x6369646e, 0x3f807365, 0, 0, 0, 0x3f800000}};
+    std::string stl(80, ' ');
+    const uint32_t count = 4;
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    for (const auto& w : words) {
+        stl.append(reinterpret_cast<const char*>(w), sizeof(w));
+        stl.append(2, '\0');
+    }
+    Mesh m = parseSTL(stl, "sliver.stl");
+    ensureNormals(m);
+    normalizeMesh(m, 10.0);
+    AtlasOptions opt;
+    opt.resolution = 64;
+    opt.useCache = false;
+    opt.threads = 1;
+    const Mesh out = buildAtlas(m, opt);
+    EXPECT_EQ(out.triangles.size(), m.triangles.size());
+    for (const glm::vec2& uv : out.uvs) EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
 }
 
 // A fan of N faces around one vertex, 80% of them label 0 and pairs of label 1

@@ -713,6 +713,15 @@ std::vector<Chart> makeCharts(const Mesh& mesh, const Adjacency& adj,
             chart.uv = {glm::dvec2(0), glm::dvec2(glm::length(p1 - p0), 0),
                         glm::dvec2(glm::dot(p2 - p0, ex), glm::dot(p2 - p0, ny))};
             ok = chart.uv[2].y > 0;
+            if (!ok) {
+                // A sliver float rounding made collinear (or a NaN normalisation):
+                // a right triangle of its longest edge keeps it in the atlas, at
+                // the (almost nil) area it has in 3D after the rescale below.
+                const double e = std::max(
+                    {glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2), 1e-12});
+                chart.uv = {glm::dvec2(0), glm::dvec2(e, 0), glm::dvec2(0, e)};
+                ok = std::isfinite(e);
+            }
         } else if (disk) {
             std::string why;
             ok = parameterizeARAP(chart.mesh, chart.uv, &why) &&
