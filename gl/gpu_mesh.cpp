@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "gl/gl_context.h"
+#include "mesh/media.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -10,7 +11,11 @@ namespace tsis {
 GpuMesh::GpuMesh(const Mesh& mesh) {
     TSIS_CHECK(mesh.hasNormals());
     TSIS_CHECK(mesh.hasUVs());
-    constexpr int kStride = 9;
+    // Each vertex carries its medium's tag (mesh/media.h) to the passes that
+    // write positions: the kernels sum light only within a medium.
+    const Media media = findMedia(mesh);
+    media_ = media.count;
+    constexpr int kStride = 10;
     std::vector<float> data;
     data.reserve(mesh.triangles.size() * 3 * kStride);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -22,7 +27,8 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
             const glm::vec3& p = mesh.positions[v];
             const glm::vec3& n = mesh.normals[v];
             const glm::vec2& uv = mesh.uvs[v];
-            data.insert(data.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, ratio});
+            data.insert(data.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, ratio,
+                                     mediumTag(media.ofVertex[v])});
         }
     }
     count_ = mesh.triangles.size() * 3;
@@ -42,14 +48,17 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     attrib(1, 3, 3);  // normal
     attrib(2, 2, 6);  // uv
     attrib(3, 1, 8);  // area ratio
+    attrib(4, 1, 9);  // medium tag
     glBindVertexArray(0);
 
     std::vector<float> vertices;
-    vertices.reserve(mesh.positions.size() * 6);
+    constexpr int kIndexedStride = 7;
+    vertices.reserve(mesh.positions.size() * kIndexedStride);
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         const glm::vec3& p = mesh.positions[v];
         const glm::vec3& n = mesh.normals[v];
-        vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+        vertices.insert(vertices.end(),
+                        {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v])});
     }
     glGenVertexArrays(1, &indexedVao_);
     glBindVertexArray(indexedVao_);
@@ -62,10 +71,11 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
                  mesh.triangles.data(), GL_STATIC_DRAW);
-    for (GLuint index : {0u, 1u}) {
+    for (GLuint index : {0u, 1u, 4u}) {
         glEnableVertexAttribArray(index);
-        glVertexAttribPointer(index, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
-                              reinterpret_cast<const void*>(index * 3 * sizeof(float)));
+        glVertexAttribPointer(
+            index, index == 4 ? 1 : 3, GL_FLOAT, GL_FALSE, kIndexedStride * sizeof(float),
+            reinterpret_cast<const void*>((index == 4 ? 6 : index * 3) * sizeof(float)));
     }
     glBindVertexArray(0);
     checkGl("GpuMesh upload");

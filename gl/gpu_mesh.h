@@ -5,6 +5,8 @@
 // value, the area ratio A3D/AUV of eq. 3.2, can ride along.
 #pragma once
 
+#include <cstdint>
+
 #include "gl/gl.h"
 #include "mesh/mesh.h"
 
@@ -12,19 +14,22 @@ namespace tsis {
 
 class GpuMesh {
   public:
-    // Attributes: 0 position, 1 normal; unindexed only: 2 uv, 3 area ratio.
+    // Attributes: 0 position, 1 normal, 4 medium tag (mesh/media.h);
+    // unindexed only: 2 uv, 3 area ratio.
     explicit GpuMesh(const Mesh& mesh);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    void draw() const;          // indexed: positions and normals
-    void drawUnrolled() const;  // unindexed, with uv and area ratio (the atlas pass)
+    void draw() const;                         // indexed: positions and normals
+    void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
+    uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
 
   private:
     GLuint vao_ = 0, vbo_ = 0;                          // unindexed
     GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
+    uint32_t media_ = 1;
 };
 
 }  // namespace tsis

@@ -28,9 +28,14 @@
  * falls with epsilon; epsilon = 0 visits every texel (the exact sum over the
  * atlas).
  *
+ * Media never mix in a node (docs/design.md §2): the leaves are sorted by
+ * medium first, the levels near the root split them by medium, and a node's
+ * medium tag (1 + medium, mesh/media.h) is its topology's w, 0 for a node of
+ * several.
+ *
  * Layout: nodes in breadth-first order, the root first, so each depth is a
  * contiguous range and each node's children are contiguous; topology[i] =
- * (first child, children, texel, 0), children = 0 for a leaf. Deterministic:
+ * (first child, children, texel, medium tag), children = 0 for a leaf. Deterministic:
  * fixed summation and descent order, no atomics. */
 #include "tsis_shared.h"
 
@@ -145,16 +150,20 @@ kernel void tsis_flux_tree_gather(const __global float4* points, const __global 
         const int index = stack[--sp];
         const TsisFluxNode n = nodes[index];
         if (!(n.fr + n.fg + n.fb > 0.0f)) continue;
-        const float3 at = (float3)(n.px, n.py, n.pz);
-        const floatW dx = px - at.x, dy = py - at.y, dz = pz - at.z;
-        const float d2 = tsis_hmin8(dx * dx + dy * dy + dz * dz);
-        const float s2 = fmax(n.radius * n.radius, n.area * M_1_PI_F);
         const int4 t = topology[index];
-        if (t.y > 0 && !(s2 < epsilon * (d2 + ell2))) {
+        /* A node of several media (t.w = 0, only near the root) is opened; a
+         * node of one medium counts only the lanes of that medium. */
+        const float4 at = (float4)(n.px, n.py, n.pz, (float)t.w);
+        const floatW dx = px - at.x, dy = py - at.y, dz = pz - at.z;
+        const float d2 = tsis_hmin8(
+            select((floatW)(INFINITY), dx * dx + dy * dy + dz * dz, isequal(pm, (floatW)(at.w))));
+        const float s2 = fmax(n.radius * n.radius, n.area * M_1_PI_F);
+        if (t.w != 0 && !(d2 < INFINITY)) continue;
+        if (t.y > 0 && (t.w == 0 || !(s2 < epsilon * (d2 + ell2)))) {
             for (int c = t.x + t.y - 1; c >= t.x; --c) stack[sp++] = c;
             continue;
         }
-        tsis_lanes_add(px, py, pz, at, (float3)(n.fr, n.fg, n.fb), split, info, &br, &bg, &bb);
+        tsis_lanes_add(px, py, pz, pm, at, (float3)(n.fr, n.fg, n.fb), split, info, &br, &bg, &bb);
         ++used;
     }
     TSIS_LANES(TSIS_STORE_ORDERED)

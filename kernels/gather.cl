@@ -43,12 +43,12 @@ kernel void tsis_gather(const __global float4* points, const int count,
                         __global float4* out) {
     const int j = get_global_id(0);
     if (j >= count) return;
-    const float3 xo = points[j].xyz;
+    const float4 xo = points[j];
     float3 b = (float3)(0.0f);
     for (int i = 0; i < n; ++i) {
         const TsisSample s = samples[i];
-        const float3 d = xo - (float3)(s.px, s.py, s.pz);
-        const float4 f = tsis_profile(table, info, sqrt(dot(d, d)));
+        const float3 d = xo.xyz - (float3)(s.px, s.py, s.pz);
+        const float4 f = tsis_profile(table, info, tsis_medium_distance(d, xo.w, s.medium));
         b += (float3)(s.wr, s.wg, s.wb) * f.xyz;
     }
     out[j] = (float4)(b, 0.0f);
@@ -76,14 +76,15 @@ kernel void tsis_gather(const __global float4* points, const int count,
 #if TSIS_GATHER_INTERLEAVED
         const __global float8* rows = (const __global float8*)split;
         floatW t;
-        const intW idx = tsis_lanes_index(px, py, pz, (float3)(s.px, s.py, s.pz), info, &t);
+        const intW idx =
+            tsis_lanes_index(px, py, pz, pm, (float4)(s.px, s.py, s.pz, s.medium), info, &t);
         TSIS_LANES(TSIS_LOAD_ROW)
         br += s.wr * (TSIS_VEC(e, s0) + t * TSIS_VEC(e, s1));
         bg += s.wg * (TSIS_VEC(e, s2) + t * TSIS_VEC(e, s3));
         bb += s.wb * (TSIS_VEC(e, s4) + t * TSIS_VEC(e, s5));
 #else
-        tsis_lanes_add(px, py, pz, (float3)(s.px, s.py, s.pz), (float3)(s.wr, s.wg, s.wb), split,
-                       info, &br, &bg, &bb);
+        tsis_lanes_add(px, py, pz, pm, (float4)(s.px, s.py, s.pz, s.medium),
+                       (float3)(s.wr, s.wg, s.wb), split, info, &br, &bg, &bb);
 #endif
     }
     TSIS_LANES(TSIS_STORE)

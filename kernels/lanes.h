@@ -42,10 +42,12 @@
  * repeat the last point (computed, never stored). Needs base, count, points. */
 #define TSIS_LOAD_POINT(k) const float4 q##k = points[min(base + 0x##k, count - 1)];
 /* The lanes' coordinates px, py, pz from the loaded q0, q1, ..., and the sums br, bg, bb. */
+/* pm: their medium tags (profile.h). */
 #define TSIS_LANES_XYZ                \
     const floatW px = TSIS_VEC(q, x); \
     const floatW py = TSIS_VEC(q, y); \
-    const floatW pz = TSIS_VEC(q, z);
+    const floatW pz = TSIS_VEC(q, z); \
+    const floatW pm = TSIS_VEC(q, w);
 #define TSIS_LANES_SUMS         \
     floatW br = (floatW)(0.0f); \
     floatW bg = (floatW)(0.0f); \
@@ -58,22 +60,26 @@
 #define TSIS_LOAD_G(k) const float2 cg##k = split[size + idx.s##k];
 #define TSIS_LOAD_B(k) const float2 cb##k = split[2 * size + idx.s##k];
 
-/* Table entry and fraction of |p - at| in every lane (profile.h). */
+/* Table entry and fraction of |p - at| in every lane (profile.h): at.w is
+ * the medium tag of `at`, and a lane of another medium is infinitely far. */
 static inline intW tsis_lanes_index(const floatW px, const floatW py, const floatW pz,
-                                    const float3 at, const TsisTableInfo info, floatW* t) {
+                                    const floatW pm, const float4 at, const TsisTableInfo info,
+                                    floatW* t) {
     const floatW dx = px - at.x;
     const floatW dy = py - at.y;
     const floatW dz = pz - at.z;
-    return profile_indexW(sqrt(dx * dx + dy * dy + dz * dz), info, t);
+    const floatW r = sqrt(dx * dx + dy * dy + dz * dz);
+    return profile_indexW(select((floatW)(INFINITY), r, isequal(pm, (floatW)(at.w))), info, t);
 }
 
 /* b += w * f(|p - at|) in every lane, f the split table (profile.h). */
 static inline void tsis_lanes_add(const floatW px, const floatW py, const floatW pz,
-                                  const float3 at, const float3 w, const __global float2* split,
-                                  const TsisTableInfo info, floatW* br, floatW* bg, floatW* bb) {
+                                  const floatW pm, const float4 at, const float3 w,
+                                  const __global float2* split, const TsisTableInfo info,
+                                  floatW* br, floatW* bg, floatW* bb) {
     const int size = (int)info.size;
     floatW t;
-    const intW idx = tsis_lanes_index(px, py, pz, at, info, &t);
+    const intW idx = tsis_lanes_index(px, py, pz, pm, at, info, &t);
     TSIS_LANES(TSIS_LOAD_R)
     TSIS_LANES(TSIS_LOAD_G)
     TSIS_LANES(TSIS_LOAD_B)

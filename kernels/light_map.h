@@ -50,10 +50,12 @@ static inline int tsis_light_texel(const TsisLightMapInfo* l, const float x, con
  * a bilinear mix of the four texels around them (texels off the map hold no
  * light). Returns the mixed flux (rgb) and, in *point, the luminance-weighted
  * mean of their positions (w = the summed luminance weight; 0 where no light
- * landed), so the point moves continuously with (x, y) across a texel. */
+ * landed), so the point moves continuously with (x, y) across a texel. Only
+ * texels of `medium` count (the flux's a is its tag, 1 + medium,
+ * mesh/media.h): light does not cross between media. */
 static inline float3 tsis_light_bilinear(const TsisLightMapInfo* l, const __global float4* flux,
                                          const __global float4* position, const float x,
-                                         const float y, float4* point) {
+                                         const float y, const float medium, float4* point) {
     const float fx = floor(x - 0.5f);
     const float fy = floor(y - 0.5f);
     const float tx = x - 0.5f - fx;
@@ -65,6 +67,7 @@ static inline float3 tsis_light_bilinear(const TsisLightMapInfo* l, const __glob
         const int t = tsis_light_texel(l, fx + (float)(k & 1) + 0.5f, fy + (float)(k >> 1) + 0.5f);
         if (t < 0 || w <= 0.0f) continue;
         const float4 f = flux[t];
+        if (f.w != medium) continue;
         const float y_lum = w * TSIS_LUMINANCE(f.x, f.y, f.z);
         phi += w * f.xyz;
         p += (float4)(y_lum * position[t].xyz, y_lum);

@@ -10,7 +10,8 @@
 #include "hash.h"
 #include "profile.h"
 
-/* Per pixel of the G-buffer: where it is (xyz, 1 where covered) and its
+/* Per pixel of the G-buffer: where it is (xyz, w its medium tag 1 + medium,
+ * mesh/media.h, where covered: samples of another medium add nothing) and its
  * irradiance times its surface area in units of (pixel_angle)^2:
  * a = d^3 / (rho max(|n . w|, min_cos)), d the depth along the view
  * direction, rho the distance to the eye, w the unit ray (a pixel's solid
@@ -31,7 +32,7 @@ kernel void tsis_lss_prepare(const __global float4* gpos, const __global float4*
     const float rho = length(v);
     const float d = dot(v, (float3)(cam.fx, cam.fy, cam.fz));
     const float c = max(fabs(dot(normalize(gnormal[i].xyz), v / rho)), cam.min_cos);
-    pos[i] = (float4)(p.xyz, 1.0f);
+    pos[i] = p;
     ea[i] = (float4)(girr[i].xyz * (d * d * d / (rho * c)), 0.0f);
 }
 
@@ -82,6 +83,7 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count, const _
     const float px = (float)(pix % width) + 0.5f;
     const float py = (float)(pix / width) + 0.5f;
     const float3 xo = pos[pix].xyz;
+    const float medium = pos[pix].w;
     const float depth =
         dot(xo - (float3)(cam.ex, cam.ey, cam.ez), (float3)(cam.fx, cam.fy, cam.fz));
     const float per_mm = 1.0f / (depth * cam.pixel_angle); /* pixels per mm at xo */
@@ -107,7 +109,7 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count, const _
         /* 1 / p(r) up to the constant entries * 2 pi, applied once below. */
         const float w = inside ? (r1 - r0) * r : 0.0f;
         const float3 dx = pos[q].xyz - xo;
-        const float4 f = tsis_profile(rd, info, sqrt(dot(dx, dx)));
+        const float4 f = tsis_profile(rd, info, tsis_medium_distance(dx, medium, pos[q].w));
         b += (w * f.xyz) * ea[q].xyz;
     }
 #elif TSIS_LSS_LANES == 8
@@ -140,7 +142,8 @@ kernel void tsis_lss_gather(const __global int* pixels, const int count, const _
         const int8 row = tsis_profile_index8(sqrt(dx * dx + dy * dy + dz * dz), info, &frac);
         /* Out of range gives the last row with frac 0; it reads row `last` twice. */
         const int8 next = min(row + 1, last);
-        const float8 wf = select((float8)(0.0f), w, row < last);
+        const float8 wf =
+            select((float8)(0.0f), w, (row < last) & isequal(LSS_VEC(p, w), (float8)(medium)));
         LSS_LANES(LSS_LOAD_ROWS)
         br += wf * LSS_VEC(e, x) * (LSS_VEC(ta, x) + frac * (LSS_VEC(tb, x) - LSS_VEC(ta, x)));
         bg += wf * LSS_VEC(e, y) * (LSS_VEC(ta, y) + frac * (LSS_VEC(tb, y) - LSS_VEC(ta, y)));

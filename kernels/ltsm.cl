@@ -24,6 +24,7 @@ kernel void tsis_ltsm(const __global float4* points, const int count, const Tsis
     const int j = get_global_id(0);
     if (j >= count) return;
     const float3 xo = points[j].xyz;
+    const float medium = points[j].w;
     const float3 o = tsis_light_project(&light, xo);
     const float inv_tau = 1.0f / (light.tau_per_w * o.z);
     float3 b = (float3)(0.0f);
@@ -31,7 +32,7 @@ kernel void tsis_ltsm(const __global float4* points, const int count, const Tsis
         const TsisRingSample p = pattern[s];
         float4 x;
         const float3 phi = tsis_light_bilinear(&light, flux, position, o.x + p.dx * inv_tau,
-                                               o.y + p.dy * inv_tau, &x);
+                                               o.y + p.dy * inv_tau, medium, &x);
         if (!(x.w > 0.0f)) continue;
         const float3 d = xo - x.xyz / x.w;
         const float4 f = tsis_profile(table, info, sqrt(dot(d, d)));

@@ -38,6 +38,7 @@ kernel void tsis_mis_texels(const __global float4* flux, const __global float4* 
         irradiance[g] = (float4)(0.0f);
         return;
     }
+    /* Neighbours of another medium (flux a: the tag) are another surface. */
     const float3 p = position[g].xyz;
     float3 axis[2];
     for (int a = 0; a < 2; ++a) {
@@ -48,7 +49,7 @@ kernel void tsis_mis_texels(const __global float4* flux, const __global float4* 
             const int ny = y + (a == 1 ? s : 0);
             if (nx < 0 || ny < 0 || nx >= mi.res || ny >= mi.res) continue;
             const int n = base + ny * mi.res + nx;
-            if (!(flux[n].w > 0.0f)) continue;
+            if (flux[n].w != phi.w) continue;
             const float3 d = position[n].xyz - p;
             const float len = dot(d, d);
             if (len < best) {
@@ -135,6 +136,7 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
     const int j = get_global_id(0);
     if (j >= count) return;
     const float3 xo = points[j].xyz;
+    const float medium = points[j].w; /* light counts only within it (profile.h) */
     /* xo in each light's map: texel coordinates and tau, the texel size at
      * xo's depth; z, the depth offset to the lit surface there, and the
      * sampler's mass beyond it. */
@@ -146,7 +148,7 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
         const float3 c = tsis_light_project(&l, xo);
         o[m] = (float3)(c.xy, l.tau_per_w * c.z);
         float4 lit;
-        tsis_light_bilinear(&l, flux + m * per, position + m * per, c.x, c.y, &lit);
+        tsis_light_bilinear(&l, flux + m * per, position + m * per, c.x, c.y, medium, &lit);
         const float z = lit.w > 0.0f ? length(lit.xyz / lit.w - xo) : 0.0f;
         zt[m] = (float2)(z, 1.0f - mis_cdf(radii, mi.segments, z));
     }
@@ -166,7 +168,7 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
         pd *= (float)mi.n_dist;
         const float c = pt + pd > 0.0f ? pt / (pt + pd) : 1.0f;
         const float3 d = xo - (float3)(s.px, s.py, s.pz);
-        const float4 f = tsis_profile(table, info, sqrt(dot(d, d)));
+        const float4 f = tsis_profile(table, info, tsis_medium_distance(d, medium, s.medium));
         b += c * (float3)(s.wr, s.wg, s.wb) * f.xyz;
     }
 
@@ -198,7 +200,7 @@ kernel void tsis_mis_gather(const __global float4* points, const int count, cons
             if (t < 0) continue;
             const int g = l * mi.res * mi.res + t;
             const float4 phi = flux[g];
-            if (!(phi.w > 0.0f)) continue;
+            if (phi.w != medium) continue; /* no surface, or another medium's */
             const float3 x = position[g].xyz;
             /* c(x), the same function as for T samples. */
             float3 e = (float3)(0.0f);

@@ -20,6 +20,13 @@ static inline float4 tsis_profile(const __global float4* table, const TsisTableI
     return a + t * (b - a);
 }
 
+/* Light under the surface never crosses between media (docs/design.md §2):
+ * points of different media (tags 1 + medium in a float4's w, mesh/media.h)
+ * are infinitely far apart, where every table is 0. */
+static inline float tsis_medium_distance(const float3 d, const float ma, const float mb) {
+    return ma == mb ? sqrt(dot(d, d)) : INFINITY;
+}
+
 /* The same table split per channel into (value, step) pairs for vector-lane
  * gathers: entry c * size + k = (f_k[c], f_{k+1}[c] - f_k[c]), the last entry
  * of each channel (0, 0). Interpolation becomes one FMA, an out-of-range r

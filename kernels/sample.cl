@@ -71,6 +71,6 @@ kernel void tsis_draw(const __global float* pyramid, const __global float4* flux
     out.wr = phi.x * scale;
     out.wg = phi.y * scale;
     out.wb = phi.z * scale;
-    out.pad = 0.0f;
+    out.medium = p.w;
     samples[i] = out;
 }

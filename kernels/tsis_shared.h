@@ -31,7 +31,7 @@ typedef struct {
     float px, py, pz;
     float texel; /* atlas texel index (as float, exact below 2^24) for debugging views */
     float wr, wg, wb;
-    float pad;
+    float medium; /* its medium's tag, 1 + medium (mesh/media.h): it lights only that medium */
 } TsisSample;
 TSIS_CHECK_SIZE(TsisSample, 32);
 TSIS_CHECK_OFFSET(TsisSample, px, 0);
@@ -41,7 +41,7 @@ TSIS_CHECK_OFFSET(TsisSample, texel, 12);
 TSIS_CHECK_OFFSET(TsisSample, wr, 16);
 TSIS_CHECK_OFFSET(TsisSample, wg, 20);
 TSIS_CHECK_OFFSET(TsisSample, wb, 24);
-TSIS_CHECK_OFFSET(TsisSample, pad, 28);
+TSIS_CHECK_OFFSET(TsisSample, medium, 28);
 
 /* A radially symmetric profile f(r) (Rd, Rd*Wl, Rd*Wg) tabulated per channel at
  * TSIS_TABLE_SIZE points r_k = k * r_max / (TSIS_TABLE_SIZE - 1), stored as
@@ -80,9 +80,10 @@ TSIS_CHECK_OFFSET(TsisFluxNode, pz, 24);
 TSIS_CHECK_OFFSET(TsisFluxNode, radius, 28);
 
 /* Depth of the flux tree below its root, at most (21 bits of Morton code an
- * axis in steps of 3, plus the splits of texels that share a code): bounds
- * the descent's stack. */
-#define TSIS_FLUX_TREE_MAX_DEPTH 28
+ * axis in steps of 3, plus the splits of texels that share a code, plus the
+ * splits by medium: 8 levels for up to 8^8 media): bounds the descent's
+ * stack. */
+#define TSIS_FLUX_TREE_MAX_DEPTH 36
 
 /* The most lights a scene may have: the one definition the host
  * (kMaxLights), the kernels and, through ShaderProgram (MAX_LIGHTS), the GLSL

@@ -9,7 +9,10 @@
  *   F = flux summed over the cell's texels (rgb),
  *   P = luminance-weighted positions summed over the cell (Y x, Y y, Y z, Y),
  * so a bilinear mix of cells gives a footprint's flux and the centroid of the
- * light it received. */
+ * light it received. F's w is the cell's medium tag (1 + medium, mesh/media.h;
+ * 0: no surface, -1: several): a tap reads only cells of the exit point's
+ * medium, so light does not cross between media (a coarse cell straddling
+ * two media is skipped: tsm's approximation near where media meet). */
 #include "light_map.h"
 #include "profile.h"
 
@@ -20,7 +23,7 @@ kernel void tsis_tsm_level0(const __global float4* flux, const __global float4* 
     if (i >= count) return;
     const float4 f = flux[i];
     const float y = TSIS_LUMINANCE(f.x, f.y, f.z);
-    F[i] = (float4)(f.xyz, 0.0f);
+    F[i] = (float4)(f.xyz, f.w);
     P[i] = (float4)(y * position[i].xyz, y);
 }
 
@@ -33,23 +36,33 @@ kernel void tsis_tsm_reduce(__global float4* F, __global float4* P, const int sr
     if (x >= dw || y >= dh) return;
     float4 f = (float4)(0.0f);
     float4 p = (float4)(0.0f);
+    float medium = 0.0f;
     for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx) {
             const int sx = 2 * x + dx;
             const int sy = 2 * y + dy;
             if (sx < sw && sy < sh) {
-                f += F[src + sy * sw + sx];
+                const float4 c = F[src + sy * sw + sx];
+                f += c;
                 p += P[src + sy * sw + sx];
+                if (c.w != 0.0f) medium = medium == 0.0f || medium == c.w ? c.w : -1.0f;
             }
         }
+    f.w = medium;
     F[dst + y * dw + x] = f;
     P[dst + y * dw + x] = p;
 }
 
+/* A bilinear weight, kept for a cell of `medium` (or of none: it holds 0). */
+static inline float tsm_keep(const float w, const float4 cell, const float medium) {
+    return cell.w == medium || cell.w == 0.0f ? w : 0.0f;
+}
+
 /* Bilinear mix of the four cells around c (in cells, cell j's centre at j),
- * clamped at the map's edge (the maps' borders are empty). */
+ * clamped at the map's edge (the maps' borders are empty), over the cells of
+ * `medium`. */
 static void tsm_bilinear(const __global float4* F, const __global float4* P, const int4 level,
-                         const float2 c, float4* f, float4* p) {
+                         const float2 c, const float medium, float4* f, float4* p) {
     const float2 c0 = floor(c);
     const float2 t = c - c0;
     const int x0 = clamp((int)c0.x, 0, level.y - 1);
@@ -58,9 +71,12 @@ static void tsm_bilinear(const __global float4* F, const __global float4* P, con
     const int y1 = min(y0 + 1, level.z - 1);
     const int r0 = level.x + y0 * level.y;
     const int r1 = level.x + y1 * level.y;
-    const float w00 = (1.0f - t.x) * (1.0f - t.y), w10 = t.x * (1.0f - t.y);
-    const float w01 = (1.0f - t.x) * t.y, w11 = t.x * t.y;
-    *f = w00 * F[r0 + x0] + w10 * F[r0 + x1] + w01 * F[r1 + x0] + w11 * F[r1 + x1];
+    const float4 f00 = F[r0 + x0], f10 = F[r0 + x1], f01 = F[r1 + x0], f11 = F[r1 + x1];
+    const float w00 = tsm_keep((1.0f - t.x) * (1.0f - t.y), f00, medium);
+    const float w10 = tsm_keep(t.x * (1.0f - t.y), f10, medium);
+    const float w01 = tsm_keep((1.0f - t.x) * t.y, f01, medium);
+    const float w11 = tsm_keep(t.x * t.y, f11, medium);
+    *f = w00 * f00 + w10 * f10 + w01 * f01 + w11 * f11;
     *p = w00 * P[r0 + x0] + w10 * P[r0 + x1] + w01 * P[r1 + x0] + w11 * P[r1 + x1];
 }
 
@@ -82,6 +98,7 @@ kernel void tsis_tsm_filter(const __global float4* points, const int count,
     const int j = get_global_id(0);
     if (j >= count) return;
     const float3 xo = points[j].xyz;
+    const float medium = points[j].w;
     const float3 o = tsis_light_project(&light, xo);
     /* Depth offsets are taken along the light's direction of travel at xo. */
     const float3 travel = source.w > 0.0f ? normalize(xo - source.xyz) : source.xyz;
@@ -106,7 +123,8 @@ kernel void tsis_tsm_filter(const __global float4* points, const int count,
             weight = footprint * scale * scale;
         }
         float4 f, p;
-        tsm_bilinear(F, P, level, (o.xy + rt * (float2)(tap.x, tap.y)) * scale - 0.5f, &f, &p);
+        tsm_bilinear(F, P, level, (o.xy + rt * (float2)(tap.x, tap.y)) * scale - 0.5f, medium, &f,
+                     &p);
         if (!(p.w > 0.0f)) continue; /* no light there */
         const float dz = fabs(dot(p.xyz / p.w - xo, travel));
         const float4 rd = tsis_profile(rings + ring * (int)info.size, info, dz);

@@ -1,8 +1,10 @@
-// Camera G-buffer: world position (w = coverage), normal, and with
+// Camera G-buffer: world position (w = the medium tag 1 + medium, 0 where
+// uncovered), normal, and with
 // TSIS_GBUFFER_IRRADIANCE the irradiance E(x) at the pixel's surface point
 // (for camera-view methods such as LSS; the shadow taps cost most of the pass).
 in vec3 v_position;
 in vec3 v_normal;
+flat in float v_medium;
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
 #ifdef TSIS_GBUFFER_IRRADIANCE
@@ -11,7 +13,7 @@ layout(location = 2) out vec4 o_irradiance;
 
 void main() {
     vec3 n = normalize(v_normal);
-    o_position = vec4(v_position, 1.0);
+    o_position = vec4(v_position, v_medium);
     o_normal = vec4(n, 1.0);
 #ifdef TSIS_GBUFFER_IRRADIANCE
     o_irradiance = vec4(irradiance(v_position, n), 1.0);

@@ -4,6 +4,7 @@
 // the area the texel's solid angle covers. Directional: flux = I · Ft · texel area.
 in vec3 v_position;
 in vec3 v_normal;
+flat in float v_medium;  // the flux's a: 1 + medium, 0 where no surface
 uniform int u_light;
 uniform float u_tanHalf;     // point: tan of half the field of view
 uniform float u_texelAreaMm; // directional: texel area (mm²)
@@ -23,6 +24,6 @@ void main() {
         measure = step * step / pow(1.0 + dot(t, t), 1.5);
     }
     vec3 flux = c > 0.0 ? u_lightRgb[u_light] * (fresnelT(u_eta, c) * measure) : vec3(0.0);
-    o_flux = vec4(flux, 1.0);
+    o_flux = vec4(flux, v_medium);
     o_position = vec4(v_position, length(u_lightVec[u_light] - v_position));
 }

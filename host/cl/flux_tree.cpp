@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 #include "cl/launch.h"
@@ -43,18 +44,28 @@ void FluxTree::setLeaves(const std::vector<float>& positionRGBA) {
         return v;
     };
     const glm::vec3 scale = 2097151.0f / glm::max(hi - lo, glm::vec3(1e-30f));
-    std::vector<std::pair<uint64_t, int>> keyed;
+    // Sorted by medium (the position's w, mesh/media.h), then code, then texel.
+    struct Leaf {
+        int medium;
+        uint64_t code;
+        int texel;
+        bool operator<(const Leaf& o) const {
+            return std::tie(medium, code, texel) < std::tie(o.medium, o.code, o.texel);
+        }
+    };
+    std::vector<Leaf> keyed;
     for (size_t i = 0; i + 3 < positionRGBA.size(); i += 4) {
         if (!(positionRGBA[i + 3] > 0)) continue;
         const glm::vec3 q =
             (glm::vec3(positionRGBA[i], positionRGBA[i + 1], positionRGBA[i + 2]) - lo) * scale;
         const glm::u64vec3 c(glm::clamp(q + 0.5f, glm::vec3(0.0f), glm::vec3(2097151.0f)));
-        keyed.emplace_back(spread(c.x) | (spread(c.y) << 1) | (spread(c.z) << 2),
-                           static_cast<int>(i / 4));
+        keyed.push_back({static_cast<int>(positionRGBA[i + 3]),
+                         spread(c.x) | (spread(c.y) << 1) | (spread(c.z) << 2),
+                         static_cast<int>(i / 4)});
     }
-    std::sort(keyed.begin(), keyed.end());  // ties by texel index
+    std::sort(keyed.begin(), keyed.end());
     leafTexels_.clear();
-    for (const auto& k : keyed) leafTexels_.push_back(k.second);
+    for (const Leaf& k : keyed) leafTexels_.push_back(k.texel);
 
     // Breadth first, so children are contiguous and each depth is a range.
     struct Range {
@@ -67,15 +78,33 @@ void FluxTree::setLeaves(const std::vector<float>& positionRGBA) {
     for (size_t q = 0; q < queue.size(); ++q) {
         const Range r = queue[q];
         if (depthBegin_.size() <= size_t(r.depth)) depthBegin_.push_back(static_cast<int>(q));
-        if (r.end - r.begin == 1) {
+        if (keyed.empty()) {
             // An atlas without texels: one leaf of texel 0, which is uncovered.
-            topology_.push_back({{0, 0, keyed.empty() ? 0 : keyed[r.begin].second, 0}});
+            topology_.push_back({{0, 0, 0, 0}});
+            continue;
+        }
+        const int medium = keyed[r.begin].medium == keyed[r.end - 1].medium ? keyed[r.begin].medium
+                                                                            : 0;  // several
+        if (r.end - r.begin == 1) {
+            topology_.push_back({{0, 0, keyed[r.begin].texel, medium}});
             continue;
         }
         std::vector<Range> children;
+        if (medium == 0) {
+            // Several media: one child each, or up to 8 runs of them.
+            std::vector<size_t> starts;
+            for (size_t k = r.begin; k < r.end; ++k)
+                if (k == r.begin || keyed[k].medium != keyed[k - 1].medium) starts.push_back(k);
+            const size_t parts = std::min<size_t>(8, starts.size());
+            for (size_t k = 0; k < parts; ++k) {
+                const size_t b = starts[starts.size() * k / parts];
+                const size_t e = k + 1 < parts ? starts[starts.size() * (k + 1) / parts] : r.end;
+                children.push_back({b, e, 63, r.depth + 1});
+            }
+        }
         // The next 3 bits that do not all agree split the range by octant.
         for (int shift = r.shift - 3; shift >= 0 && children.empty(); shift -= 3) {
-            auto octant = [&](size_t k) { return (keyed[k].first >> shift) & 7; };
+            auto octant = [&](size_t k) { return (keyed[k].code >> shift) & 7; };
             if (octant(r.begin) == octant(r.end - 1)) continue;
             for (size_t b = r.begin; b < r.end;) {
                 size_t e = b;
@@ -91,7 +120,7 @@ void FluxTree::setLeaves(const std::vector<float>& positionRGBA) {
                     {r.begin + n * k / parts, r.begin + n * (k + 1) / parts, 0, r.depth + 1});
         }
         topology_.push_back(
-            {{static_cast<int>(queue.size()), static_cast<int>(children.size()), -1, 0}});
+            {{static_cast<int>(queue.size()), static_cast<int>(children.size()), -1, medium}});
         queue.insert(queue.end(), children.begin(), children.end());
     }
     depthBegin_.push_back(static_cast<int>(queue.size()));

@@ -79,11 +79,11 @@ class FluxTreeTest : public ClTest {
                     t.info, out);
         return download<cl_float4>(out, points.size());
     }
-    // The exact sum over every covered texel, in double.
+    // The exact sum over every covered texel of p's medium, in double.
     glm::dvec3 exact(const cl_float4& p, const ProfileTable& t) const {
         glm::dvec3 b(0.0);
         for (size_t i = 0; i < atlas.flux.size(); ++i) {
-            if (!atlas.covered(i)) continue;
+            if (!atlas.covered(i) || atlas.position[i].s[3] != p.s[3]) continue;
             const double r = glm::length(glm::dvec3(p.s[0], p.s[1], p.s[2]) - atlas.at(i));
             for (int c = 0; c < 3; ++c) b[c] += atlas.flux[i].s[c] * lookup(t, r, c);
         }
@@ -192,6 +192,44 @@ TEST_F(FluxTreeTest, ErrorFallsAndCostRisesAsEpsilonFalls) {
         EXPECT_LT(worst, epsilon) << epsilon;
         lastError = worst;
         lastCost = cost;
+    }
+}
+
+// Two media interleaved on the same planes (every third texel medium 2, tag
+// 2): no node mixes them but the ones near the root (tag 0), and a point sums
+// only its own medium's texels, exactly at epsilon 0 and within the bound at
+// 0.05.
+TEST_F(FluxTreeTest, MediaNeverMixInANodeNorLightEachOther) {
+    for (size_t i = 0; i < atlas.position.size(); ++i)
+        if (atlas.covered(i) && i % 3 == 0) atlas.position[i].s[3] = 2.0f;
+    build();
+    const std::vector<cl_int4>& topology = tree.topology();
+    int mixed = 0;
+    for (size_t i = 0; i < topology.size(); ++i) {
+        std::vector<int> texels;
+        texelsUnder(int(i), texels);
+        bool one = true;
+        for (int t : texels)
+            one = one && atlas.position[size_t(t)].s[3] == atlas.position[size_t(texels[0])].s[3];
+        if (!one) {
+            EXPECT_EQ(topology[i].s[3], 0) << "node " << i;
+            ++mixed;
+        } else if (!texels.empty()) {
+            EXPECT_EQ(float(topology[i].s[3]), atlas.position[size_t(texels[0])].s[3]) << i;
+        }
+    }
+    EXPECT_EQ(mixed, 1) << "only the root holds both";
+    const ProfileTable t = analyticTable(10.0);
+    std::vector<cl_float4> points = pointsOnCharts(40, 4);
+    for (size_t j = 0; j < points.size(); j += 2) points[j].s[3] = 2.0f;
+    for (float epsilon : {0.0f, 0.05f}) {
+        const std::vector<cl_float4> b = gather(points, epsilon, t);
+        for (size_t j = 0; j < points.size(); ++j) {
+            const glm::dvec3 e = exact(points[j], t);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(b[j].s[c], e[c], (epsilon > 0 ? epsilon : 2e-5) * e[c])
+                    << j << " " << c << " epsilon " << epsilon;
+        }
     }
 }
 

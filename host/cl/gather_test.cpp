@@ -17,11 +17,13 @@ using test::analyticTable;
 using test::ClTest;
 using test::lookup;
 
+// Points and samples of two media (tags 1 and 2, mesh/media.h): a sample
+// lights only the points of its own.
 std::vector<cl_float4> randomPoints(int count, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-2.0f, 2.0f);
     std::vector<cl_float4> p(count);
-    for (cl_float4& x : p) x = {{u(rng), u(rng), u(rng), 7.0f}};
+    for (cl_float4& x : p) x = {{u(rng), u(rng), u(rng), rng() % 4 == 0 ? 2.0f : 1.0f}};
     return p;
 }
 
@@ -30,7 +32,8 @@ std::vector<TsisSample> randomSamples(int n, uint32_t seed) {
     std::uniform_real_distribution<float> u(-2.0f, 2.0f);
     std::uniform_real_distribution<float> w(0.0f, 1.0f);
     std::vector<TsisSample> s(n);
-    for (TsisSample& x : s) x = {u(rng), u(rng), u(rng), 0.0f, w(rng), w(rng), w(rng), 0.0f};
+    for (TsisSample& x : s)
+        x = {u(rng), u(rng), u(rng), 0.0f, w(rng), w(rng), w(rng), rng() % 4 == 0 ? 2.0f : 1.0f};
     return s;
 }
 
@@ -62,6 +65,7 @@ class GatherTest : public ClTest, public ::testing::WithParamInterface<int> {
             for (int c = 0; c < 3; ++c) {
                 double sum = 0.0, mag = 0.0, wsum = 0.0;
                 for (const TsisSample& s : samples) {
+                    if (s.medium != points[j].s[3]) continue;
                     const double dx = double(points[j].s[0]) - s.px;
                     const double dy = double(points[j].s[1]) - s.py;
                     const double dz = double(points[j].s[2]) - s.pz;
@@ -90,9 +94,11 @@ TEST_P(GatherTest, ByHand) {
         t.rgba[4 * k + 1] = 2.0f * k;
         t.rgba[4 * k + 2] = 0.5f * k;
     }
-    const std::vector<TsisSample> s = {{0, 0, 0, 0, 1, 2, 3, 0}};
-    const std::vector<cl_float4> p = {{{3, 4, 0, 0}}, {{8191, 0, 0, 0}}, {{0, 0, 0.5f, 0}}};
+    const std::vector<TsisSample> s = {{0, 0, 0, 0, 1, 2, 3, 1}};
+    const std::vector<cl_float4> p = {
+        {{3, 4, 0, 1}}, {{8191, 0, 0, 1}}, {{0, 0, 0.5f, 1}}, {{3, 4, 0, 2}}};
     const std::vector<cl_float4> b = gather(p, s, t);
+    EXPECT_EQ(b[3].s[0], 0.0f);  // another medium: no light crosses
     EXPECT_EQ(b[0].s[0], 5.0f);
     EXPECT_EQ(b[0].s[1], 20.0f);
     EXPECT_EQ(b[0].s[2], 7.5f);

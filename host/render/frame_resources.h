@@ -50,7 +50,7 @@ struct SurfacePoints {
 
 // The camera's G-buffer on the CL side: width*height float4 each, GL row order.
 struct CameraBuffersCl {
-    cl::Buffer position;    // xyz, w = coverage
+    cl::Buffer position;    // xyz, w = medium tag (1 + medium, mesh/media.h), 0 = uncovered
     cl::Buffer normal;      // xyz
     cl::Buffer irradiance;  // E rgb at the pixel's surface point (docs/design.md §2)
 };

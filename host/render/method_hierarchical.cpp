@@ -1,6 +1,8 @@
 #include "render/method_hierarchical.h"
 
+#include <algorithm>
 #include <atomic>
+#include <vector>
 
 #include "util/parallel.h"
 #include "util/timer.h"
@@ -32,11 +34,24 @@ void HierarchicalMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
 void HierarchicalMethod::build(const FrameContext& ctx, double spacing, FrameStats& stats) {
     // Candidates at half the spacing so the thinned set covers the surface evenly.
     const bool rebuilt = candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical");
-    if (rebuilt) tree_ = FluxOctree(poissonThin(candidates_.points(), spacing));
+    if (rebuilt) {
+        std::vector<std::vector<SurfacePoint>> byMedium;
+        for (const SurfacePoint& s : poissonThin(candidates_.points(), spacing)) {
+            if (s.medium >= byMedium.size()) byMedium.resize(s.medium + 1);
+            byMedium[s.medium].push_back(s);
+        }
+        trees_.clear();
+        for (const std::vector<SurfacePoint>& samples : byMedium) trees_.emplace_back(samples);
+    }
+    size_t samples = 0, nodes = 0;
+    for (const FluxOctree& t : trees_) {
+        samples += t.sampleCount();
+        nodes += t.nodeCount();
+    }
     stats.set("hierarchical_spacing_mm", spacing);
     stats.set("hierarchical_candidates", static_cast<double>(candidates_.points().size()));
-    stats.set("hierarchical_points", static_cast<double>(tree_.sampleCount()));
-    stats.set("hierarchical_nodes", static_cast<double>(tree_.nodeCount()));
+    stats.set("hierarchical_points", static_cast<double>(samples));
+    stats.set("hierarchical_nodes", static_cast<double>(nodes));
     stats.set("hierarchical_cached", !rebuilt);
 }
 
@@ -51,7 +66,11 @@ void HierarchicalMethod::evaluate(const FrameContext& ctx, const SurfacePoints& 
         long long evals = 0;
         for (size_t j = begin; j < end; ++j) {
             const float* p = &points.host[j * 4];
-            const glm::vec3 b = tree_.radiosity({p[0], p[1], p[2]}, epsilon, rd_.table(), &evals);
+            // The exit point's medium from its tag, 1 + medium (mesh/media.h).
+            const size_t medium = static_cast<size_t>(std::max(p[3] - 1.0f, 0.0f));
+            if (medium >= trees_.size()) continue;
+            const glm::vec3 b =
+                trees_[medium].radiosity({p[0], p[1], p[2]}, epsilon, rd_.table(), &evals);
             out[j * 4] = b.x;
             out[j * 4 + 1] = b.y;
             out[j * 4 + 2] = b.z;

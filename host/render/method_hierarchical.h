@@ -31,7 +31,7 @@ class HierarchicalMethod : public Method {
 
     ClRuntime& cl_;
     SurfaceSampleCache candidates_;
-    FluxOctree tree_;
+    std::vector<FluxOctree> trees_;  // one per medium (mesh/media.h): light never crosses
     ProfileTableCache rd_;
 };
 

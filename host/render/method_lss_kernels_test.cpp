@@ -97,7 +97,8 @@ TEST_P(LssKernelTest, PrepareGivesPositionAndIrradianceTimesArea) {
     EXPECT_EQ(clamped, 1) << "the edge-on pixel is clamped to min_cos";
 }
 
-// The gather on prepared surface values against its sum in double: M = 20
+// The gather on prepared surface values against its sum in double (samples
+// on another medium's pixels add nothing): M = 20
 // samples (not a multiple of 8: the last vector is partial), an 8-cell radius
 // table, every covered pixel. Tolerance per value: 1e-5 of Σ|terms| (float
 // products summed over M; the sample radius and position move by rounding).
@@ -111,8 +112,10 @@ TEST_P(LssKernelTest, GatherMatchesHostDoubleSum) {
     std::vector<int> pixels;
     for (size_t i = 0; i < pos.size(); ++i) {
         const bool covered = g.position[i].s[3] > 0.0f;
+        // Two media (tags 1, 2: mesh/media.h), the right third of the image the second.
+        const float tag = i % kWidth >= 2 * kWidth / 3 ? 2.0f : 1.0f;
         pos[i] = covered
-                     ? cl_float4{{g.position[i].s[0], g.position[i].s[1], g.position[i].s[2], 1}}
+                     ? cl_float4{{g.position[i].s[0], g.position[i].s[1], g.position[i].s[2], tag}}
                      : cl_float4{{0, 0, 0, 0}};
         ea[i] = covered ? cl_float4{{g.irradiance[i].s[0] * 900, g.irradiance[i].s[1] * 700,
                                      g.irradiance[i].s[2] * 800, 0}}
@@ -151,6 +154,7 @@ TEST_P(LssKernelTest, GatherMatchesHostDoubleSum) {
                 cond.floor(py + (std::sin(phi) * dx + std::cos(phi) * dy) * r * perMm);
             if (!(sx >= 0 && sx < kWidth && sy >= 0 && sy < kHeight)) continue;
             const size_t q = size_t(sy) * kWidth + size_t(sx);
+            if (pos[q].s[3] != pos[size_t(pix)].s[3]) continue;  // another medium: no light
             const double dist = glm::length(test::xyz(pos[q]) - xo);
             for (int c = 0; c < 3; ++c) {
                 const double term = (r1 - r0) * r * test::lookup(t, dist, c) * ea[q].s[c] * norm;

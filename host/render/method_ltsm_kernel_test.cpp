@@ -38,8 +38,9 @@ std::vector<cl_float4> points(uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-3.4f, 3.4f);
     std::vector<cl_float4> p;
-    for (int i = 0; i < 40; ++i) p.push_back({{u(rng), u(rng), 0.02f, 0.0f}});
-    p.push_back({{9.0f, 9.0f, 0.0f, 0.0f}});
+    // One medium throughout (tag 1, as the maps' covered texels).
+    for (int i = 0; i < 40; ++i) p.push_back({{u(rng), u(rng), 0.02f, 1.0f}});
+    p.push_back({{9.0f, 9.0f, 0.0f, 1.0f}});
     return p;
 }
 
@@ -132,7 +133,7 @@ TEST_P(LtsmKernelTest, OneTexelByHand) {
     t.info = {1.0f, float(TSIS_TABLE_SIZE - 1), TSIS_TABLE_SIZE, 0};
     t.rgba.assign(4 * TSIS_TABLE_SIZE, 1.0f);
     const std::vector<TsisRingSample> pat = {{0, 0, 0, 0, 1, 2, 3, 0}};
-    const std::vector<cl_float4> xo = {{{0.25f, 0.25f, 0.0f, 0.0f}}};
+    const std::vector<cl_float4> xo = {{{0.25f, 0.25f, 0.0f, 1.0f}}};
     cl::Buffer out = buffer(sizeof(cl_float4));
     run(kernel, 1, upload(xo), 1, l, upload(flux), upload(pos), upload(pat), 1, upload(t.rgba),
         t.info, 0, out);

@@ -101,10 +101,10 @@ std::vector<TsisSample> samples(const Maps& maps, uint32_t seed) {
     for (size_t g = 0; g < kPer; ++g)
         if (maps.flux[g].s[3] > 0.0f && u(rng) < 0.6f) {
             const cl_float4 p = maps.position[g];
-            s.push_back({p.s[0], p.s[1], p.s[2], float(g), u(rng), u(rng), u(rng), 0.0f});
+            s.push_back({p.s[0], p.s[1], p.s[2], float(g), u(rng), u(rng), u(rng), 1.0f});
         }
     for (int k = 0; k < 3; ++k)
-        s.push_back({0.3f * k + 0.11f, 0.13f, 4.0f, 0.0f, 1.0f, 1.0f, 1.0f, 0.0f});
+        s.push_back({0.3f * k + 0.11f, 0.13f, 4.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f});
     return s;
 }
 
@@ -220,7 +220,8 @@ TEST_F(MisKernelTest, GatherMatchesHostDoubleSum) {
     std::mt19937 rng(8);
     std::uniform_real_distribution<float> u(-1.6f, 1.6f);
     std::vector<cl_float4> pts;
-    for (int j = 0; j < 24; ++j) pts.push_back({{u(rng), u(rng), 0.03f, 0.0f}});
+    // One medium throughout (tag 1, as the maps' covered texels).
+    for (int j = 0; j < 24; ++j) pts.push_back({{u(rng), u(rng), 0.03f, 1.0f}});
 
     // Host: kernels/mis.cl's tsis_mis_gather in double.
     const auto cdf = [&](double r) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/media.h"
 #include "util/error.h"
 #include "util/progress.h"
 #include "util/timer.h"
@@ -78,7 +79,7 @@ void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
                             w.x,
                             w.y,
                             w.z,
-                            0.0f};
+                            mediumTag(pts[i].medium)};
                 }
                 samples_ = cl::Buffer(cl_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                                       s.size() * sizeof(TsisSample), s.data());

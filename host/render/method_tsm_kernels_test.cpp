@@ -35,7 +35,7 @@ std::vector<cl_float4> randomFloat4(size_t n, uint32_t seed, float lo, float hi,
     return v;
 }
 
-// F = (Φ, 0) exactly; P = (Y·x, Y) with Y the luminance of Φ. Tolerance on P:
+// F = (Φ, medium tag) exactly; P = (Y·x, Y) with Y the luminance of Φ. Tolerance on P:
 // 1e-6 relative (Y is three float products summed).
 TEST_F(TsmKernelTest, Level0IsFluxAndLuminanceWeightedPositions) {
     const int count = 37;
@@ -51,17 +51,20 @@ TEST_F(TsmKernelTest, Level0IsFluxAndLuminanceWeightedPositions) {
             EXPECT_EQ(f[i].s[c], flux[i].s[c]) << i;
             EXPECT_NEAR(p[i].s[c], y * pos[i].s[c], 1e-6 * std::abs(y * pos[i].s[c])) << i;
         }
-        EXPECT_EQ(f[i].s[3], 0.0f) << i;
+        EXPECT_EQ(f[i].s[3], flux[i].s[3]) << i;
         EXPECT_NEAR(p[i].s[3], y, 1e-6 * y) << i;
     }
 }
 
 // A 5×3 level to 3×2: each cell the sum of the up-to-four cells under it
-// (odd edges sum what exists). Tolerance 1e-6 of the sum of magnitudes.
+// (odd edges sum what exists), F's w the cells' one medium tag (0 none, -1
+// several: one cell of tag 2 among tags 1). Tolerance 1e-6 of the sum of
+// magnitudes.
 TEST_F(TsmKernelTest, ReduceSumsTwoByTwoWithOddEdges) {
     const int sw = 5, sh = 3, dw = 3, dh = 2, src = 4, dst = src + sw * sh;
     const size_t cells = size_t(dst + dw * dh);
-    const std::vector<cl_float4> F0 = randomFloat4(cells, 3, -1.0f, 3.0f, 0.1);
+    std::vector<cl_float4> F0 = randomFloat4(cells, 3, -1.0f, 3.0f, 0.1);
+    F0[size_t(src + 1)].s[3] = 2.0f;
     const std::vector<cl_float4> P0 = randomFloat4(cells, 4, -4.0f, 4.0f, 0.1);
     cl::Buffer F = upload(F0), P = upload(P0);
     setKernelArgs(reduce, F, P, src, sw, sh, dst, dw, dh);
@@ -81,7 +84,17 @@ TEST_F(TsmKernelTest, ReduceSumsTwoByTwoWithOddEdges) {
                         pm += std::abs(P0[i].s[c]);
                     }
                 const size_t d = size_t(dst + y * dw + x);
-                EXPECT_NEAR(f[d].s[c], fs, 1e-6 * fm) << x << ", " << y << " channel " << c;
+                if (c == 3) {
+                    float tag = 0;
+                    for (int sy = 2 * y; sy < std::min(2 * y + 2, sh); ++sy)
+                        for (int sx = 2 * x; sx < std::min(2 * x + 2, sw); ++sx) {
+                            const float t = F0[size_t(src + sy * sw + sx)].s[3];
+                            if (t != 0) tag = tag == 0 || tag == t ? t : -1;
+                        }
+                    EXPECT_EQ(f[d].s[3], tag) << x << ", " << y;
+                } else {
+                    EXPECT_NEAR(f[d].s[c], fs, 1e-6 * fm) << x << ", " << y << " channel " << c;
+                }
                 EXPECT_NEAR(p[d].s[c], ps, 1e-6 * pm) << x << ", " << y << " channel " << c;
             }
     // The source level is only read.

@@ -47,7 +47,8 @@ void collectAovs(FrameGraph& graph, const RasterHandles& gl, FrameGraphId<Radios
     const RenderTarget& gbuffer = *graph.get(gl.gbuffer).target;
     const std::vector<float> position = gbuffer.readRGBA(0);
     result.position = toImage(position, w, h, 3);
-    result.coverage = toImage(position, w, h, 1, 3);
+    result.coverage = toImage(position, w, h, 1, 3);  // w: the medium tag, 0 where uncovered
+    for (float& c : result.coverage.pixels) c = c > 0 ? 1.0f : 0.0f;
     result.normal = toImage(gbuffer.readRGBA(1), w, h, 3);
     // The flux atlas, when this frame's method used it.
     if (const RenderTarget* flux = graph.get(gl.fluxAtlas).target)

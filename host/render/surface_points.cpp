@@ -7,6 +7,7 @@
 #include <mutex>
 #include <unordered_map>
 
+#include "mesh/media.h"
 #include "physics/fresnel.h"
 #include "render/frame_keys.h"
 #include "render/ray_caster.h"
@@ -284,10 +285,12 @@ std::vector<SurfacePoint> placeSurfacePoints(const Mesh& mesh, double spacing) {
     size_t total = 0;
     for (uint32_t kt : k) total += static_cast<size_t>(kt) * kt;
     points.reserve(total);
+    const Media media = findMedia(mesh);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const Facet f = facet(mesh, t, k[t]);
         forEachSubTriangle(kWhole, f.k, [&](const glm::dvec2(&c)[3]) {
             SurfacePoint s;
+            s.medium = media.ofVertex[mesh.triangles[t][0]];
             s.position = glm::vec3(f.at(centroid(c)));
             s.normal = glm::vec3(f.normalAt(centroid(c)));
             s.area = static_cast<float>(f.subArea);
@@ -313,11 +316,15 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
     for (size_t t = 0; t < k.size(); ++t)
         first[t + 1] = first[t] + static_cast<size_t>(k[t]) * k[t];
     std::vector<SurfacePoint> points(first.back());
+    const Media media = findMedia(mesh);
     std::atomic<size_t> done{0};
     std::mutex progressMutex;
     parallelFor(k.size(), 64, [&](size_t begin, size_t end) {
-        for (size_t t = begin; t < end; ++t)
+        for (size_t t = begin; t < end; ++t) {
             sampler.sampleFacet(facet(mesh, t, k[t]), &points[first[t]]);
+            for (size_t i = first[t]; i < first[t + 1]; ++i)
+                points[i].medium = media.ofVertex[mesh.triangles[t][0]];
+        }
         const size_t d = done += first[end] - first[begin];
         // Progress is not thread-safe; whoever gets the lock draws.
         if (progress && progressMutex.try_lock()) {

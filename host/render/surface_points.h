@@ -22,6 +22,7 @@ struct SurfacePoint {
     glm::vec3 normal{0.0f};      // interpolated vertex normal, unit
     glm::vec3 irradiance{0.0f};  // E per channel
     float area = 0;              // mm² this point stands for
+    uint32_t medium = 0;         // its solid (mesh/media.h)
 };
 
 // ℓ_min = 1 / max_c σt'(c): the material's smallest mean free path (mm).

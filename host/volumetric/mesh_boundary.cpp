@@ -7,8 +7,8 @@
 #include <glm/common.hpp>
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
-#include <unordered_map>
 
+#include "mesh/media.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -68,46 +68,6 @@ MeshBoundary::MeshBoundary(const Mesh& mesh) : scene_(std::make_unique<Scene>())
 }
 
 MeshBoundary::~MeshBoundary() = default;
-
-namespace {
-
-// Vertices welded by position within `tolerance` (seams and poles duplicate
-// them, not always bit for bit): a hash grid of that cell size, searched in
-// the 27 cells around each vertex.
-std::vector<int> weldVertices(const Mesh& mesh, double tolerance) {
-    std::unordered_map<uint64_t, std::vector<int>> grid;
-    auto key = [](glm::i64vec3 c) {
-        return (static_cast<uint64_t>(c.x) * 73856093u) ^ (static_cast<uint64_t>(c.y) * 19349663u) ^
-               (static_cast<uint64_t>(c.z) * 83492791u);
-    };
-    std::vector<int> welded(mesh.positions.size());
-    std::vector<glm::dvec3> weldedAt;
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::dvec3 p(mesh.positions[i]);
-        const glm::i64vec3 cell(glm::floor(p / tolerance));
-        int id = -1;
-        for (int dx = -1; dx <= 1 && id < 0; ++dx)
-            for (int dy = -1; dy <= 1 && id < 0; ++dy)
-                for (int dz = -1; dz <= 1 && id < 0; ++dz) {
-                    const auto it = grid.find(key(cell + glm::i64vec3(dx, dy, dz)));
-                    if (it == grid.end()) continue;
-                    for (int w : it->second)
-                        if (glm::length(weldedAt[static_cast<size_t>(w)] - p) <= tolerance) {
-                            id = w;
-                            break;
-                        }
-                }
-        if (id < 0) {
-            id = static_cast<int>(weldedAt.size());
-            weldedAt.push_back(p);
-            grid[key(cell)].push_back(id);
-        }
-        welded[i] = id;
-    }
-    return welded;
-}
-
-}  // namespace
 
 void MeshBoundary::buildNeighbours() {
     const std::vector<int> welded = weldVertices(mesh_, epsilon_);
