@@ -71,9 +71,8 @@ Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<ui
         mesh.triangles.emplace_back(triangles[i], triangles[i + 1], triangles[i + 2]);
     // What a loader does (repair), then what `tsis render` does with a loaded mesh.
     repairMesh(mesh);
-    normalizeMesh(mesh, s.impl_->sizeMm);
-    ensureNormals(mesh);
-    s.impl_->scene.mesh = ensureAtlas(mesh, atlasMode(args), atlasOptionsFromArgs(args));
+    s.impl_->scene.mesh = prepareAtSize(std::move(mesh), s.impl_->sizeMm, atlasMode(args),
+                                        atlasOptionsFromArgs(args));
     return s;
 }
 

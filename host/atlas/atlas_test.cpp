@@ -513,6 +513,27 @@ TEST(AtlasCache, HitIsIdenticalAndCorruptEntryIsRebuilt) {
     std::filesystem::remove_all(dir);
 }
 
+// The atlas belongs to the shape, not the size: the mesh at 30 mm finds the
+// entry made at 10 mm (issue 25: a new --size-mm rebuilt it), with the same
+// UVs and three times the positions.
+TEST(AtlasPolicy, AnotherSizeFindsTheCachedAtlas) {
+    const auto dir = scratchDir("cache_size");
+    const ScopedEnv env("TSIS_CACHE_DIR", dir.string());
+    const Mesh mesh = test::sphereMesh(16, 32);
+    AtlasOptions opt;
+    AtlasStats first, second;
+    const Mesh a = prepareAtSize(mesh, 10.0, "build", opt, &first);
+    const Mesh b = prepareAtSize(mesh, 30.0, "build", opt, &second);
+    EXPECT_FALSE(first.fromCache);
+    EXPECT_TRUE(second.fromCache);
+    EXPECT_EQ(a.uvs, b.uvs);
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    for (size_t v = 0; v < a.positions.size(); ++v)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(b.positions[v][c], 3.0f * a.positions[v][c], 1e-5f) << v;
+    std::filesystem::remove_all(dir);
+}
+
 TEST(AtlasPolicy, Modes) {
     const auto dir = scratchDir("policy");
     const ScopedEnv env("TSIS_CACHE_DIR", dir.string());

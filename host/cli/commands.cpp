@@ -180,11 +180,8 @@ int runAtlas(const std::vector<std::string>& argv) {
     const auto png = args.value("output");
     if (png && *png == "-") fail("-o -: standard output carries the statistics");
     if (png) addImageOutput(outputs, *png);
-    Mesh mesh = loadMesh(*meshSpec);
-    normalizeMesh(mesh, size);
-    ensureNormals(mesh);
     AtlasStats built;
-    mesh = ensureAtlas(mesh, mode, ao, &built);
+    const Mesh mesh = prepareAtSize(loadMesh(*meshSpec), size, mode, ao, &built);
     AtlasStats stats = measureAtlas(mesh, ao.resolution);
     stats.seconds = built.seconds;
     stats.fromCache = built.fromCache;

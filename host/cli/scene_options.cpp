@@ -173,10 +173,7 @@ Scene parseScene(const Args& args) {
 
 Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
                  const AtlasOptions& atlasOptions) {
-    Mesh mesh = loadMesh(spec);
-    normalizeMesh(mesh, sizeMm);
-    ensureNormals(mesh);
-    return ensureAtlas(mesh, atlasMode, atlasOptions);
+    return prepareAtSize(loadMesh(spec), sizeMm, atlasMode, atlasOptions);
 }
 
 void loadSceneMesh(Scene& scene, const Args& args) {
