@@ -73,8 +73,13 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             b.write(ctx.points);
         },
         [this, &ctx, gl](FrameGraph::Resources& res) {
-            const std::vector<float> position = res.read(gl.gbuffer).target->readRGBA(0);
+            const GlTarget& gbuffer = res.read(gl.gbuffer);
             SurfacePoints& p = res.write(ctx.points);
+            if (gbuffer.version == pointsOf_) {
+                p = cachedPoints_;
+                return;
+            }
+            const std::vector<float> position = gbuffer.target->readRGBA(0);
             for (int i = 0; i < ctx.width * ctx.height; ++i)
                 if (position[static_cast<size_t>(i) * 4 + 3] > 0) {
                     p.pixel.push_back(i);
@@ -85,6 +90,8 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
             upload(ctx.cl->queue(), p.xyz, p.host);
             res.addBytes(bytesOf(p.host));
+            cachedPoints_ = p;
+            pointsOf_ = gbuffer.version;
         });
     // Full-resolution camera buffers, for methods that work in image space.
     graph.addPass(
@@ -94,15 +101,18 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             b.write(ctx.gbuffer);
         },
         [this, &ctx, gl](FrameGraph::Resources& res) {
-            const RenderTarget& target = *res.read(gl.gbuffer).target;
+            const GlTarget& gbuffer = res.read(gl.gbuffer);
             const size_t bytes = static_cast<size_t>(ctx.width) * ctx.height * kTexelBytes;
             CameraBuffersCl& out = res.write(ctx.gbuffer);
             cl::Buffer* dst[3] = {&out.position, &out.normal, &out.irradiance};
+            const bool changed = gbuffer.version != gbufferUploaded_;
             for (int i = 0; i < 3; ++i) {
                 *dst[i] = gbuffer_[i].reserve(ctx.cl->context(), bytes);
-                upload(ctx.cl->queue(), *dst[i], target.readRGBA(i));
+                if (!changed) continue;
+                upload(ctx.cl->queue(), *dst[i], gbuffer.target->readRGBA(i));
                 res.addBytes(static_cast<long long>(bytes));
             }
+            gbufferUploaded_ = gbuffer.version;
         });
     graph.addPass(
         "gl_to_cl_light_maps",

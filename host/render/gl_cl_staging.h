@@ -33,6 +33,10 @@ class GlClStaging {
     GrowingBuffer fluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_, gbuffer_[3];
     std::vector<GrowingBuffer> lightMaps_;
     uint64_t fluxUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0, lightsUploaded_ = 0;
+    // The covered pixels of the G-buffer version pointsOf_ (kept while the
+    // camera stands still: a frame that only moves the light reuses them).
+    SurfacePoints cachedPoints_;
+    uint64_t pointsOf_ = 0, gbufferUploaded_ = 0;
 };
 
 }  // namespace tsis

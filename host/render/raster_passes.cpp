@@ -5,6 +5,7 @@
 
 #include "image/image_io.h"
 #include "tsis_shared.h"
+#include "util/hash.h"
 
 namespace tsis {
 
@@ -106,12 +107,24 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.read(h.lights);
             b.write(h.gbuffer);
         },
-        [this, &graph, &ctx, eta, gbufferCl, h](FrameGraph::Resources& res) {
-            const GlLights& lights = res.read(h.lights);
-            gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, eta, ctx.viewProj,
-                             ctx.width, ctx.height, graph.isRead(gbufferCl));
-            glFinish();
-            res.write(h.gbuffer) = {&gbufferPass_.target(), ++gbufferVersion_};
+        [this, &graph, &ctx, eta, gbufferCl, lighting, h](FrameGraph::Resources& res) {
+            // Redrawn only when what it shows changed: a frame that only moves
+            // the light keeps it (irradiance, for image-space methods, moves
+            // with the lighting).
+            const bool irradiance = graph.isRead(gbufferCl);
+            Hasher key;
+            key.add(meshHash_).add(ctx.width).add(ctx.height).add(irradiance);
+            for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
+            if (irradiance) key.add(lighting).add(eta);
+            if (key.digest() != gbufferKey_) {
+                const GlLights& lights = res.read(h.lights);
+                gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, eta,
+                                 ctx.viewProj, ctx.width, ctx.height, irradiance);
+                glFinish();
+                gbufferKey_ = key.digest();
+                ++gbufferVersion_;
+            }
+            res.write(h.gbuffer) = {&gbufferPass_.target(), gbufferVersion_};
         });
     return h;
 }

@@ -78,6 +78,7 @@ class RasterPasses {
     // What the targets hold: lighting keys (0 = nothing) and versions.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
+    uint64_t gbufferKey_ = 0;  // mesh, camera, size (and the lighting, with irradiance)
     uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0;
 };
 
