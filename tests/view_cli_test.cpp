@@ -42,10 +42,11 @@ class View : public ::testing::Test {
 };
 
 // Item 4 (a): orbit, light drag, material and size changes, a zoom and a mesh
-// that fails to open (item 5: the old scene stays), then the AOVs.
+// that fails to open (item 5: the old scene stays), then the AOVs. The mesh
+// options (issue 20 item 6) come back in the printed command.
 TEST_F(View, ScriptedSessionGivesTheRenderOfItsLastView) {
     const std::string d = dir_.path().string();
-    RunResult r = view(kSmall + "--print-view",
+    RunResult r = view(kSmall + "--rotate 0,30,0 --crease 45 --print-view",
                        "orbit 40 15\n"
                        "light-drag 60 -20\n"
                        "set material marble\n"
@@ -64,6 +65,7 @@ TEST_F(View, ScriptedSessionGivesTheRenderOfItsLastView) {
               0u)
         << r.out;
     ASSERT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_NE(r.out.find(" --rotate 0,30,0 --crease 45 --atlas auto"), std::string::npos) << r.out;
     const std::string renderArgs = r.out.substr(5, r.out.size() - 6);  // without "tsis " and '\n'
     RunResult render = runTsis(renderArgs + " --aov " + d + "/render -o " + d + "/r.png");
     ASSERT_EQ(render.exitCode, 0) << render.err;

@@ -1,7 +1,6 @@
 #include "tsis/scene.h"
 
 #include "api/api_internal.h"
-#include "atlas/atlas.h"
 #include "cli/args.h"
 #include "cli/scene_options.h"
 #include "mesh/repair.h"
@@ -71,8 +70,8 @@ Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<ui
         mesh.triangles.emplace_back(triangles[i], triangles[i + 1], triangles[i + 2]);
     // What a loader does (repair), then what `tsis render` does with a loaded mesh.
     repairMesh(mesh);
-    s.impl_->scene.mesh = prepareAtSize(std::move(mesh), s.impl_->sizeMm, atlasMode(args),
-                                        atlasOptionsFromArgs(args));
+    s.impl_->scene.mesh =
+        prepareLoadedMesh(std::move(mesh), s.impl_->sizeMm, meshOptionsFromArgs(args));
     return s;
 }
 

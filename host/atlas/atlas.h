@@ -77,13 +77,13 @@ Mesh buildAtlas(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats = n
 Mesh ensureAtlas(const Mesh& mesh, const std::string& mode, const AtlasOptions& opt,
                  AtlasStats* stats = nullptr);
 
-// A loaded mesh made ready to render: normalised to sizeMm (normalizeMesh),
-// with normals (ensureNormals) and its atlas (ensureAtlas). The atlas belongs
-// to the shape, not the size: it is made at kAtlasSizeMm and the mesh scaled
-// after, so a new --size-mm finds the cached atlas and gets the same UVs.
+// `mesh` normalised to sizeMm (normalizeMesh) with its atlas (ensureAtlas).
+// The atlas belongs to the shape, not the size: it is made at kAtlasSizeMm and
+// the mesh scaled after, so a new --size-mm finds the cached atlas and gets
+// the same UVs.
 constexpr double kAtlasSizeMm = 10.0;
-Mesh prepareAtSize(Mesh mesh, double sizeMm, const std::string& mode, const AtlasOptions& opt,
-                   AtlasStats* stats = nullptr);
+Mesh atlasAtSize(Mesh mesh, double sizeMm, const std::string& mode, const AtlasOptions& opt,
+                 AtlasStats* stats = nullptr);
 
 // r statistics, flips, overlaps (texel-centre raster of triangle ids at
 // `resolution` plus exact segment tests between UV border edges) and coverage

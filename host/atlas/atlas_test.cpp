@@ -522,8 +522,8 @@ TEST(AtlasPolicy, AnotherSizeFindsTheCachedAtlas) {
     const Mesh mesh = test::sphereMesh(16, 32);
     AtlasOptions opt;
     AtlasStats first, second;
-    const Mesh a = prepareAtSize(mesh, 10.0, "build", opt, &first);
-    const Mesh b = prepareAtSize(mesh, 30.0, "build", opt, &second);
+    const Mesh a = atlasAtSize(mesh, 10.0, "build", opt, &first);
+    const Mesh b = atlasAtSize(mesh, 30.0, "build", opt, &second);
     EXPECT_FALSE(first.fromCache);
     EXPECT_TRUE(second.fromCache);
     EXPECT_EQ(a.uvs, b.uvs);

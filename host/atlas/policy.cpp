@@ -31,10 +31,9 @@ Mesh ensureAtlas(const Mesh& mesh, const std::string& mode, const AtlasOptions& 
     return atlas::buildAtlasCached(mesh, opt, stats);
 }
 
-Mesh prepareAtSize(Mesh mesh, double sizeMm, const std::string& mode, const AtlasOptions& opt,
-                   AtlasStats* stats) {
+Mesh atlasAtSize(Mesh mesh, double sizeMm, const std::string& mode, const AtlasOptions& opt,
+                 AtlasStats* stats) {
     normalizeMesh(mesh, kAtlasSizeMm);
-    ensureNormals(mesh);
     Mesh out = ensureAtlas(mesh, mode, opt, stats);
     if (sizeMm != kAtlasSizeMm) normalizeMesh(out, sizeMm);  // centred: a uniform scale
     return out;

@@ -161,6 +161,8 @@ int runAtlas(const std::vector<std::string>& argv) {
         {"mesh", true, false, "M  mesh file, builtin:NAME or a data mesh name (required)"},
         {"size-mm", true, false, "S  bounding-box diagonal in mm (default 10)"},
         {"atlas", true, false, "MODE  auto (default), file or build"},
+        {"rotate", true, false, "X,Y,Z  turn the mesh as tsis render --rotate does"},
+        {"mesh-up", true, false, "y|z  the mesh's up axis, as tsis render --mesh-up (default y)"},
         {"atlas-res", true, false, findRenderParam("atlas-res")->usage()},  // as tsis render
         {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
         {"json", false, false, "print the statistics as JSON"},
@@ -174,14 +176,15 @@ int runAtlas(const std::vector<std::string>& argv) {
     auto meshSpec = args.value("mesh");
     if (!meshSpec) fail("tsis atlas needs --mesh");
     const double size = sizeMmFromArgs(args);
-    const std::string mode = atlasMode(args);
-    AtlasOptions ao = atlasOptionsFromArgs(args);
+    const MeshOptions mo = meshOptionsFromArgs(args);
+    const AtlasOptions& ao = mo.atlas;
     OutputSet outputs;
     const auto png = args.value("output");
     if (png && *png == "-") fail("-o -: standard output carries the statistics");
     if (png) addImageOutput(outputs, *png);
+    // The atlas tsis render would use (its normals play no part).
     AtlasStats built;
-    const Mesh mesh = prepareAtSize(loadMesh(*meshSpec), size, mode, ao, &built);
+    const Mesh mesh = atlasMesh(loadMesh(*meshSpec), size, mo, &built);
     AtlasStats stats = measureAtlas(mesh, ao.resolution);
     stats.seconds = built.seconds;
     stats.fromCache = built.fromCache;

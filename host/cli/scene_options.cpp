@@ -7,6 +7,7 @@
 
 #include "atlas/atlas.h"
 #include "mesh/mesh_io.h"
+#include "mesh/repair.h"
 #include "mesh/uv_check.h"
 #include "physics/material.h"
 #include "render/method.h"
@@ -48,6 +49,15 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
             {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
             {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
             {"fov", true, false, "DEG  vertical field of view" + byDefault(sd.fovDegrees)},
+            {"rotate", true, false,
+             "X,Y,Z  turn the mesh by these degrees about X, then Y, then Z (after --mesh-up; "
+             "default 0,0,0)"},
+            {"mesh-up", true, false,
+             "y|z  the mesh's up axis: z turns a Z-up mesh's +z to +y" + byDefault(sd.meshUp)},
+            {"crease", true, false,
+             "DEG  normals the mesh lacks are not smoothed across edges sharper than this (0: "
+             "flat triangles, 180: smooth everywhere)" +
+                 byDefault(sd.creaseDegrees)},
             {"atlas", true, false,
              "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or "
              "build" +
@@ -149,12 +159,41 @@ AtlasOptions atlasOptionsFromArgs(const Args& args) {
     return o;
 }
 
+MeshOptions meshOptionsFromArgs(const Args& args) {
+    MeshOptions o;
+    if (auto v = args.value("rotate")) {
+        o.rotateDegrees = parseVec3("--rotate", *v);
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(o.rotateDegrees[k]) > 360)
+                fail("--rotate ", *v, ": each angle must be within [-360, 360]");
+    }
+    const std::string up = args.getString("mesh-up", SceneDefaults().meshUp);
+    if (up != "y" && up != "z") fail("--mesh-up '", up, "': expected y or z");
+    o.zUp = up == "z";
+    o.creaseDegrees = args.getDouble("crease", SceneDefaults().creaseDegrees, 0, 180);
+    o.atlasMode = atlasMode(args);
+    o.atlas = atlasOptionsFromArgs(args);
+    return o;
+}
+
+std::vector<std::string> meshOptionArgs(const MeshOptions& o) {
+    std::vector<std::string> a;
+    if (o.rotateDegrees != glm::dvec3(0.0))
+        a.insert(a.end(),
+                 {"--rotate", exactText(o.rotateDegrees.x) + "," + exactText(o.rotateDegrees.y) +
+                                  "," + exactText(o.rotateDegrees.z)});
+    if (o.zUp) a.insert(a.end(), {"--mesh-up", "z"});
+    if (o.creaseDegrees != SceneDefaults().creaseDegrees)
+        a.insert(a.end(), {"--crease", exactText(o.creaseDegrees)});
+    a.insert(a.end(), {"--atlas", o.atlasMode});
+    return a;
+}
+
 Scene parseScene(const Args& args) {
     Scene scene;
     const double size = sizeMmFromArgs(args);
     scene.material = materialFromArgs(args);
-    atlasMode(args);
-    atlasOptionsFromArgs(args);
+    meshOptionsFromArgs(args);
     for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
@@ -163,7 +202,11 @@ Scene parseScene(const Args& args) {
     scene.camera = defaultCamera(size, fov);
     if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
     if (auto v = args.value("target")) scene.camera.target = glm::vec3(parseVec3("--target", *v));
-    if (auto v = args.value("up")) scene.camera.up = glm::vec3(parseVec3("--up", *v));
+    if (auto v = args.value("up")) {
+        if (*v == "y" || *v == "z")  // the other up
+            fail("--up ", *v, ": --up is the camera's X,Y,Z; the mesh's up axis is --mesh-up ", *v);
+        scene.camera.up = glm::vec3(parseVec3("--up", *v));
+    }
     glm::vec3 forward = scene.camera.target - scene.camera.eye;
     if (glm::length(forward) == 0.0f) fail("--eye and --target are the same point");
     if (glm::length(glm::cross(forward, scene.camera.up)) < 1e-6f * glm::length(forward))
@@ -171,14 +214,25 @@ Scene parseScene(const Args& args) {
     return scene;
 }
 
-Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
-                 const AtlasOptions& atlasOptions) {
-    return prepareAtSize(loadMesh(spec), sizeMm, atlasMode, atlasOptions);
+Mesh atlasMesh(Mesh mesh, double sizeMm, const MeshOptions& o, AtlasStats* stats) {
+    noteIfOpen(mesh);
+    rotateMesh(mesh, meshRotation(o.rotateDegrees, o.zUp));
+    return atlasAtSize(std::move(mesh), sizeMm, o.atlasMode, o.atlas, stats);
+}
+
+Mesh prepareLoadedMesh(Mesh mesh, double sizeMm, const MeshOptions& o) {
+    mesh = atlasMesh(std::move(mesh), sizeMm, o);
+    ensureNormals(mesh, o.creaseDegrees);
+    return mesh;
+}
+
+Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o) {
+    return prepareLoadedMesh(loadMesh(spec), sizeMm, o);
 }
 
 void loadSceneMesh(Scene& scene, const Args& args) {
     scene.mesh = prepareMesh(args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
-                             atlasMode(args), atlasOptionsFromArgs(args));
+                             meshOptionsFromArgs(args));
 }
 
 Scene sceneFromArgs(const Args& args) {

@@ -19,6 +19,18 @@ struct SceneDefaults {
     std::string material = "skin1";
     float fovDegrees = 35;
     std::string atlasMode = "auto";
+    double creaseDegrees = kDefaultCreaseDegrees;
+    std::string meshUp = "y";
+};
+
+// How a loaded mesh is made ready: turned (--mesh-up, --rotate), its normals
+// (--crease) and its atlas (--atlas, --atlas-res).
+struct MeshOptions {
+    glm::dvec3 rotateDegrees{0.0};
+    bool zUp = false;
+    double creaseDegrees = SceneDefaults().creaseDegrees;
+    std::string atlasMode = SceneDefaults().atlasMode;
+    AtlasOptions atlas;
 };
 
 // Options every command that renders shares (render, compare-style tools, bench).
@@ -42,14 +54,29 @@ Camera defaultCamera(double sizeMm, float fovYDegrees);
 std::string atlasMode(const Args& args);
 AtlasOptions atlasOptionsFromArgs(const Args& args);
 
-// Every scene option parsed and checked (material, lights, camera, atlas
+// --rotate, --mesh-up, --crease, --atlas and --atlas-res, checked (those a
+// command does not take keep their defaults).
+MeshOptions meshOptionsFromArgs(const Args& args);
+// The options that give back `o` through meshOptionsFromArgs: --rotate,
+// --mesh-up and --crease where not the default, then --atlas (--atlas-res is
+// a render option: renderOptionArgs).
+std::vector<std::string> meshOptionArgs(const MeshOptions& o);
+
+// Every scene option parsed and checked (material, lights, camera, mesh
 // options), the mesh not yet loaded: option errors come before slow work.
 Scene parseScene(const Args& args);
-// Loads the mesh `spec` names (a file, builtin:NAME or a data mesh name),
-// normalises it to sizeMm and prepares it (normals, UVs by atlasMode).
-Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
-                 const AtlasOptions& atlasOptions);
-// prepareMesh of --mesh, --size-mm, --atlas and --atlas-res.
+// A loaded (and repaired) mesh with its atlas: a note when it is not closed,
+// then turned, normalised to sizeMm and given UVs by o.atlasMode (the atlas
+// cache key holds the turned positions).
+Mesh atlasMesh(Mesh mesh, double sizeMm, const MeshOptions& o, AtlasStats* stats = nullptr);
+// atlasMesh, then the normals the file lacks, split at o.creaseDegrees: after
+// the atlas, so that neither the atlas nor its cache key depends on the
+// crease (the copies share their vertex's UV).
+Mesh prepareLoadedMesh(Mesh mesh, double sizeMm, const MeshOptions& o);
+// Loads the mesh `spec` names (a file, builtin:NAME or a data mesh name) and
+// prepares it (prepareLoadedMesh).
+Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o);
+// prepareMesh of --mesh, --size-mm and the mesh options.
 void loadSceneMesh(Scene& scene, const Args& args);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);

@@ -148,5 +148,41 @@ TEST(SceneOptions, ValuesOutsideTheirRangeAreRefused) {
     EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
+TEST(SceneOptions, MeshOptionsParsePrintAndRefuse) {
+    const MeshOptions d = meshOptionsFromArgs(parse({}));
+    EXPECT_EQ(d.rotateDegrees, glm::dvec3(0.0));
+    EXPECT_FALSE(d.zUp);
+    EXPECT_EQ(d.creaseDegrees, 30.0);
+    EXPECT_EQ(meshOptionArgs(d), (std::vector<std::string>{"--atlas", "auto"}));
+
+    const std::vector<std::string> argv = {"--rotate", "90,-12.5,0.1", "--mesh-up", "z",
+                                           "--crease", "45",           "--atlas",   "build"};
+    const MeshOptions o = meshOptionsFromArgs(parse(argv));
+    EXPECT_EQ(o.rotateDegrees, glm::dvec3(90, -12.5, 0.1));
+    EXPECT_TRUE(o.zUp);
+    EXPECT_EQ(o.creaseDegrees, 45.0);
+    EXPECT_EQ(meshOptionArgs(o), argv);  // printed as given, and parsed back the same
+    EXPECT_EQ(meshOptionsFromArgs(parse({"--crease", "0"})).creaseDegrees, 0.0);
+    EXPECT_EQ(meshOptionsFromArgs(parse({"--crease", "180"})).creaseDegrees, 180.0);
+
+    // One line each, and parseScene (the options checked before the mesh) says it.
+    auto refused = [](const std::vector<std::string>& argv, const std::string& expect) {
+        try {
+            parseScene(parse(argv));
+            ADD_FAILURE() << expect;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), expect);
+        }
+    };
+    refused({"--crease", "nan"}, "--crease: 'nan' is not a finite number");
+    refused({"--crease", "-1"}, "--crease -1 is out of range [0, 180]");
+    refused({"--crease", "180.5"}, "--crease 180.5 is out of range [0, 180]");
+    refused({"--rotate", "90,0"}, "--rotate: '90,0' needs three numbers X,Y,Z");
+    refused({"--rotate", "0,inf,0"}, "--rotate: 'inf' is not a finite number");
+    refused({"--rotate", "0,0,361"}, "--rotate 0,0,361: each angle must be within [-360, 360]");
+    refused({"--mesh-up", "x"}, "--mesh-up 'x': expected y or z");
+    refused({"--up", "z"}, "--up z: --up is the camera's X,Y,Z; the mesh's up axis is --mesh-up z");
+}
+
 }  // namespace
 }  // namespace tsis

@@ -64,10 +64,10 @@ int runView(const std::vector<std::string>& argv) {
     s.camera = s.home = scene.camera;
     s.options = renderOptionsFromArgs(args);
     config.clDevice = args.getString("cl-device", "");
-    const std::string mode = atlasMode(args);
-    const AtlasOptions atlasOptions = atlasOptionsFromArgs(args);
-    config.loadMesh = [mode, atlasOptions](const std::string& spec, double sizeMm) {
-        return prepareMesh(spec, sizeMm, mode, atlasOptions);
+    // Every mesh the window opens is turned, its normals and its atlas made alike.
+    const MeshOptions meshOptions = meshOptionsFromArgs(args);
+    config.loadMesh = [meshOptions](const std::string& spec, double sizeMm) {
+        return prepareMesh(spec, sizeMm, meshOptions);
     };
     if (auto path = args.value("script")) config.script = readScript(*path);
     OutputSet outputs;
@@ -86,7 +86,7 @@ int runView(const std::vector<std::string>& argv) {
         const ViewState& v = result.state;
         std::vector<std::string> line = sceneArgs(sceneOf(v, nullptr), v.meshSpec, v.sizeMm);
         for (const std::string& a : renderOptionArgs(v.options)) line.push_back(a);
-        line.insert(line.end(), {"--atlas", mode});
+        for (const std::string& a : meshOptionArgs(meshOptions)) line.push_back(a);
         std::cout << "tsis render";
         for (const std::string& a : line) std::cout << ' ' << shellWord(a);
         std::cout << std::endl;

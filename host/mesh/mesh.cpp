@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "util/error.h"
@@ -13,6 +14,20 @@ namespace {
 
 glm::dvec3 dv(const glm::vec3& v) {
     return glm::dvec3(v);
+}
+
+// sin and cos of an angle in degrees; exact at multiples of 90° (a cube turned
+// by 90° stays axis-aligned bit for bit, and so does its atlas cache key).
+glm::dvec2 sinCosDegrees(double degrees) {
+    const double r = std::fmod(degrees, 360.0);  // exact
+    const double quarter = std::round(r / 90.0);
+    if (r == 90.0 * quarter) {
+        const int q = ((int(quarter) % 4) + 4) % 4;
+        constexpr double kSin[4] = {0, 1, 0, -1};
+        return {kSin[q], kSin[(q + 1) % 4]};
+    }
+    const double a = glm::radians(r);
+    return {std::sin(a), std::cos(a)};
 }
 
 }  // namespace
@@ -60,49 +75,33 @@ void normalizeMesh(Mesh& mesh, double sizeMm) {
     for (glm::vec3& p : mesh.positions) p = glm::vec3((dv(p) - centre) * scale);
 }
 
-void ensureNormals(Mesh& mesh) {
-    const size_t n = mesh.positions.size();
-    TSIS_CHECK(mesh.normals.empty() || mesh.normals.size() == n);
+glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp) {
+    // Columns are the images of the axes.
+    using V = glm::dvec3;
+    auto aboutX = [](glm::dvec2 sc) {
+        return glm::dmat3(V(1, 0, 0), V(0, sc.y, sc.x), V(0, -sc.x, sc.y));
+    };
+    auto aboutY = [](glm::dvec2 sc) {
+        return glm::dmat3(V(sc.y, 0, -sc.x), V(0, 1, 0), V(sc.x, 0, sc.y));
+    };
+    auto aboutZ = [](glm::dvec2 sc) {
+        return glm::dmat3(V(sc.y, sc.x, 0), V(-sc.x, sc.y, 0), V(0, 0, 1));
+    };
+    const glm::dmat3 up = zUp ? aboutX(sinCosDegrees(-90)) : glm::dmat3(1.0);
+    return aboutZ(sinCosDegrees(degrees.z)) * aboutY(sinCosDegrees(degrees.y)) *
+           aboutX(sinCosDegrees(degrees.x)) * up;
+}
 
-    // Keep the file's normals that are usable; the rest come from the faces.
-    std::vector<char> valid(n, 0);
-    size_t validCount = 0;
-    if (mesh.hasNormals()) {
-        for (size_t i = 0; i < n; ++i) {
-            const glm::dvec3 v = dv(mesh.normals[i]);
-            const double len = glm::length(v);
-            if (std::isfinite(len) && len > 1e-20) {
-                mesh.normals[i] = glm::vec3(v / len);
-                valid[i] = 1;
-                ++validCount;
-            }
-        }
-        if (validCount == n) return;
+void rotateMesh(Mesh& mesh, const glm::dmat3& rotation) {
+    if (rotation == glm::dmat3(1.0) || mesh.positions.empty()) return;
+    glm::dvec3 lo(dv(mesh.positions[0])), hi(lo);
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, dv(p));
+        hi = glm::max(hi, dv(p));
     }
-
-    // Area weighting: the unnormalised cross product is 2·area·n.
-    std::vector<glm::dvec3> sum(n, glm::dvec3(0.0));
-    std::vector<glm::dvec3> firstFace(n, glm::dvec3(0.0));
-    for (const glm::uvec3& tri : mesh.triangles) {
-        const glm::dvec3 a = dv(mesh.positions[tri.x]);
-        const glm::dvec3 c =
-            glm::cross(dv(mesh.positions[tri.y]) - a, dv(mesh.positions[tri.z]) - a);
-        for (int k = 0; k < 3; ++k) {
-            sum[tri[k]] += c;
-            if (firstFace[tri[k]] == glm::dvec3(0.0)) firstFace[tri[k]] = c;
-        }
-    }
-    mesh.normals.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        if (valid[i]) continue;
-        // Opposite faces can cancel (a sheet folded onto itself): fall back to
-        // one face's normal, then to +y for a vertex no triangle uses.
-        glm::dvec3 v = sum[i];
-        if (!(glm::length(v) > 1e-300)) v = firstFace[i];
-        const double len = glm::length(v);
-        mesh.normals[i] =
-            len > 1e-300 && std::isfinite(len) ? glm::vec3(v / len) : glm::vec3(0.0f, 1.0f, 0.0f);
-    }
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    for (glm::vec3& p : mesh.positions) p = glm::vec3(centre + rotation * (dv(p) - centre));
+    for (glm::vec3& n : mesh.normals) n = glm::vec3(rotation * dv(n));
 }
 
 }  // namespace tsis

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
@@ -31,7 +32,26 @@ struct Mesh {
 // diagonal equals sizeMm.
 void normalizeMesh(Mesh& mesh, double sizeMm);
 
-// Area-weighted face normals when the mesh has none.
-void ensureNormals(Mesh& mesh);
+// The turn of --mesh-up and --rotate (docs/design.md §2): with zUp the mesh's
+// +z becomes +y (−90° about X), then the angles in degrees about X, then Y,
+// then Z (right-handed), exact at multiples of 90°.
+glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp);
+// Turns positions and normals about the bounding-box centre; the identity
+// leaves the mesh untouched, bit for bit.
+void rotateMesh(Mesh& mesh, const glm::dmat3& rotation);
+
+// --crease: faces meeting at more than this are not smoothed across.
+// 60°: a cube's and fandisk's machined edges (3.6% of its edges) split, while
+// the coarse organic data meshes keep smooth normals (2–4% of their edges are
+// sharper; at 30° 15–18% were, cow's radiance moving 5.8% against smooth).
+constexpr double kDefaultCreaseDegrees = 60;
+
+// Normals for the vertices without a usable one (the file's are kept): the
+// area-weighted mean of the face normals of the vertex's smooth group. Faces
+// around a position (welded across seams, weld.h) are one group when joined
+// by edges whose faces differ by at most creaseDegrees (0: every triangle
+// flat; 180: one group a position). A vertex whose faces fall into several
+// groups is split: a copy (position, UV) per further group, appended.
+void ensureNormals(Mesh& mesh, double creaseDegrees = kDefaultCreaseDegrees);
 
 }  // namespace tsis

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "mesh/parse_util.h"
+#include "mesh/weld.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -201,6 +202,14 @@ RepairReport repairMesh(Mesh& mesh) {
                           plural(report.nonManifoldEdges, "edge", "edges"),
                           " (shared by more than two triangles); kept"));
     return report;
+}
+
+size_t noteIfOpen(const Mesh& mesh) {
+    const size_t open = boundaryEdges(mesh);
+    if (open)
+        note(mesh, concat("not closed (", open, " boundary ", plural(open, "edge", "edges"),
+                          "): the dipole assumes a closed solid"));
+    return open;
 }
 
 }  // namespace tsis

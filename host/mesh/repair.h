@@ -32,4 +32,9 @@ struct RepairReport {
 // triangle is left.
 RepairReport repairMesh(Mesh& mesh);
 
+// One note when the surface is not closed (boundary edges by welded position,
+// weld.h: seams do not count), as the dipole and the energy terms assume a
+// closed solid; returns the boundary edges. Once per mesh load (prepareMesh).
+size_t noteIfOpen(const Mesh& mesh);
+
 }  // namespace tsis

@@ -172,5 +172,18 @@ TEST(Repair, LoadersRepairOFFSoup) {
     EXPECT_THAT(notes, HasSubstr("mesh 'soup.off': removed 1 degenerate triangle"));
 }
 
+TEST(Repair, OpenMeshGetsOneNote) {
+    Mesh plane = loadMesh("builtin:plane");
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(noteIfOpen(plane), 128u);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(),
+              "tsis: note: mesh 'builtin:plane': not closed (128 boundary edges): the dipole "
+              "assumes a closed solid\n");
+    Mesh sphere = loadMesh("builtin:sphere");
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(noteIfOpen(sphere), 0u);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
 }  // namespace
 }  // namespace tsis

@@ -1,7 +1,8 @@
 // What a frame shows: a mesh, its material, the lights and the camera. Made
-// from the scene options (Options: mesh, size-mm, material, sigma-s, sigma-a,
-// eta, light, eye, target, up, fov, atlas, atlas-res) as `tsis render` makes
-// it, or from vertex and triangle arrays; then changed through plain structs.
+// from the scene options (Options: mesh, size-mm, rotate, mesh-up, crease,
+// material, sigma-s, sigma-a, eta, light, eye, target, up, fov, atlas,
+// atlas-res) as `tsis render` makes it, or from vertex and triangle arrays;
+// then changed through plain structs.
 #pragma once
 
 #include <array>
@@ -44,8 +45,9 @@ class Scene {
     // them are checked, not used). Loads the mesh: throws tsis::Error.
     explicit Scene(const Options& options = {});
     // The mesh from arrays: x,y,z per vertex and three indices per triangle
-    // (counter-clockwise seen from outside), centred and scaled to size-mm as
-    // a file is; the rest from `options` (its mesh is not used).
+    // (counter-clockwise seen from outside), turned, centred and scaled to
+    // size-mm and given normals as a file is; the rest from `options` (its
+    // mesh is not used).
     static Scene fromArrays(const std::vector<float>& vertices,
                             const std::vector<uint32_t>& triangles, const Options& options = {},
                             const std::string& name = "arrays");

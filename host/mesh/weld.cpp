@@ -1,0 +1,85 @@
+#include "mesh/weld.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/ext/vector_int3_sized.hpp>
+#include <glm/geometric.hpp>
+#include <unordered_map>
+#include <utility>
+
+namespace tsis {
+
+namespace {
+
+constexpr double kRelativeTolerance = 1e-6;
+
+bool finite(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+}  // namespace
+
+std::vector<uint32_t> weldPositions(const Mesh& mesh) {
+    const size_t n = mesh.positions.size();
+    std::vector<uint32_t> weld(n);
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh.positions)
+        if (finite(glm::dvec3(p))) {
+            lo = glm::min(lo, glm::dvec3(p));
+            hi = glm::max(hi, glm::dvec3(p));
+        }
+    const double diagonal = glm::length(hi - lo);
+    // Cells of the tolerance's size, counted from the box's corner: at most
+    // 1/kRelativeTolerance < 2²¹ a side, so three fit one 64-bit key exactly.
+    const double tol = diagonal > 0 && std::isfinite(diagonal) ? kRelativeTolerance * diagonal : 1;
+    auto cellKey = [](const glm::i64vec3& c) {
+        return (uint64_t(c.x) << 42) | (uint64_t(c.y) << 21) | uint64_t(c.z);
+    };
+    std::unordered_map<uint64_t, std::vector<uint32_t>> cells;  // representatives
+    for (size_t i = 0; i < n; ++i) {
+        const glm::dvec3 p(mesh.positions[i]);
+        weld[i] = uint32_t(i);
+        if (!finite(p)) continue;
+        const glm::i64vec3 cell(glm::floor((p - lo) / tol));
+        uint32_t found = UINT32_MAX;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz) {
+                    const glm::i64vec3 c = cell + glm::i64vec3(dx, dy, dz);
+                    if (c.x < 0 || c.y < 0 || c.z < 0) continue;
+                    const auto it = cells.find(cellKey(c));
+                    if (it == cells.end()) continue;
+                    for (uint32_t r : it->second)
+                        if (r < found && glm::length(glm::dvec3(mesh.positions[r]) - p) <= tol)
+                            found = r;
+                }
+        if (found != UINT32_MAX)
+            weld[i] = found;
+        else
+            cells[cellKey(cell)].push_back(uint32_t(i));
+    }
+    return weld;
+}
+
+size_t boundaryEdges(const Mesh& mesh) {
+    const std::vector<uint32_t> weld = weldPositions(mesh);
+    std::vector<std::pair<uint32_t, uint32_t>> edges;
+    edges.reserve(3 * mesh.triangles.size());
+    for (const glm::uvec3& tri : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = weld[tri[k]], b = weld[tri[(k + 1) % 3]];
+            if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    size_t boundary = 0;
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i + 1;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        boundary += j - i == 1;
+        i = j;
+    }
+    return boundary;
+}
+
+}  // namespace tsis

@@ -1,0 +1,22 @@
+// Vertices that are one point of the surface: seams (UV charts, a sphere's
+// date line, crease splits) duplicate vertices, not always bit for bit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/mesh.h"
+
+namespace tsis {
+
+// Per vertex, the smallest index of the vertices within 1e-6 of the
+// bounding-box diagonal of it (greedy in index order: a vertex joins the first
+// earlier representative close enough). A non-finite position is its own.
+std::vector<uint32_t> weldPositions(const Mesh& mesh);
+
+// Undirected edges between welded positions used by exactly one triangle: 0
+// for a closed surface, whatever its seams.
+size_t boundaryEdges(const Mesh& mesh);
+
+}  // namespace tsis
