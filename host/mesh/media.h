@@ -10,11 +10,6 @@
 
 namespace tsis {
 
-// Vertices welded by position within `tolerance` (UV seams and poles duplicate
-// them, not always bit for bit): the welded id of each vertex, 0, 1, … in
-// order of first appearance.
-std::vector<int> weldVertices(const Mesh& mesh, double tolerance);
-
 struct Media {
     uint32_t count = 0;
     std::vector<uint32_t> ofVertex;  // the medium of each vertex (and so of its triangles)

@@ -18,21 +18,34 @@ bool finite(const glm::dvec3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
-}  // namespace
-
-std::vector<uint32_t> weldPositions(const Mesh& mesh) {
-    const size_t n = mesh.positions.size();
-    std::vector<uint32_t> weld(n);
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+void finiteBounds(const Mesh& mesh, glm::dvec3& lo, glm::dvec3& hi) {
+    lo = glm::dvec3(INFINITY);
+    hi = glm::dvec3(-INFINITY);
     for (const glm::vec3& p : mesh.positions)
         if (finite(glm::dvec3(p))) {
             lo = glm::min(lo, glm::dvec3(p));
             hi = glm::max(hi, glm::dvec3(p));
         }
+}
+
+}  // namespace
+
+std::vector<uint32_t> weldPositions(const Mesh& mesh) {
+    glm::dvec3 lo, hi;
+    finiteBounds(mesh, lo, hi);
     const double diagonal = glm::length(hi - lo);
-    // Cells of the tolerance's size, counted from the box's corner: at most
-    // 1/kRelativeTolerance < 2²¹ a side, so three fit one 64-bit key exactly.
-    const double tol = diagonal > 0 && std::isfinite(diagonal) ? kRelativeTolerance * diagonal : 1;
+    return weldPositions(
+        mesh, diagonal > 0 && std::isfinite(diagonal) ? kRelativeTolerance * diagonal : 1);
+}
+
+std::vector<uint32_t> weldPositions(const Mesh& mesh, double tolerance) {
+    const size_t n = mesh.positions.size();
+    std::vector<uint32_t> weld(n);
+    glm::dvec3 lo, hi;
+    finiteBounds(mesh, lo, hi);
+    // Cells of the tolerance's size, counted from the box's corner: under 2²¹
+    // a side, so three fit one 64-bit key exactly.
+    const double tol = std::max(tolerance, glm::length(hi - lo) * 1e-6);
     auto cellKey = [](const glm::i64vec3& c) {
         return (uint64_t(c.x) << 42) | (uint64_t(c.y) << 21) | uint64_t(c.z);
     };

@@ -14,6 +14,9 @@ namespace tsis {
 // bounding-box diagonal of it (greedy in index order: a vertex joins the first
 // earlier representative close enough). A non-finite position is its own.
 std::vector<uint32_t> weldPositions(const Mesh& mesh);
+// The same within an absolute `tolerance` (mm), at most 1e-6 of the diagonal
+// times 2^20 cells a side.
+std::vector<uint32_t> weldPositions(const Mesh& mesh, double tolerance);
 
 // Undirected edges between welded positions used by exactly one triangle: 0
 // for a closed surface, whatever its seams.

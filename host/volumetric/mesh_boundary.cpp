@@ -8,7 +8,7 @@
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
 
-#include "mesh/media.h"
+#include "mesh/weld.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -70,9 +70,9 @@ MeshBoundary::MeshBoundary(const Mesh& mesh) : scene_(std::make_unique<Scene>())
 MeshBoundary::~MeshBoundary() = default;
 
 void MeshBoundary::buildNeighbours() {
-    const std::vector<int> welded = weldVertices(mesh_, epsilon_);
+    const std::vector<uint32_t> welded = weldPositions(mesh_, epsilon_);
     const int vertexCount =
-        welded.empty() ? 0 : *std::max_element(welded.begin(), welded.end()) + 1;
+        welded.empty() ? 0 : static_cast<int>(*std::max_element(welded.begin(), welded.end())) + 1;
     // Facets around each welded vertex (CSR).
     std::vector<int> start(static_cast<size_t>(vertexCount) + 1, 0), around;
     for (const glm::uvec3& t : mesh_.triangles)
