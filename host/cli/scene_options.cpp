@@ -11,6 +11,7 @@
 #include "physics/material.h"
 #include "render/method.h"
 #include "render/render_params.h"
+#include "scene/from_file.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -48,6 +49,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
             {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
             {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
             {"fov", true, false, "DEG  vertical field of view" + byDefault(sd.fovDegrees)},
+            {"camera", true, false,
+             "N  the mesh file's camera N, from 0 (glTF; default: its first, when --eye, "
+             "--target and --up are not given)"},
             {"atlas", true, false,
              "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or "
              "build" +
@@ -164,6 +168,9 @@ Scene parseScene(const Args& args) {
     if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
     if (auto v = args.value("target")) scene.camera.target = glm::vec3(parseVec3("--target", *v));
     if (auto v = args.value("up")) scene.camera.up = glm::vec3(parseVec3("--up", *v));
+    if (args.has("camera") && (args.has("eye") || args.has("target") || args.has("up")))
+        fail("--camera picks the mesh file's camera: not with --eye, --target or --up");
+    args.getInt("camera", 0, 0, 1 << 20);
     glm::vec3 forward = scene.camera.target - scene.camera.eye;
     if (glm::length(forward) == 0.0f) fail("--eye and --target are the same point");
     if (glm::length(glm::cross(forward, scene.camera.up)) < 1e-6f * glm::length(forward))
@@ -171,17 +178,41 @@ Scene parseScene(const Args& args) {
     return scene;
 }
 
-Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
-                 const AtlasOptions& atlasOptions) {
-    Mesh mesh = loadMesh(spec);
-    normalizeMesh(mesh, sizeMm);
+namespace {
+
+// The mesh at sizeMm; with `view`, its file's cameras and lights moved with it.
+Mesh loadNormalized(const std::string& spec, double sizeMm, FileView* view) {
+    Mesh mesh = loadMesh(spec, view);
+    const Normalization n = normalizeMesh(mesh, sizeMm);
+    if (view) normalizeView(*view, n);
+    return mesh;
+}
+
+Mesh withAtlas(Mesh mesh, const std::string& atlasMode, const AtlasOptions& atlasOptions) {
     ensureNormals(mesh);
     return ensureAtlas(mesh, atlasMode, atlasOptions);
 }
 
+}  // namespace
+
+Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
+                 const AtlasOptions& atlasOptions) {
+    return withAtlas(loadNormalized(spec, sizeMm, nullptr), atlasMode, atlasOptions);
+}
+
 void loadSceneMesh(Scene& scene, const Args& args) {
-    scene.mesh = prepareMesh(args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
-                             atlasMode(args), atlasOptionsFromArgs(args));
+    const double size = sizeMmFromArgs(args);
+    FileView view;
+    Mesh mesh = loadNormalized(args.getString("mesh", SceneDefaults().mesh), size, &view);
+    // The command line's camera and lights win, per kind. Before the atlas: a
+    // wrong --camera costs no waiting.
+    FileViewUse use;
+    use.camera = !args.has("eye") && !args.has("target") && !args.has("up");
+    if (args.has("camera")) use.cameraIndex = args.getInt("camera", 0, 0, 1 << 20);
+    use.fov = !args.has("fov");
+    use.lights = !args.has("light");
+    useFileView(scene, view, use, size, mesh.name);
+    scene.mesh = withAtlas(std::move(mesh), atlasMode(args), atlasOptionsFromArgs(args));
 }
 
 Scene sceneFromArgs(const Args& args) {

@@ -49,7 +49,9 @@ Scene parseScene(const Args& args);
 // normalises it to sizeMm and prepares it (normals, UVs by atlasMode).
 Mesh prepareMesh(const std::string& spec, double sizeMm, const std::string& atlasMode,
                  const AtlasOptions& atlasOptions);
-// prepareMesh of --mesh, --size-mm, --atlas and --atlas-res.
+// prepareMesh of --mesh, --size-mm, --atlas and --atlas-res; a glTF's camera
+// (--camera N) and lights replace the scene's where the command line gives
+// none, per kind (scene/from_file.h).
 void loadSceneMesh(Scene& scene, const Args& args);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);

@@ -42,7 +42,7 @@ double Mesh::enclosedVolume() const {
     return std::abs(sum) / 6.0;
 }
 
-void normalizeMesh(Mesh& mesh, double sizeMm) {
+Normalization normalizeMesh(Mesh& mesh, double sizeMm) {
     if (!(sizeMm > 0.0) || !std::isfinite(sizeMm))
         fail("mesh '", mesh.name, "': size must be a positive number of mm, got ", sizeMm);
     if (mesh.positions.empty()) fail("mesh '", mesh.name, "': no vertices to normalise");
@@ -58,6 +58,7 @@ void normalizeMesh(Mesh& mesh, double sizeMm) {
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const double scale = sizeMm / diagonal;
     for (glm::vec3& p : mesh.positions) p = glm::vec3((dv(p) - centre) * scale);
+    return {centre, scale};
 }
 
 void ensureNormals(Mesh& mesh) {

@@ -27,9 +27,17 @@ struct Mesh {
     double triangleUVArea(size_t t) const;  // unsigned
 };
 
+// What normalizeMesh did: p ↦ (p − centre) · scale. A file's cameras and
+// lights go through it too (file_view.h).
+struct Normalization {
+    glm::dvec3 centre{0.0};
+    double scale = 1.0;  // mm per file unit
+    glm::dvec3 apply(const glm::dvec3& p) const { return (p - centre) * scale; }
+};
+
 // docs/design.md §2: centre on the bounding-box centre and scale so the bounding-box
 // diagonal equals sizeMm.
-void normalizeMesh(Mesh& mesh, double sizeMm);
+Normalization normalizeMesh(Mesh& mesh, double sizeMm);
 
 // Area-weighted face normals when the mesh has none.
 void ensureNormals(Mesh& mesh);
