@@ -63,7 +63,7 @@ Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<ui
     s.impl_->scene = parseScene(args);
     s.impl_->sizeMm = sizeMmFromArgs(args);
     Mesh mesh;
-    mesh.name = name;
+    mesh.name = name.empty() ? "arrays" : name;  // its notes name it
     for (size_t i = 0; i < vertices.size(); i += 3)
         mesh.positions.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
     for (size_t i = 0; i < triangles.size(); i += 3)

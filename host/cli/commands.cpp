@@ -112,6 +112,9 @@ int runRender(const std::vector<std::string>& argv) {
         Json j = frame.stats.toJson();
         j["mesh"] = scene.mesh.name;
         j["material"] = scene.material.name;
+        // The scene as options: a glTF's camera and lights as they were used.
+        j["scene_args"] =
+            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args));
         j["lavg"] = frame.lavg;
         outputs.write(*statsPath,
                       [&](const std::filesystem::path& f) { writeText(f, dumpJson(j) + "\n"); });

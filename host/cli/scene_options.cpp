@@ -12,6 +12,7 @@
 #include "physics/material.h"
 #include "render/method.h"
 #include "render/render_params.h"
+#include "scene/from_file.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -58,6 +59,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
              "DEG  normals the mesh lacks are not smoothed across edges sharper than this (0: "
              "flat triangles, 180: smooth everywhere)" +
                  byDefault(sd.creaseDegrees)},
+            {"camera", true, false,
+             "N  the mesh file's camera N, from 0 (glTF; default: its first, when --eye, "
+             "--target and --up are not given)"},
             {"atlas", true, false,
              "MODE  auto (the mesh's UVs when valid, else build), file (require valid UVs) or "
              "build" +
@@ -207,6 +211,9 @@ Scene parseScene(const Args& args) {
             fail("--up ", *v, ": --up is the camera's X,Y,Z; the mesh's up axis is --mesh-up ", *v);
         scene.camera.up = glm::vec3(parseVec3("--up", *v));
     }
+    if (args.has("camera") && (args.has("eye") || args.has("target") || args.has("up")))
+        fail("--camera picks the mesh file's camera: not with --eye, --target or --up");
+    args.getInt("camera", 0, 0, 1 << 20);
     glm::vec3 forward = scene.camera.target - scene.camera.eye;
     if (glm::length(forward) == 0.0f) fail("--eye and --target are the same point");
     if (glm::length(glm::cross(forward, scene.camera.up)) < 1e-6f * glm::length(forward))
@@ -214,16 +221,36 @@ Scene parseScene(const Args& args) {
     return scene;
 }
 
-Mesh atlasMesh(Mesh mesh, double sizeMm, const MeshOptions& o, AtlasStats* stats) {
+namespace {
+
+// A loaded mesh turned by --mesh-up and --rotate (with `view`, its file's
+// cameras and lights alike), after a note when it is not closed.
+void turn(Mesh& mesh, FileView* view, const MeshOptions& o) {
     noteIfOpen(mesh);
-    rotateMesh(mesh, meshRotation(o.rotateDegrees, o.zUp));
+    const glm::dmat3 rotation = meshRotation(o.rotateDegrees, o.zUp);
+    const glm::dvec3 centre = rotateMesh(mesh, rotation);
+    if (view) rotateView(*view, rotation, centre);
+}
+
+// A turned mesh at sizeMm with its atlas, then the normals it lacks, split at
+// o.creaseDegrees: after the atlas, so that neither the atlas nor its cache
+// key depends on the crease (the copies share their vertex's UV).
+Mesh finish(Mesh turned, double sizeMm, const MeshOptions& o) {
+    Mesh mesh = atlasAtSize(std::move(turned), sizeMm, o.atlasMode, o.atlas);
+    ensureNormals(mesh, o.creaseDegrees);
+    return mesh;
+}
+
+}  // namespace
+
+Mesh atlasMesh(Mesh mesh, double sizeMm, const MeshOptions& o, AtlasStats* stats) {
+    turn(mesh, nullptr, o);
     return atlasAtSize(std::move(mesh), sizeMm, o.atlasMode, o.atlas, stats);
 }
 
 Mesh prepareLoadedMesh(Mesh mesh, double sizeMm, const MeshOptions& o) {
-    mesh = atlasMesh(std::move(mesh), sizeMm, o);
-    ensureNormals(mesh, o.creaseDegrees);
-    return mesh;
+    turn(mesh, nullptr, o);
+    return finish(std::move(mesh), sizeMm, o);
 }
 
 Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o) {
@@ -231,8 +258,21 @@ Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o) {
 }
 
 void loadSceneMesh(Scene& scene, const Args& args) {
-    scene.mesh = prepareMesh(args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
-                             meshOptionsFromArgs(args));
+    const double size = sizeMmFromArgs(args);
+    const MeshOptions o = meshOptionsFromArgs(args);
+    FileView view;
+    Mesh mesh = loadMesh(args.getString("mesh", SceneDefaults().mesh), &view);
+    turn(mesh, &view, o);
+    normalizeView(view, normalizationOf(mesh, size));
+    // The command line's camera and lights win, per kind. Before the atlas: a
+    // wrong --camera costs no waiting.
+    FileViewUse use;
+    use.camera = !args.has("eye") && !args.has("target") && !args.has("up");
+    if (args.has("camera")) use.cameraIndex = args.getInt("camera", 0, 0, 1 << 20);
+    use.fov = !args.has("fov");
+    use.lights = !args.has("light");
+    useFileView(scene, view, use, size, mesh.name);
+    scene.mesh = finish(std::move(mesh), size, o);
 }
 
 Scene sceneFromArgs(const Args& args) {

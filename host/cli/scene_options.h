@@ -77,6 +77,9 @@ Mesh prepareLoadedMesh(Mesh mesh, double sizeMm, const MeshOptions& o);
 // prepares it (prepareLoadedMesh).
 Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o);
 // prepareMesh of --mesh, --size-mm and the mesh options.
+// prepareMesh of --mesh, --size-mm and the mesh options; a glTF's camera
+// (--camera N) and lights replace the scene's where the command line gives
+// none, per kind (scene/from_file.h), turned and scaled with the mesh.
 void loadSceneMesh(Scene& scene, const Args& args);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);

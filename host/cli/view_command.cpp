@@ -55,6 +55,8 @@ int runView(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
     // Every option and the script first, then the window, GL, CL and the mesh.
     const Scene scene = parseScene(args);
+    if (args.has("camera"))
+        fail("--camera: tsis view starts from its own camera (tsis render reads the file's)");
     ViewerConfig config;
     ViewState& s = config.state;
     s.meshSpec = args.getString("mesh", "builtin:default");

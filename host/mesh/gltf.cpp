@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -202,20 +203,25 @@ std::vector<uint32_t> readIndices(const tinygltf::Model& m, int index, const std
     return out;
 }
 
-glm::mat4 localTransform(const tinygltf::Node& n) {
+// The node's matrix or T·R·S; float for the mesh, double for cameras and
+// lights (their positions are compared with values printed exactly).
+template <typename T>
+glm::mat<4, 4, T> localTransform(const tinygltf::Node& n) {
+    using M = glm::mat<4, 4, T>;
+    using V = glm::vec<3, T>;
     if (n.matrix.size() == 16) {
-        glm::mat4 m(1.0f);
-        for (int k = 0; k < 16; ++k) glm::value_ptr(m)[k] = static_cast<float>(n.matrix[size_t(k)]);
+        M m(1);
+        for (int k = 0; k < 16; ++k) glm::value_ptr(m)[k] = static_cast<T>(n.matrix[size_t(k)]);
         return m;  // column-major in both
     }
-    glm::mat4 m(1.0f);
+    M m(1);
     if (n.translation.size() == 3)
-        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+        m = glm::translate(m, V(n.translation[0], n.translation[1], n.translation[2]));
     if (n.rotation.size() == 4)
         m *= glm::mat4_cast(
-            glm::quat(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
-                      static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2])));
-    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+            glm::qua<T>(static_cast<T>(n.rotation[3]), static_cast<T>(n.rotation[0]),
+                        static_cast<T>(n.rotation[1]), static_cast<T>(n.rotation[2])));
+    if (n.scale.size() == 3) m = glm::scale(m, V(n.scale[0], n.scale[1], n.scale[2]));
     return m;
 }
 
@@ -311,7 +317,7 @@ struct Builder {
     // Nodes checked by checkForest: valid indices, a tree, depth bounded.
     void node(int index, const glm::mat4& parent) {
         const tinygltf::Node& n = model.nodes[static_cast<size_t>(index)];
-        const glm::mat4 world = parent * localTransform(n);
+        const glm::mat4 world = parent * localTransform<float>(n);
         if (n.mesh >= 0) {
             if (n.mesh >= static_cast<int>(model.meshes.size()))
                 failIn(name, "mesh ", n.mesh, " does not exist");
@@ -381,9 +387,176 @@ struct Builder {
     }
 };
 
+// The default scene's camera and light nodes (KHR_lights_punctual), in the
+// order of the walk. Nodes checked by checkForest.
+struct ViewCollector {
+    const tinygltf::Model& model;
+    const std::string& name;
+    FileView view;
+    size_t orthographic = 0, degenerate = 0;
+
+    void node(int index, const glm::dmat4& parent) {
+        const tinygltf::Node& n = model.nodes[static_cast<size_t>(index)];
+        const glm::dmat4 world = parent * localTransform<double>(n);
+        if (n.camera >= 0) camera(n, world);
+        if (const int l = lightIndex(n, index); l >= 0) light(n, l, world);
+        for (int child : n.children) node(child, world);
+    }
+
+    // The node's KHR_lights_punctual light, or −1.
+    int lightIndex(const tinygltf::Node& n, int index) const {
+        const auto it = n.extensions.find("KHR_lights_punctual");
+        if (it == n.extensions.end() || !it->second.IsObject() || !it->second.Has("light"))
+            return -1;
+        const tinygltf::Value& v = it->second.Get("light");
+        const int l = v.IsInt() ? v.GetNumberAsInt() : -1;
+        if (l < 0 || l >= static_cast<int>(model.lights.size()))
+            failIn(name, "node ", index, ": KHR_lights_punctual light ",
+                   v.IsNumber() ? concat(v.GetNumberAsDouble()) : "(not a number)",
+                   " does not exist");
+        return l;
+    }
+
+    // The node's −z in the world, and its +y made orthogonal to it; false
+    // when the transform flattens them.
+    static bool axes(const glm::dmat4& world, glm::dvec3& forward, glm::dvec3& up) {
+        const glm::dmat3 r(world);
+        forward = r * glm::dvec3(0, 0, -1);
+        up = r * glm::dvec3(0, 1, 0);
+        const double f = glm::length(forward);
+        if (!(f > 0) || !std::isfinite(f)) return false;
+        forward /= f;
+        up -= forward * glm::dot(up, forward);
+        const double u = glm::length(up);
+        if (!(u > 1e-12 * glm::length(r * glm::dvec3(0, 1, 0))) || !std::isfinite(u)) return false;
+        up /= u;
+        return true;
+    }
+
+    void camera(const tinygltf::Node& n, const glm::dmat4& world) {
+        if (n.camera >= static_cast<int>(model.cameras.size()))
+            failIn(name, "camera ", n.camera, " does not exist");
+        const tinygltf::Camera& c = model.cameras[static_cast<size_t>(n.camera)];
+        if (c.type != "perspective") {
+            ++orthographic;
+            return;
+        }
+        FileCamera fc;
+        fc.name = !c.name.empty() ? c.name : n.name;
+        fc.eye = glm::dvec3(world[3]);
+        fc.yfovRadians = c.perspective.yfov;
+        if (!axes(world, fc.forward, fc.up) || !std::isfinite(fc.eye.x + fc.eye.y + fc.eye.z)) {
+            ++degenerate;
+            return;
+        }
+        view.cameras.push_back(fc);
+    }
+
+    void light(const tinygltf::Node& n, int index, const glm::dmat4& world) {
+        const tinygltf::Light& l = model.lights[static_cast<size_t>(index)];
+        FileLight fl;
+        fl.name = !l.name.empty() ? l.name : n.name;
+        if (l.type == "point")
+            fl.type = FileLight::Type::Point;
+        else if (l.type == "directional")
+            fl.type = FileLight::Type::Directional;
+        else if (l.type == "spot")
+            fl.type = FileLight::Type::Spot;
+        else
+            failIn(name, "light ", index, ": unknown type '", l.type,
+                   "' (point, directional or spot)");
+        if (!l.color.empty()) {
+            if (l.color.size() != 3) failIn(name, "light ", index, ": color needs 3 components");
+            fl.color = glm::dvec3(l.color[0], l.color[1], l.color[2]);
+        }
+        fl.intensity = l.intensity;
+        fl.range = l.range;
+        if (!(glm::min(fl.color.x, glm::min(fl.color.y, fl.color.z)) >= 0) ||
+            !std::isfinite(fl.color.x + fl.color.y + fl.color.z) || !(fl.intensity >= 0) ||
+            !std::isfinite(fl.intensity))
+            failIn(name, "light ", index, ": color and intensity must be finite and >= 0");
+        fl.position = glm::dvec3(world[3]);
+        // Scale does not matter to lights; only a directional one needs its axes.
+        glm::dvec3 up;
+        const bool oriented = axes(world, fl.direction, up);
+        if ((!oriented && fl.type == FileLight::Type::Directional) ||
+            !std::isfinite(fl.position.x + fl.position.y + fl.position.z)) {
+            ++degenerate;
+            return;
+        }
+        view.lights.push_back(fl);
+    }
+};
+
+// "'a', 'b', 'c' and 2 more": names (or #index when unnamed), at most 3.
+std::string nameList(const std::vector<std::string>& names) {
+    std::string s;
+    for (size_t i = 0; i < names.size() && i < 3; ++i)
+        s += concat(i ? ", " : "", "'", names[i].empty() ? concat("#", i) : names[i], "'");
+    if (names.size() > 3) s += concat(" and ", names.size() - 3, " more");
+    return s;
+}
+
+// One note per kind of thing the file has and tsis does not use.
+void noteIgnoredParts(const tinygltf::Model& model, int scene, const std::string& name) {
+    auto count = [&](size_t n, const char* one, const char* many, const char* why) {
+        if (n) note(name, concat(n, " ", plural(n, one, many), " ignored (", why, ")"));
+    };
+    if (!model.materials.empty()) {
+        std::vector<std::string> names;
+        for (const tinygltf::Material& m : model.materials) names.push_back(m.name);
+        const size_t n = names.size();
+        note(name, concat(n == 1 ? "material " : concat(n, " materials "), nameList(names),
+                          " ignored (the material is --material's)"));
+    }
+    if (!model.textures.empty() || !model.images.empty())
+        note(name, concat(model.textures.size(), " ",
+                          plural(model.textures.size(), "texture", "textures"), " and ",
+                          model.images.size(), " ", plural(model.images.size(), "image", "images"),
+                          " ignored (not read)"));
+    count(model.animations.size(), "animation", "animations", "the scene is drawn unanimated");
+    count(model.skins.size(), "skin", "skins", "skinned meshes are drawn unskinned");
+    size_t morphed = 0;
+    std::vector<std::string> attributes;
+    for (const tinygltf::Mesh& m : model.meshes)
+        for (const tinygltf::Primitive& p : m.primitives) {
+            morphed += !p.targets.empty();
+            for (const auto& [key, accessor] : p.attributes)
+                if (key != "POSITION" && key != "NORMAL" && key != "TEXCOORD_0" &&
+                    std::find(attributes.begin(), attributes.end(), key) == attributes.end())
+                    attributes.push_back(key);
+        }
+    if (morphed)
+        note(name,
+             concat("morph targets of ", morphed, " ", plural(morphed, "primitive", "primitives"),
+                    " ignored (the base shape is drawn)"));
+    if (!attributes.empty()) {
+        std::sort(attributes.begin(), attributes.end());
+        std::string list;
+        for (const std::string& a : attributes) list += (list.empty() ? "" : ", ") + a;
+        note(name, "vertex attributes ignored: " + list + " (read: POSITION, NORMAL, TEXCOORD_0)");
+    }
+    std::vector<std::string> extensions;
+    for (const std::vector<std::string>* list : {&model.extensionsUsed, &model.extensionsRequired})
+        for (const std::string& e : *list)
+            if (e != "KHR_lights_punctual" &&
+                std::find(extensions.begin(), extensions.end(), e) == extensions.end())
+                extensions.push_back(e);
+    if (!extensions.empty()) {
+        std::string list;
+        for (const std::string& e : extensions) list += (list.empty() ? "" : ", ") + e;
+        note(name, "extensions ignored: " + list);
+    }
+    if (model.scenes.size() > 1)
+        note(name, concat(model.scenes.size() - 1, " other ",
+                          plural(model.scenes.size() - 1, "scene", "scenes"),
+                          " ignored (the default scene, ", scene, ", is drawn)"));
+}
+
 }  // namespace
 
-Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder) {
+Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder,
+               FileView* view) {
     if (bytes.empty()) failIn(name, "empty file");
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
@@ -419,6 +592,7 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
     }
     Builder b{model, name, {}, {}, {}};
     b.mesh.name = name;  // repair's notes name the file
+    ViewCollector views{model, name, {}};
     const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
     if (scene < static_cast<int>(model.scenes.size())) {
         const std::vector<int>& roots = model.scenes[static_cast<size_t>(scene)].nodes;
@@ -427,6 +601,7 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
             meshUses.push_back(model.nodes[static_cast<size_t>(n)].mesh);
         checkInstancedSize(model, meshUses, name);
         for (int n : roots) b.node(n, glm::mat4(1.0f));
+        for (int n : roots) views.node(n, glm::dmat4(1.0));
     } else {
         // No scene: every mesh once, untransformed.
         std::vector<int> meshUses(model.meshes.size());
@@ -440,6 +615,23 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
         note(name, std::to_string(b.skippedPrimitives) + " non-triangle " +
                        plural(b.skippedPrimitives, "primitive", "primitives") + " skipped");
     if (b.mesh.triangles.empty()) failIn(name, "no triangles");
+    noteIgnoredParts(model, scene, name);
+    const size_t cameras = views.view.cameras.size(), lights = views.view.lights.size();
+    if (views.orthographic)
+        note(name, concat(views.orthographic, " orthographic ",
+                          plural(views.orthographic, "camera", "cameras"),
+                          " ignored (tsis' camera is a pinhole)"));
+    if (views.degenerate)
+        note(name, concat(views.degenerate, " ",
+                          plural(views.degenerate, "camera or light", "cameras or lights"),
+                          " ignored (their node's transform is degenerate)"));
+    if (view) {
+        *view = std::move(views.view);
+    } else if (cameras || lights) {
+        note(name,
+             concat(cameras, " ", plural(cameras, "camera", "cameras"), " and ", lights, " ",
+                    plural(lights, "light", "lights"), " ignored (not read by this command)"));
+    }
     if (b.allNormals) b.mesh.normals = std::move(b.normals);
     if (b.allUVs) b.mesh.uvs = std::move(b.uvs);
     repairMesh(b.mesh);

@@ -1,3 +1,4 @@
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "mesh/mesh_io.h"
+#include "support/error_of.h"
 #include "support/scoped_env.h"
 #include "util/error.h"
 
@@ -159,8 +161,8 @@ TEST(GLTF, BadFilesAreOneLineErrors) {
 }
 
 // The quad's buffer and accessors with the given scene, nodes and meshes.
-std::string sceneJson(const std::string& roots, const std::string& nodes,
-                      const std::string& meshes) {
+std::string sceneJson(const std::string& roots, const std::string& nodes, const std::string& meshes,
+                      const std::string& extra = "") {
     return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [)" + roots +
            R"(]}], "nodes": [)" + nodes + R"(], "meshes": [)" + meshes +
            R"(], "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,)" +
@@ -169,7 +171,8 @@ std::string sceneJson(const std::string& roots, const std::string& nodes,
                       {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
                      "min": [0, 0, 0], "max": [1, 1, 0]},
-                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}])" +
+           extra + "}";
 }
 
 std::string joined(int n, const std::function<std::string(int)>& item) {
@@ -276,6 +279,140 @@ TEST(GLTF, ExternalFilesOutsideTheFolderOrNotRegularAreRefused) {
     fs::rename(dir / "quad.bin", dir / "sub" / "quad.bin");
     EXPECT_EQ(load("quad.bin"), "");
     fs::remove_all(dir);
+}
+
+const char* kQuadMesh = R"({"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]})";
+
+// The quad, a camera under a moved and scaled parent, an orthographic camera
+// and one light of each KHR_lights_punctual type.
+std::string viewFile() {
+    return sceneJson("0, 1, 3, 4, 5, 6",
+                     R"({"mesh": 0},
+                        {"children": [2], "translation": [1, 2, 3], "scale": [2, 2, 2]},
+                        {"camera": 0, "translation": [0, 0, 1],
+                         "rotation": [0, 0.70710678118654757, 0, 0.70710678118654757]},
+                        {"camera": 1},
+                        {"name": "Lamp", "translation": [4, 5, 6],
+                         "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                        {"rotation": [-0.70710678118654757, 0, 0, 0.70710678118654757],
+                         "extensions": {"KHR_lights_punctual": {"light": 1}}},
+                        {"extensions": {"KHR_lights_punctual": {"light": 2}}})",
+                     kQuadMesh,
+                     R"(, "cameras": [
+                          {"type": "perspective", "name": "Front",
+                           "perspective": {"yfov": 0.5, "znear": 0.1, "aspectRatio": 1.5}},
+                          {"type": "orthographic",
+                           "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}],
+                        "extensionsUsed": ["KHR_lights_punctual"],
+                        "extensions": {"KHR_lights_punctual": {"lights": [
+                          {"type": "point", "color": [1, 0.5, 0.25], "intensity": 20, "range": 5},
+                          {"type": "directional", "name": "Sun", "intensity": 3},
+                          {"type": "spot", "spot": {"outerConeAngle": 0.5}}]}})");
+}
+
+TEST(GLTF, CamerasAndLightsOfTheDefaultScene) {
+    FileView view;
+    testing::internal::CaptureStderr();
+    parseGLTF(viewFile(), "view.gltf", "", &view);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(notes,
+              "tsis: note: mesh 'view.gltf': 1 orthographic camera ignored (tsis' camera is a "
+              "pinhole)\n");
+    ASSERT_EQ(view.cameras.size(), 1u);
+    const FileCamera& c = view.cameras[0];
+    EXPECT_EQ(c.name, "Front");
+    // The child's translation scaled by its parent, then moved.
+    EXPECT_NEAR(glm::length(c.eye - glm::dvec3(1, 2, 5)), 0.0, 1e-12);
+    // 90° about y: −z becomes −x.
+    EXPECT_NEAR(glm::length(c.forward - glm::dvec3(-1, 0, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(c.up - glm::dvec3(0, 1, 0)), 0.0, 1e-12);
+    EXPECT_EQ(c.yfovRadians, 0.5);
+
+    ASSERT_EQ(view.lights.size(), 3u);
+    const FileLight& point = view.lights[0];
+    EXPECT_EQ(point.type, FileLight::Type::Point);
+    EXPECT_EQ(point.name, "Lamp");  // the node's, the light has none
+    EXPECT_EQ(point.position, glm::dvec3(4, 5, 6));
+    EXPECT_EQ(point.color, glm::dvec3(1, 0.5, 0.25));
+    EXPECT_EQ(point.intensity, 20);
+    EXPECT_EQ(point.range, 5);
+    const FileLight& sun = view.lights[1];
+    EXPECT_EQ(sun.type, FileLight::Type::Directional);
+    EXPECT_EQ(sun.name, "Sun");
+    EXPECT_EQ(sun.color, glm::dvec3(1));  // the default white
+    EXPECT_NEAR(glm::length(sun.direction - glm::dvec3(0, -1, 0)), 0.0, 1e-12);
+    EXPECT_EQ(view.lights[2].type, FileLight::Type::Spot);
+
+    // Positions move with the mesh; directions do not.
+    normalizeView(view, Normalization{glm::dvec3(1, 1, 1), 3.0});
+    EXPECT_NEAR(glm::length(view.cameras[0].eye - glm::dvec3(0, 3, 12)), 0.0, 1e-12);
+    EXPECT_EQ(view.lights[0].position, glm::dvec3(9, 12, 15));
+    EXPECT_NEAR(glm::length(view.lights[1].direction - glm::dvec3(0, -1, 0)), 0.0, 1e-12);
+    EXPECT_EQ(view.mmPerFileUnit, 3.0);
+}
+
+TEST(GLTF, CamerasAndLightsUnreadAreNoted) {
+    testing::internal::CaptureStderr();
+    parseGLTF(viewFile(), "view.gltf");
+    const std::string notes = testing::internal::GetCapturedStderr();
+    EXPECT_THAT(notes, testing::HasSubstr("tsis: note: mesh 'view.gltf': 1 camera and 3 lights "
+                                          "ignored (not read by this command)\n"));
+}
+
+TEST(GLTF, BadLightsAreOneLineErrors) {
+    auto withLight = [](const std::string& node, const std::string& lights) {
+        return sceneJson(
+            "0, 1", R"({"mesh": 0}, {"extensions": {"KHR_lights_punctual": )" + node + "}}",
+            kQuadMesh, R"(, "extensions": {"KHR_lights_punctual": {"lights": [)" + lights + "]}}");
+    };
+    for (const auto& [file, phrase] : std::vector<std::pair<std::string, std::string>>{
+             {withLight(R"({"light": 1})", R"({"type": "point"})"), "light 1 does not exist"},
+             {withLight(R"({"light": 0})", R"({"type": "area"})"), "unknown type 'area'"},
+             {withLight(R"({"light": 0})", R"({"type": "point", "color": [1, 1]})"),
+              "color needs 3 components"},
+             {withLight(R"({"light": 0})", R"({"type": "point", "intensity": -1})"),
+              "finite and >= 0"}}) {
+        FileView view;
+        EXPECT_THAT(test::errorOf([&] { parseGLTF(file, "bad.gltf", "", &view); }, "bad.gltf"),
+                    testing::HasSubstr(phrase));
+    }
+}
+
+// Everything of a glTF that tsis does not use: one note per kind, with its
+// count, naming the file.
+TEST(GLTF, IgnoredPartsAreOneNoteEach) {
+    std::string file =
+        sceneJson("0", R"({"mesh": 0, "skin": 0})",
+                  R"({"primitives": [{"attributes": {"POSITION": 0, "COLOR_0": 0}, "indices": 1,
+                            "material": 0, "targets": [{"POSITION": 0}]}]})",
+                  R"(, "materials": [{"name": "Skin"}, {"name": "Eyes"}, {}, {}, {}],
+             "textures": [{"source": 0}], "images": [{"uri": "data:image/png;base64,AAAA"}],
+             "animations": [{"channels": [], "samplers": []}], "skins": [{"joints": [0]}],
+             "extensionsUsed": ["KHR_materials_volume", "KHR_texture_transform"],
+             "extensionsRequired": ["KHR_texture_transform"])");
+    const std::string oneScene = R"("scenes": [{"nodes": [0]}])";
+    file.replace(file.find(oneScene), oneScene.size(),
+                 R"("scenes": [{"nodes": [0]}, {"nodes": []}])");
+    testing::internal::CaptureStderr();
+    parseGLTF(file, "all.gltf");
+    const std::string notes = testing::internal::GetCapturedStderr();
+    const std::string n = "tsis: note: mesh 'all.gltf': ";
+    EXPECT_EQ(notes,
+              n +
+                  "5 materials 'Skin', 'Eyes', '#2' and 2 more ignored (the material is "
+                  "--material's)\n" +
+                  n + "1 texture and 1 image ignored (not read)\n" + n +
+                  "1 animation ignored (the scene is drawn unanimated)\n" + n +
+                  "1 skin ignored (skinned meshes are drawn unskinned)\n" + n +
+                  "morph targets of 1 primitive ignored (the base shape is drawn)\n" + n +
+                  "vertex attributes ignored: COLOR_0 (read: POSITION, NORMAL, TEXCOORD_0)\n" + n +
+                  "extensions ignored: KHR_materials_volume, KHR_texture_transform\n" + n +
+                  "1 other scene ignored (the default scene, 0, is drawn)\n");
+    testing::internal::CaptureStderr();
+    parseGLTF(sceneJson("0", R"({"mesh": 0})", kQuadMesh, R"(, "materials": [{"name": "M"}])"),
+              "one.gltf");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(),
+              "tsis: note: mesh 'one.gltf': material 'M' ignored (the material is --material's)\n");
 }
 
 }  // namespace

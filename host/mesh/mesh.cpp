@@ -57,7 +57,7 @@ double Mesh::enclosedVolume() const {
     return std::abs(sum) / 6.0;
 }
 
-void normalizeMesh(Mesh& mesh, double sizeMm) {
+Normalization normalizationOf(const Mesh& mesh, double sizeMm) {
     if (!(sizeMm > 0.0) || !std::isfinite(sizeMm))
         fail("mesh '", mesh.name, "': size must be a positive number of mm, got ", sizeMm);
     if (mesh.positions.empty()) fail("mesh '", mesh.name, "': no vertices to normalise");
@@ -70,9 +70,13 @@ void normalizeMesh(Mesh& mesh, double sizeMm) {
     if (!(diagonal > 0.0) || !std::isfinite(diagonal))
         fail("mesh '", mesh.name, "': bounding box has zero or non-finite extent (diagonal ",
              diagonal, ")");
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double scale = sizeMm / diagonal;
-    for (glm::vec3& p : mesh.positions) p = glm::vec3((dv(p) - centre) * scale);
+    return {0.5 * (lo + hi), sizeMm / diagonal};
+}
+
+Normalization normalizeMesh(Mesh& mesh, double sizeMm) {
+    const Normalization n = normalizationOf(mesh, sizeMm);
+    for (glm::vec3& p : mesh.positions) p = glm::vec3((dv(p) - n.centre) * n.scale);
+    return n;
 }
 
 glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp) {
@@ -92,8 +96,8 @@ glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp) {
            aboutX(sinCosDegrees(degrees.x)) * up;
 }
 
-void rotateMesh(Mesh& mesh, const glm::dmat3& rotation) {
-    if (rotation == glm::dmat3(1.0) || mesh.positions.empty()) return;
+glm::dvec3 rotateMesh(Mesh& mesh, const glm::dmat3& rotation) {
+    if (rotation == glm::dmat3(1.0) || mesh.positions.empty()) return glm::dvec3(0.0);
     glm::dvec3 lo(dv(mesh.positions[0])), hi(lo);
     for (const glm::vec3& p : mesh.positions) {
         lo = glm::min(lo, dv(p));
@@ -102,6 +106,7 @@ void rotateMesh(Mesh& mesh, const glm::dmat3& rotation) {
     const glm::dvec3 centre = 0.5 * (lo + hi);
     for (glm::vec3& p : mesh.positions) p = glm::vec3(centre + rotation * (dv(p) - centre));
     for (glm::vec3& n : mesh.normals) n = glm::vec3(rotation * dv(n));
+    return centre;
 }
 
 }  // namespace tsis

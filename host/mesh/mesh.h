@@ -28,17 +28,28 @@ struct Mesh {
     double triangleUVArea(size_t t) const;  // unsigned
 };
 
+// What normalizeMesh did: p ↦ (p − centre) · scale. A file's cameras and
+// lights go through it too (file_view.h).
+struct Normalization {
+    glm::dvec3 centre{0.0};
+    double scale = 1.0;  // mm per file unit
+    glm::dvec3 apply(const glm::dvec3& p) const { return (p - centre) * scale; }
+};
+
 // docs/design.md §2: centre on the bounding-box centre and scale so the bounding-box
 // diagonal equals sizeMm.
-void normalizeMesh(Mesh& mesh, double sizeMm);
+Normalization normalizeMesh(Mesh& mesh, double sizeMm);
+// What normalizeMesh(mesh, sizeMm) would do, the mesh left as it is.
+Normalization normalizationOf(const Mesh& mesh, double sizeMm);
 
 // The turn of --mesh-up and --rotate (docs/design.md §2): with zUp the mesh's
 // +z becomes +y (−90° about X), then the angles in degrees about X, then Y,
 // then Z (right-handed), exact at multiples of 90°.
 glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp);
-// Turns positions and normals about the bounding-box centre; the identity
-// leaves the mesh untouched, bit for bit.
-void rotateMesh(Mesh& mesh, const glm::dmat3& rotation);
+// Turns positions and normals about the bounding-box centre, which it returns
+// (so a file's cameras and lights can turn alike); the identity leaves the
+// mesh untouched, bit for bit.
+glm::dvec3 rotateMesh(Mesh& mesh, const glm::dmat3& rotation);
 
 // --crease: faces meeting at more than this are not smoothed across.
 // 60°: a cube's and fandisk's machined edges (3.6% of its edges) split, while

@@ -30,11 +30,11 @@ std::string lowerExtension(const std::string& spec) {
     return ext;
 }
 
-Mesh loadByExtension(const std::string& path, const std::string& ext) {
+Mesh loadByExtension(const std::string& path, const std::string& ext, FileView* view) {
     if (ext == ".off") return loadOFF(path);
     if (ext == ".obj") return loadOBJ(path);
     if (ext == ".stl") return loadSTL(path);
-    if (ext == ".gltf" || ext == ".glb") return loadGLTF(path);
+    if (ext == ".gltf" || ext == ".glb") return loadGLTF(path, view);
     return loadPLY(path);
 }
 
@@ -57,17 +57,18 @@ Mesh loadPLY(const std::string& path) {
 Mesh loadSTL(const std::string& path) {
     return parseSTL(readFile(path), path);
 }
-Mesh loadGLTF(const std::string& path) {
+Mesh loadGLTF(const std::string& path, FileView* view) {
     // External buffers a .gltf names are read from its folder.
     const std::string folder = fs::path(path).parent_path().string();
-    return parseGLTF(readFile(path), path, folder.empty() ? "." : folder);
+    return parseGLTF(readFile(path), path, folder.empty() ? "." : folder, view);
 }
 
-Mesh loadMesh(const std::string& spec) {
+Mesh loadMesh(const std::string& spec, FileView* view) {
+    if (view) *view = {};
     if (spec.empty()) fail("mesh: empty name (give a path, a data mesh name or builtin:NAME)");
     if (spec.rfind("builtin:", 0) == 0) return builtinMesh(spec.substr(8));
     const std::string ext = lowerExtension(spec);
-    if (knownExtension(ext)) return loadByExtension(spec, ext);
+    if (knownExtension(ext)) return loadByExtension(spec, ext, view);
     if (spec.find('/') != std::string::npos)
         fail("mesh '", spec, "': unknown format '", ext,
              "' (known: .off, .obj, .ply, .stl, .gltf, .glb)");
@@ -80,7 +81,7 @@ Mesh loadMesh(const std::string& spec) {
         for (const char* e : {".off", ".obj", ".ply"}) {
             const std::string path = (fs::path(dir) / spec).string() + e;
             std::error_code ec;
-            if (fs::is_regular_file(path, ec)) return loadByExtension(path, e);
+            if (fs::is_regular_file(path, ec)) return loadByExtension(path, e, view);
         }
     std::string where;
     for (const std::string& dir : dirs) where += (where.empty() ? "" : " or ") + dir;

@@ -6,19 +6,22 @@
 
 #include <string>
 
+#include "mesh/file_view.h"
 #include "mesh/mesh.h"
 
 namespace tsis {
 
 // `spec` is a path (format from its extension, .off/.obj/.ply/.stl/.gltf/.glb), "builtin:NAME",
 // or a bare name resolved under the unpacked data meshes (data/meshes/NAME.off).
-Mesh loadMesh(const std::string& spec);
+// `view`, when given, receives the file's cameras and lights (glTF; empty for
+// the other formats); without it the loader notes them as ignored.
+Mesh loadMesh(const std::string& spec, FileView* view = nullptr);
 
 Mesh loadOFF(const std::string& path);
 Mesh loadOBJ(const std::string& path);
 Mesh loadPLY(const std::string& path);
 Mesh loadSTL(const std::string& path);
-Mesh loadGLTF(const std::string& path);  // .gltf or .glb
+Mesh loadGLTF(const std::string& path, FileView* view = nullptr);  // .gltf or .glb
 
 // Parsers from memory (used by the loaders and the fuzz targets).
 Mesh parseOFF(const std::string& text, const std::string& name);
@@ -27,6 +30,7 @@ Mesh parsePLY(const std::string& bytes, const std::string& name);
 Mesh parseSTL(const std::string& bytes, const std::string& name);
 // glTF 2.0, text or binary (.glb) by its first bytes; external buffers are read
 // from `folder`, or refused when it is empty.
-Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder = "");
+Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::string& folder = "",
+               FileView* view = nullptr);
 
 }  // namespace tsis

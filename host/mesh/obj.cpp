@@ -3,7 +3,9 @@
 // vertex per distinct combination, so every attribute is per vertex.
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "mesh/mesh_io.h"
 #include "mesh/parse_util.h"
@@ -64,6 +66,85 @@ Corner parseCorner(std::string_view token, size_t nv, size_t nvt, size_t nvn,
     return c;
 }
 
+// Distinct names in the order met; the first three kept for the note.
+struct Names {
+    std::unordered_set<std::string> seen;
+    std::vector<std::string> first;
+    void add(std::string_view n) {
+        if (seen.emplace(n).second && first.size() < 3) first.emplace_back(n);
+    }
+    size_t size() const { return seen.size(); }
+    bool empty() const { return seen.empty(); }
+    // "'a', 'b', 'c' and 2 more".
+    std::string list() const {
+        std::string s;
+        for (size_t i = 0; i < first.size(); ++i) s += concat(i ? ", '" : "'", first[i], "'");
+        if (size() > first.size()) s += concat(" and ", size() - first.size(), " more");
+        return s;
+    }
+};
+
+// Statements that do not change the surface, one note per kind.
+struct Ignored {
+    Names libraries, materials, smoothing;  // mtllib, usemtl, s (but off)
+    size_t groups = 0, elements = 0;
+    std::vector<std::pair<std::string, size_t>> other;  // keyword, count; at most kKinds
+    size_t otherMore = 0;                               // lines of further keywords
+    static constexpr size_t kKinds = 8;  // a garbage file's keywords are not all listed
+
+    void add(std::string_view key, const std::vector<std::string_view>& tok) {
+        if (key == "mtllib") {
+            for (size_t k = 1; k < tok.size(); ++k) libraries.add(tok[k]);
+        } else if (key == "usemtl") {
+            if (tok.size() > 1) materials.add(tok[1]);
+        } else if (key == "o" || key == "g") {
+            ++groups;
+        } else if (key == "s") {
+            if (tok.size() > 1 && tok[1] != "off" && tok[1] != "0") smoothing.add(tok[1]);
+        } else if (key == "l" || key == "p") {
+            ++elements;
+        } else {
+            auto it = std::find_if(other.begin(), other.end(),
+                                   [&](const auto& o) { return o.first == key; });
+            if (it == other.end() && other.size() == kKinds) {
+                ++otherMore;
+                return;
+            }
+            if (it == other.end()) it = other.insert(other.end(), {std::string(key), 0});
+            ++it->second;
+        }
+    }
+
+    void note(const std::string& name) const {
+        if (!libraries.empty())
+            meshparse::note(
+                name, concat(plural(libraries.size(), "material library ", "material libraries "),
+                             libraries.list(), " ignored (mtllib: not read)"));
+        if (!materials.empty())
+            meshparse::note(
+                name, concat(plural(materials.size(), "material ", "materials "), materials.list(),
+                             " ignored (the material is --material's)"));
+        if (groups)
+            meshparse::note(name, concat(groups, " ", plural(groups, "group", "groups"),
+                                         " (o, g) ignored (the file is one mesh)"));
+        if (!smoothing.empty())
+            meshparse::note(name, concat(smoothing.size(), " smoothing ",
+                                         plural(smoothing.size(), "group", "groups"),
+                                         " (s) ignored (normals: vn, else from the faces)"));
+        if (elements)
+            meshparse::note(
+                name, concat(elements, " line and point ", plural(elements, "element", "elements"),
+                             " (l, p) ignored (only faces are drawn)"));
+        if (!other.empty()) {
+            std::string s;
+            for (const auto& [key, n] : other)
+                s += concat(s.empty() ? "" : ", ", key, " (", n, ")");
+            if (otherMore) s += concat(" and ", otherMore, " more lines");
+            meshparse::note(name, "statements ignored: " + s);
+        }
+    }
+};
+
 double number(std::string_view token, const std::string& name, size_t line) {
     double v = 0;
     if (!parseDouble(token, v)) failAt(name, line, "bad number '", token, "'");
@@ -84,6 +165,7 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
     std::vector<Corner> corners;
     std::vector<size_t> faceStart;
     size_t lineCount = 0, shortFaces = 0, triangleCount = 0;
+    Ignored ignored;
     while (lines.next(tok)) {
         ++lineCount;
         const size_t line = lines.lineNumber();
@@ -119,13 +201,14 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
                 corners.push_back(
                     parseCorner(tok[k], pos.size(), tex.size(), nrm.size(), name, line));
             triangleCount += tok.size() - 3;
+        } else {
+            ignored.add(key, tok);
         }
-        // Everything else (o, g, s, usemtl, mtllib, l, p, curves) does not
-        // change the surface a renderer needs.
     }
     if (lineCount == 0) failIn(name, "empty file");
     noteShortFaces(name, shortFaces);
     if (faceStart.empty()) failIn(name, "no faces (", pos.size(), " vertices and no triangles)");
+    ignored.note(name);
 
     // Attributes only when every corner has one: a partly textured mesh has
     // no atlas, a partly shaded one gets computed normals.

@@ -114,11 +114,35 @@ TEST(OBJ, RealWorldFile) {
         "f 5 6 7 8 9 10\n"  // an n-gon
         "l 1 5\n";
     test::ScratchDir dir;
-    const Mesh m = loadMesh(dir.file("scene.obj", text));
+    const std::string path = dir.file("scene.obj", text);
+    testing::internal::CaptureStderr();
+    const Mesh m = loadMesh(path);
+    const std::string notes = testing::internal::GetCapturedStderr();
     EXPECT_EQ(m.positions.size(), 10u);
     ASSERT_EQ(m.triangles.size(), 2u + 4u);
     EXPECT_EQ(m.triangles[0], glm::uvec3(0, 1, 2));
     EXPECT_NEAR(m.surfaceArea(), 1.0 + 1.5, 1e-6);
+    // What was not used: one note per kind, each naming the file.
+    const std::string n = "tsis: note: mesh '" + path + "': ";
+    EXPECT_EQ(notes, n + "material library 'scene.mtl' ignored (mtllib: not read)\n" + n +
+                         "materials 'red', 'blue' ignored (the material is --material's)\n" + n +
+                         "3 groups (o, g) ignored (the file is one mesh)\n" + n +
+                         "1 smoothing group (s) ignored (normals: vn, else from the faces)\n" + n +
+                         "1 line and point element (l, p) ignored (only faces are drawn)\n");
+}
+
+TEST(OBJ, OtherStatementsAreNotedByKeyword) {
+    testing::internal::CaptureStderr();
+    parseOBJ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nvp 0.5\ncstype bspline\nvp 0.2 0.1\n", "c.obj");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(),
+              "tsis: note: mesh 'c.obj': statements ignored: vp (2), cstype (1)\n");
+    // A file of nothing but unknown keywords lists the first few, counts the rest.
+    std::string junk = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    for (int k = 0; k < 20; ++k) junk += "k" + std::to_string(k) + "\n";
+    testing::internal::CaptureStderr();
+    parseOBJ(junk, "j.obj");
+    EXPECT_THAT(testing::internal::GetCapturedStderr(),
+                HasSubstr("k6 (1), k7 (1) and 12 more lines\n"));
 }
 
 }  // namespace

@@ -120,8 +120,9 @@ float coordinate(double value, const std::string& name, size_t vertex, size_t li
 }
 
 void note(const std::string& name, const std::string& what) {
-    std::fprintf(stderr, "tsis: note: mesh '%s': %s\n", printable(name).c_str(),
-                 printable(what).c_str());
+    // Every note names its file; a mesh from memory without a name says so.
+    std::fprintf(stderr, "tsis: note: mesh '%s': %s\n",
+                 name.empty() ? "(unnamed)" : printable(name).c_str(), printable(what).c_str());
 }
 
 void noteShortFaces(const std::string& name, size_t count) {

@@ -1,0 +1,63 @@
+// The cameras and lights a mesh file places (glTF camera nodes and
+// KHR_lights_punctual), as the file gives them: what scene/from_file.h makes
+// a Camera and Lights of. Only glTF has them; other formats leave it empty.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.h"
+
+namespace tsis {
+
+// A perspective camera node (orthographic ones are noted and dropped by the loader).
+struct FileCamera {
+    std::string name;     // the camera's name, else its node's, else ""
+    glm::dvec3 eye{0.0};  // the node's world position
+    glm::dvec3 forward{0.0, 0.0, -1.0}, up{0.0, 1.0, 0.0};  // unit, orthogonal
+    double yfovRadians = 0.0;                               // as the file gives it
+};
+
+// A light node. Photometric units as KHR_lights_punctual has them.
+struct FileLight {
+    enum class Type { Point, Directional, Spot };
+    Type type = Type::Point;
+    std::string name;
+    glm::dvec3 position{0.0};              // point, spot
+    glm::dvec3 direction{0.0, 0.0, -1.0};  // unit, the direction of travel (the node's −z)
+    glm::dvec3 color{1.0};                 // linear RGB
+    double intensity = 1.0;  // point, spot: candela (lm/sr); directional: lux (lm/m²)
+    double range = 0.0;      // 0: unlimited
+};
+
+struct FileView {
+    std::vector<FileCamera> cameras;  // in node order
+    std::vector<FileLight> lights;    // in node order
+    // What normalizeView scaled the positions by: mm per file unit (glTF: per metre).
+    double mmPerFileUnit = 1.0;
+    bool empty() const { return cameras.empty() && lights.empty(); }
+};
+
+// The positions through the mesh's normalisation (directions unchanged).
+inline void normalizeView(FileView& view, const Normalization& n) {
+    for (FileCamera& c : view.cameras) c.eye = n.apply(c.eye);
+    for (FileLight& l : view.lights) l.position = n.apply(l.position);
+    view.mmPerFileUnit = n.scale;
+}
+
+// The cameras and lights turned as rotateMesh turned the mesh (about `centre`).
+inline void rotateView(FileView& view, const glm::dmat3& rotation, const glm::dvec3& centre) {
+    for (FileCamera& c : view.cameras) {
+        c.eye = centre + rotation * (c.eye - centre);
+        c.forward = rotation * c.forward;
+        c.up = rotation * c.up;
+    }
+    for (FileLight& l : view.lights) {
+        l.position = centre + rotation * (l.position - centre);
+        l.direction = rotation * l.direction;
+    }
+}
+
+}  // namespace tsis
