@@ -152,7 +152,7 @@ TEST(SceneOptions, MeshOptionsParsePrintAndRefuse) {
     const MeshOptions d = meshOptionsFromArgs(parse({}));
     EXPECT_EQ(d.rotateDegrees, glm::dvec3(0.0));
     EXPECT_FALSE(d.zUp);
-    EXPECT_EQ(d.creaseDegrees, 30.0);
+    EXPECT_EQ(d.creaseDegrees, kDefaultCreaseDegrees);
     EXPECT_EQ(meshOptionArgs(d), (std::vector<std::string>{"--atlas", "auto"}));
 
     const std::vector<std::string> argv = {"--rotate", "90,-12.5,0.1", "--mesh-up", "z",
