@@ -365,16 +365,18 @@ TEST(GLTF, BadLightsAreOneLineErrors) {
             "0, 1", R"({"mesh": 0}, {"extensions": {"KHR_lights_punctual": )" + node + "}}",
             kQuadMesh, R"(, "extensions": {"KHR_lights_punctual": {"lights": [)" + lights + "]}}");
     };
-    for (const auto& [file, phrase] : std::vector<std::pair<std::string, std::string>>{
+    for (const auto& c : std::vector<std::pair<std::string, std::string>>{
              {withLight(R"({"light": 1})", R"({"type": "point"})"), "light 1 does not exist"},
              {withLight(R"({"light": 0})", R"({"type": "area"})"), "unknown type 'area'"},
              {withLight(R"({"light": 0})", R"({"type": "point", "color": [1, 1]})"),
               "color needs 3 components"},
              {withLight(R"({"light": 0})", R"({"type": "point", "intensity": -1})"),
               "finite and >= 0"}}) {
+        // (A lambda cannot capture a structured binding before C++20.)
+        const std::string& file = c.first;
         FileView view;
         EXPECT_THAT(test::errorOf([&] { parseGLTF(file, "bad.gltf", "", &view); }, "bad.gltf"),
-                    testing::HasSubstr(phrase));
+                    testing::HasSubstr(c.second));
     }
 }
 
