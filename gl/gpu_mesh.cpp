@@ -7,6 +7,19 @@
 #include "util/error.h"
 
 namespace tsis {
+namespace {
+
+// Float attribute `index` of the bound buffer: `size` floats at `offset`
+// floats into each vertex of `stride` bytes.
+void floatAttribute(GLuint index, GLint size, GLsizei stride, size_t offset) {
+    glEnableVertexAttribArray(index);
+    // GL takes the buffer offset as a pointer.
+    glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(  // NOLINT(performance-no-int-to-ptr)
+                              offset * sizeof(float)));
+}
+
+}  // namespace
 
 GpuMesh::GpuMesh(const Mesh& mesh) {
     TSIS_CHECK(mesh.hasNormals());
@@ -39,16 +52,11 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
                  GL_STATIC_DRAW);
     const GLsizei stride = kStride * sizeof(float);
-    auto attrib = [&](GLuint index, GLint size, size_t offset) {
-        glEnableVertexAttribArray(index);
-        glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(offset * sizeof(float)));
-    };
-    attrib(0, 3, 0);  // position
-    attrib(1, 3, 3);  // normal
-    attrib(2, 2, 6);  // uv
-    attrib(3, 1, 8);  // area ratio
-    attrib(4, 1, 9);  // medium tag
+    floatAttribute(0, 3, stride, 0);  // position
+    floatAttribute(1, 3, stride, 3);  // normal
+    floatAttribute(2, 2, stride, 6);  // uv
+    floatAttribute(3, 1, stride, 8);  // area ratio
+    floatAttribute(4, 1, stride, 9);  // medium tag
     glBindVertexArray(0);
 
     std::vector<float> vertices;
@@ -71,12 +79,9 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
                  mesh.triangles.data(), GL_STATIC_DRAW);
-    for (GLuint index : {0u, 1u, 4u}) {
-        glEnableVertexAttribArray(index);
-        glVertexAttribPointer(
-            index, index == 4 ? 1 : 3, GL_FLOAT, GL_FALSE, kIndexedStride * sizeof(float),
-            reinterpret_cast<const void*>((index == 4 ? 6 : index * 3) * sizeof(float)));
-    }
+    floatAttribute(0, 3, kIndexedStride * sizeof(float), 0);  // position
+    floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
+    floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
     glBindVertexArray(0);
     checkGl("GpuMesh upload");
 }

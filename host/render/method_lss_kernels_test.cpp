@@ -134,7 +134,8 @@ TEST_P(LssKernelTest, GatherMatchesHostDoubleSum) {
     std::vector<glm::dvec3> want(pixels.size(), glm::dvec3(0.0)), mag = want;
     for (size_t j = 0; j < pixels.size(); ++j) {
         const int pix = pixels[j];
-        const double px = pix % kWidth + 0.5, py = pix / kWidth + 0.5;
+        const int row = pix / kWidth, column = pix % kWidth;
+        const double px = column + 0.5, py = row + 0.5;
         const glm::dvec3 xo = test::xyz(pos[size_t(pix)]);
         const double depth = glm::dot(xo - eye, view);
         const double perMm = 1.0 / (depth * cam.pixel_angle);

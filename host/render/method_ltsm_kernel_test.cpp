@@ -38,6 +38,7 @@ std::vector<cl_float4> points(uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-3.4f, 3.4f);
     std::vector<cl_float4> p;
+    p.reserve(41);
     // One medium throughout (tag 1, as the maps' covered texels).
     for (int i = 0; i < 40; ++i) p.push_back({{u(rng), u(rng), 0.02f, 1.0f}});
     p.push_back({{9.0f, 9.0f, 0.0f, 1.0f}});

@@ -72,6 +72,7 @@ std::vector<glm::dvec4> hostTexels(const Maps& maps, Conditioning& cond) {
 
 std::vector<cl_float4> toFloat4(const std::vector<glm::dvec4>& v) {
     std::vector<cl_float4> f;
+    f.reserve(v.size());
     for (const glm::dvec4& x : v) f.push_back({{float(x.x), float(x.y), float(x.z), float(x.w)}});
     return f;
 }
@@ -215,12 +216,14 @@ TEST_F(MisKernelTest, GatherMatchesHostDoubleSum) {
     std::vector<float> radii;
     for (int k = 0; k <= K; ++k) radii.push_back(3.5f * std::pow(float(k) / float(K), 1.5f));
     std::vector<float> q;
+    q.reserve(size_t(info.q_size));
     for (int b = 0; b < info.q_size; ++b) q.push_back(0.8f / (1.0f + 0.5f * float(b)));
     const ProfileTable t = test::analyticTable(4.0);
     std::mt19937 rng(8);
     std::uniform_real_distribution<float> u(-1.6f, 1.6f);
     std::vector<cl_float4> pts;
     // One medium throughout (tag 1, as the maps' covered texels).
+    pts.reserve(24);
     for (int j = 0; j < 24; ++j) pts.push_back({{u(rng), u(rng), 0.03f, 1.0f}});
 
     // Host: kernels/mis.cl's tsis_mis_gather in double.

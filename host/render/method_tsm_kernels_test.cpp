@@ -15,6 +15,11 @@
 namespace tsis {
 namespace {
 
+// An index of these small test grids (int arithmetic, then widened).
+size_t idx(int i) {
+    return static_cast<size_t>(i);
+}
+
 using test::ClTest;
 using test::Conditioning;
 
@@ -62,9 +67,9 @@ TEST_F(TsmKernelTest, Level0IsFluxAndLuminanceWeightedPositions) {
 // magnitudes.
 TEST_F(TsmKernelTest, ReduceSumsTwoByTwoWithOddEdges) {
     const int sw = 5, sh = 3, dw = 3, dh = 2, src = 4, dst = src + sw * sh;
-    const size_t cells = size_t(dst + dw * dh);
+    const size_t cells = idx(dst + dw * dh);
     std::vector<cl_float4> F0 = randomFloat4(cells, 3, -1.0f, 3.0f, 0.1);
-    F0[size_t(src + 1)].s[3] = 2.0f;
+    F0[idx(src + 1)].s[3] = 2.0f;
     const std::vector<cl_float4> P0 = randomFloat4(cells, 4, -4.0f, 4.0f, 0.1);
     cl::Buffer F = upload(F0), P = upload(P0);
     setKernelArgs(reduce, F, P, src, sw, sh, dst, dw, dh);
@@ -77,18 +82,18 @@ TEST_F(TsmKernelTest, ReduceSumsTwoByTwoWithOddEdges) {
                 double fs = 0, fm = 0, ps = 0, pm = 0;
                 for (int sy = 2 * y; sy < std::min(2 * y + 2, sh); ++sy)
                     for (int sx = 2 * x; sx < std::min(2 * x + 2, sw); ++sx) {
-                        const size_t i = size_t(src + sy * sw + sx);
+                        const size_t i = idx(src + sy * sw + sx);
                         fs += F0[i].s[c];
                         fm += std::abs(F0[i].s[c]);
                         ps += P0[i].s[c];
                         pm += std::abs(P0[i].s[c]);
                     }
-                const size_t d = size_t(dst + y * dw + x);
+                const size_t d = idx(dst + y * dw + x);
                 if (c == 3) {
                     float tag = 0;
                     for (int sy = 2 * y; sy < std::min(2 * y + 2, sh); ++sy)
                         for (int sx = 2 * x; sx < std::min(2 * x + 2, sw); ++sx) {
-                            const float t = F0[size_t(src + sy * sw + sx)].s[3];
+                            const float t = F0[idx(src + sy * sw + sx)].s[3];
                             if (t != 0) tag = tag == 0 || tag == t ? t : -1;
                         }
                     EXPECT_EQ(f[d].s[3], tag) << x << ", " << y;
@@ -115,8 +120,8 @@ Pyramid pyramid(int res, uint32_t seed) {
         cells += w * w;
         if (w == 1) break;
     }
-    const std::vector<cl_float4> flux = randomFloat4(size_t(res * res), seed, 0.1f, 1.0f, 0.2);
-    const std::vector<cl_float4> pos = randomFloat4(size_t(res * res), seed + 1, -3.0f, 3.0f, 0.0);
+    const std::vector<cl_float4> flux = randomFloat4(idx(res * res), seed, 0.1f, 1.0f, 0.2);
+    const std::vector<cl_float4> pos = randomFloat4(idx(res * res), seed + 1, -3.0f, 3.0f, 0.0);
     std::vector<glm::dvec4> F(size_t(cells), glm::dvec4(0.0)), P(size_t(cells), glm::dvec4(0.0));
     for (int i = 0; i < res * res; ++i) {
         const double y = test::luminance(test::xyz(flux[size_t(i)]));
@@ -129,8 +134,8 @@ Pyramid pyramid(int res, uint32_t seed) {
             for (int x = 0; x < d.s[1]; ++x)
                 for (int sy = 2 * y; sy < std::min(2 * y + 2, s.s[2]); ++sy)
                     for (int sx = 2 * x; sx < std::min(2 * x + 2, s.s[1]); ++sx) {
-                        F[size_t(d.s[0] + y * d.s[1] + x)] += F[size_t(s.s[0] + sy * s.s[1] + sx)];
-                        P[size_t(d.s[0] + y * d.s[1] + x)] += P[size_t(s.s[0] + sy * s.s[1] + sx)];
+                        F[idx(d.s[0] + y * d.s[1] + x)] += F[idx(s.s[0] + sy * s.s[1] + sx)];
+                        P[idx(d.s[0] + y * d.s[1] + x)] += P[idx(s.s[0] + sy * s.s[1] + sx)];
                     }
     }
     for (size_t i = 0; i < F.size(); ++i) {
@@ -153,7 +158,7 @@ void cellBilinear(const Pyramid& py, const cl_int4& level, double cx, double cy,
     *f = *p = glm::dvec4(0.0);
     for (int k = 0; k < 4; ++k) {
         const double w = ((k & 1) ? tx : 1.0 - tx) * ((k & 2) ? ty : 1.0 - ty);
-        const size_t i = size_t(level.s[0] + ys[k >> 1] * level.s[1] + xs[k & 1]);
+        const size_t i = idx(level.s[0] + ys[k >> 1] * level.s[1] + xs[k & 1]);
         const cl_float4 a = py.F[i], b = py.P[i];
         *f += w * glm::dvec4(a.s[0], a.s[1], a.s[2], a.s[3]);
         *p += w * glm::dvec4(b.s[0], b.s[1], b.s[2], b.s[3]);
@@ -176,6 +181,7 @@ TEST_F(TsmKernelTest, FilterMatchesHostDoubleSum) {
     std::mt19937 rng(6);
     std::uniform_real_distribution<float> u(-3.5f, 3.5f);
     std::vector<cl_float4> pts;
+    pts.reserve(40);
     for (int i = 0; i < 40; ++i) pts.push_back({{u(rng), u(rng), 0.3f * u(rng), 0.0f}});
     const float radius = 9.0f;
 
