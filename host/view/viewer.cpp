@@ -13,6 +13,7 @@
 
 #include "compare/heatmap.h"
 #include "compare/image_compare.h"
+#include "mesh/media.h"
 #include "physics/material.h"
 #include "render/aov_files.h"
 #include "render/method.h"
@@ -112,6 +113,8 @@ class Viewer {
     std::string meshTaskSpec_;
     double meshTaskSize_ = 0;
     std::string meshError_;
+    const Mesh* mediaOf_ = nullptr;  // the mesh media_ counts (once a mesh, for the panel)
+    uint32_t media_ = 0;
     std::unique_ptr<BackgroundTask<FrameResult>> referenceTask_;
     ViewState referenceTaskState_;
     Clock::time_point referenceStart_;
@@ -401,9 +404,16 @@ void Viewer::playScript() {
 void Viewer::panel() {
     if (!panelShown_) return;
     PanelInfo info;
-    if (state_.mesh)
-        info.mesh = concat(state_.meshSpec, "  (", state_.mesh->triangles.size(), " triangles)");
-    else
+    if (state_.mesh) {
+        if (mediaOf_ != state_.mesh.get()) {
+            mediaOf_ = state_.mesh.get();
+            media_ = findMedia(*state_.mesh).count;
+        }
+        // The objects: separate solids, light never crossing between them.
+        info.mesh = concat(state_.meshSpec, "  (", state_.mesh->triangles.size(), " triangles; ",
+                           media_, media_ == 1 ? " object" : " objects", ", all ",
+                           state_.material.name.empty() ? "custom" : state_.material.name, ")");
+    } else
         info.mesh = "loading " + meshTaskSpec_;
     if (recentFrames_.size() > 1)
         info.fps = double(recentFrames_.size() - 1) /
