@@ -5,7 +5,7 @@
 #   ./setup.sh            install + build
 #   ./setup.sh render     install + build + render the default scene to tsis.png
 #   ./setup.sh test       install + build + run the test suite (CTest)
-#   ./setup.sh fuzz [S]   install clang + build and run the mesh-loader fuzzer for S seconds (default 60)
+#   ./setup.sh fuzz [S] [ARGS…]  install clang + build and run the mesh-loader fuzzer for S seconds (default 60; ARGS to libFuzzer)
 #   ./setup.sh sanitize   build with ASan+UBSan into build-sanitize/ and run the whole suite
 #   ./setup.sh sanitize-quick   the same for the loaders, physics, CL host code and one render (CI)
 #   ./setup.sh python     install + build + install `import tsis` for /usr/bin/python3
@@ -120,7 +120,7 @@ case "${1:-}" in
     ctest --output-on-failure -j "$JOBS" --timeout 1200
     ;;
   fuzz)
-    tests/fuzz/run.sh "${2:-60}"
+    tests/fuzz/run.sh "${2:-60}" "${@:3}"
     ;;
   sanitize)
     sanitize_build
