@@ -35,6 +35,18 @@ Media findMedia(const Mesh& mesh) {
         unite(int(t[0]), int(t[1]));
         unite(int(t[0]), int(t[2]));
     }
+    // One piece (the common case): one medium, whether closed or not.
+    const int firstRoot = find(int(mesh.triangles[0][0]));
+    bool onePiece = true;
+    for (const glm::uvec3& t : mesh.triangles)
+        if (find(int(t[0])) != firstRoot) {
+            onePiece = false;
+            break;
+        }
+    if (onePiece) {
+        media.count = 1;
+        return media;
+    }
     // A piece with an edge of one triangle is open: the open pieces together
     // stay one medium (a slab given as its two faces, a plane), as they were
     // before media.
