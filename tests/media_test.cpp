@@ -66,6 +66,8 @@ Bands bands(const FrameResult& f) {
         for (int x = 0; x < f.width; ++x) {
             if (!(f.coverage.at(x, y, 0) > 0) || f.position.at(x, y, 2) < 7.9f) continue;
             const float py = f.position.at(x, y, 1), r = f.radiosity.at(x, y, 0);
+            // The medium AOV: the upper cube (first in the mesh) is medium 0.
+            EXPECT_EQ(f.medium.at(x, y, 0), py > 0 ? 0.0f : 1.0f) << x << ", " << y;
             if (py > 19.25f) {
                 b.lit += r;
                 ++lit;

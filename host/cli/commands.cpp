@@ -57,9 +57,9 @@ bool wantsHelp(const std::vector<std::string>& argv) {
 std::vector<OptionSpec> renderSpecs() {
     std::vector<OptionSpec> specs = sceneOptionSpecs();
     specs.push_back({"output|o", true, false, "FILE  output PNG (default tsis.png)"});
-    specs.push_back(
-        {"aov", true, false,
-         "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, flux_atlas"});
+    specs.push_back({"aov", true, false,
+                     "DIR  write linear EXRs: radiosity, radiance, position, normal, coverage, "
+                     "flux_atlas, medium"});
     specs.push_back({"stats", true, false, "FILE.json  per-stage timings, bytes, counts"});
     specs.push_back({"frames", true, false,
                      "N  render the frame N times, report the last (warm timings; default 1)"});

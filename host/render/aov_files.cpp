@@ -20,6 +20,7 @@ const std::vector<AovFile>& aovFiles() {
         {"normal.exr", &FrameResult::normal, {"X", "Y", "Z"}},
         {"coverage.exr", &FrameResult::coverage, {"Y"}},
         {"flux_atlas.exr", &FrameResult::fluxAtlas, {"R", "G", "B"}},
+        {"medium.exr", &FrameResult::medium, {"Y"}},
     };
     return files;
 }

@@ -48,6 +48,8 @@ void collectAovs(FrameGraph& graph, const RasterHandles& gl, FrameGraphId<Radios
     const std::vector<float> position = gbuffer.readRGBA(0);
     result.position = toImage(position, w, h, 3);
     result.coverage = toImage(position, w, h, 1, 3);  // w: the medium tag, 0 where uncovered
+    result.medium = result.coverage;                  // the tag 1 + medium, 0 where uncovered
+    for (float& m : result.medium.pixels) m -= 1.0f;
     for (float& c : result.coverage.pixels) c = c > 0 ? 1.0f : 0.0f;
     result.normal = toImage(gbuffer.readRGBA(1), w, h, 3);
     // The flux atlas, when this frame's method used it.

@@ -27,6 +27,7 @@ struct FrameResult {
     std::vector<uint8_t> rgb8;  // tone-mapped sRGB image, row 0 = top
     // With RenderOptions::keepAovs (row 0 = top; atlas row 0 = v = 1):
     ImageF radiosity, radiance, position, normal, coverage, fluxAtlas;
+    ImageF medium;   // the pixel's medium (mesh/media.h), −1 where uncovered
     float lavg = 0;  // log-average radiance luminance over covered pixels
     FrameStats stats;
 };
