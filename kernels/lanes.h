@@ -41,8 +41,8 @@
 /* The lanes' points from `points` starting at `base`; past `count` lanes
  * repeat the last point (computed, never stored). Needs base, count, points. */
 #define TSIS_LOAD_POINT(k) const float4 q##k = points[min(base + 0x##k, count - 1)];
-/* The lanes' coordinates px, py, pz from the loaded q0, q1, ..., and the sums br, bg, bb. */
-/* pm: their medium tags (profile.h). */
+/* The lanes' coordinates px, py, pz and medium tags pm (profile.h) from the
+ * loaded q0, q1, ..., and the sums br, bg, bb. */
 #define TSIS_LANES_XYZ                \
     const floatW px = TSIS_VEC(q, x); \
     const floatW py = TSIS_VEC(q, y); \

@@ -76,7 +76,6 @@ Mesh prepareLoadedMesh(Mesh mesh, double sizeMm, const MeshOptions& o);
 // Loads the mesh `spec` names (a file, builtin:NAME or a data mesh name) and
 // prepares it (prepareLoadedMesh).
 Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o);
-// prepareMesh of --mesh, --size-mm and the mesh options.
 // prepareMesh of --mesh, --size-mm and the mesh options; a glTF's camera
 // (--camera N) and lights replace the scene's where the command line gives
 // none, per kind (scene/from_file.h), turned and scaled with the mesh.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <unordered_map>
 
 #include "mesh/weld.h"
 
@@ -50,19 +49,10 @@ Media findMedia(const Mesh& mesh) {
     // A piece with an edge of one triangle is open: the open pieces together
     // stay one medium (a slab given as its two faces, a plane), as they were
     // before media.
-    std::unordered_map<uint64_t, int> edgeUses;
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const auto a = uint32_t(welded[t[k]]), b = uint32_t(welded[t[(k + 1) % 3]]);
-            if (a != b) ++edgeUses[(uint64_t(std::min(a, b)) << 32) | std::max(a, b)];
-        }
+    const std::vector<char> onBoundary = trianglesOnBoundary(mesh, welded);
     std::vector<char> open(mesh.positions.size(), 0);
-    for (const glm::uvec3& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const auto a = uint32_t(welded[t[k]]), b = uint32_t(welded[t[(k + 1) % 3]]);
-            if (a != b && edgeUses[(uint64_t(std::min(a, b)) << 32) | std::max(a, b)] == 1)
-                open[size_t(find(int(t[0])))] = 1;
-        }
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (onBoundary[t]) open[size_t(find(int(mesh.triangles[t][0])))] = 1;
     std::vector<int> idOfRoot(mesh.positions.size(), -1);
     int openId = -1;
     for (const glm::uvec3& t : mesh.triangles) {

@@ -30,6 +30,15 @@ glm::dvec2 sinCosDegrees(double degrees) {
     return {std::sin(a), std::cos(a)};
 }
 
+// The bounding box's corners, the mesh not empty.
+void bounds(const Mesh& mesh, glm::dvec3& lo, glm::dvec3& hi) {
+    lo = hi = dv(mesh.positions[0]);
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, dv(p));
+        hi = glm::max(hi, dv(p));
+    }
+}
+
 }  // namespace
 
 double Mesh::triangleArea(size_t t) const {
@@ -61,11 +70,8 @@ Normalization normalizationOf(const Mesh& mesh, double sizeMm) {
     if (!(sizeMm > 0.0) || !std::isfinite(sizeMm))
         fail("mesh '", mesh.name, "': size must be a positive number of mm, got ", sizeMm);
     if (mesh.positions.empty()) fail("mesh '", mesh.name, "': no vertices to normalise");
-    glm::dvec3 lo(dv(mesh.positions[0])), hi(lo);
-    for (const glm::vec3& p : mesh.positions) {
-        lo = glm::min(lo, dv(p));
-        hi = glm::max(hi, dv(p));
-    }
+    glm::dvec3 lo, hi;
+    bounds(mesh, lo, hi);
     const double diagonal = glm::length(hi - lo);
     if (!(diagonal > 0.0) || !std::isfinite(diagonal))
         fail("mesh '", mesh.name, "': bounding box has zero or non-finite extent (diagonal ",
@@ -98,11 +104,8 @@ glm::dmat3 meshRotation(const glm::dvec3& degrees, bool zUp) {
 
 glm::dvec3 rotateMesh(Mesh& mesh, const glm::dmat3& rotation) {
     if (rotation == glm::dmat3(1.0) || mesh.positions.empty()) return glm::dvec3(0.0);
-    glm::dvec3 lo(dv(mesh.positions[0])), hi(lo);
-    for (const glm::vec3& p : mesh.positions) {
-        lo = glm::min(lo, dv(p));
-        hi = glm::max(hi, dv(p));
-    }
+    glm::dvec3 lo, hi;
+    bounds(mesh, lo, hi);
     const glm::dvec3 centre = 0.5 * (lo + hi);
     for (glm::vec3& p : mesh.positions) p = glm::vec3(centre + rotation * (dv(p) - centre));
     for (glm::vec3& n : mesh.normals) n = glm::vec3(rotation * dv(n));

@@ -5,8 +5,8 @@
 #include <glm/common.hpp>
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
+#include <tuple>
 #include <unordered_map>
-#include <utility>
 
 namespace tsis {
 
@@ -75,24 +75,51 @@ std::vector<uint32_t> weldPositions(const Mesh& mesh, double tolerance) {
     return weld;
 }
 
-size_t boundaryEdges(const Mesh& mesh) {
-    const std::vector<uint32_t> weld = weldPositions(mesh);
-    std::vector<std::pair<uint32_t, uint32_t>> edges;
+namespace {
+
+// Every triangle's edges between welded positions (a < b, degenerate ones
+// left out), sorted: an edge's uses are one run.
+struct WeldedEdge {
+    uint32_t a, b, triangle;
+};
+std::vector<WeldedEdge> sortedEdges(const Mesh& mesh, const std::vector<uint32_t>& weld) {
+    std::vector<WeldedEdge> edges;
     edges.reserve(3 * mesh.triangles.size());
-    for (const glm::uvec3& tri : mesh.triangles)
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = weld[tri[k]], b = weld[tri[(k + 1) % 3]];
-            if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+            const uint32_t a = weld[mesh.triangles[t][k]], b = weld[mesh.triangles[t][(k + 1) % 3]];
+            if (a != b) edges.push_back({std::min(a, b), std::max(a, b), uint32_t(t)});
         }
-    std::sort(edges.begin(), edges.end());
-    size_t boundary = 0;
+    std::sort(edges.begin(), edges.end(), [](const WeldedEdge& x, const WeldedEdge& y) {
+        return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
+    });
+    return edges;
+}
+
+// Calls f(edge) for each edge used by exactly one triangle.
+template <typename F>
+void forEachBoundaryEdge(const std::vector<WeldedEdge>& edges, F f) {
     for (size_t i = 0; i < edges.size();) {
         size_t j = i + 1;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        boundary += j - i == 1;
+        while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) ++j;
+        if (j - i == 1) f(edges[i]);
         i = j;
     }
+}
+
+}  // namespace
+
+size_t boundaryEdges(const Mesh& mesh) {
+    size_t boundary = 0;
+    forEachBoundaryEdge(sortedEdges(mesh, weldPositions(mesh)),
+                        [&](const WeldedEdge&) { ++boundary; });
     return boundary;
+}
+
+std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32_t>& weld) {
+    std::vector<char> on(mesh.triangles.size(), 0);
+    forEachBoundaryEdge(sortedEdges(mesh, weld), [&](const WeldedEdge& e) { on[e.triangle] = 1; });
+    return on;
 }
 
 }  // namespace tsis

@@ -21,5 +21,8 @@ std::vector<uint32_t> weldPositions(const Mesh& mesh, double tolerance);
 // Undirected edges between welded positions used by exactly one triangle: 0
 // for a closed surface, whatever its seams.
 size_t boundaryEdges(const Mesh& mesh);
+// Per triangle, whether it has such an edge, under the weld `weld`
+// (weldPositions).
+std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32_t>& weld);
 
 }  // namespace tsis
