@@ -1,6 +1,7 @@
 #include "render/render_options.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "physics/fresnel.h"
 #include "render/method.h"
@@ -9,70 +10,79 @@
 
 namespace tsis {
 
-RdPart parseRdPart(const std::string& name) {
-    if (name == "full") return RdPart::Full;
-    if (name == "local") return RdPart::Local;
-    if (name == "global") return RdPart::Global;
-    fail("--rd-part '", name, "': expected full, local or global");
+namespace {
+
+// Each choice's values and their names, once: parse and name both read it.
+template <typename E>
+using Choice = std::pair<E, const char*>;
+
+constexpr Choice<RdPart> kRdParts[] = {
+    {RdPart::Full, "full"}, {RdPart::Local, "local"}, {RdPart::Global, "global"}};
+constexpr Choice<ProfileModel> kProfileModels[] = {{ProfileModel::Dipole, "dipole"},
+                                                   {ProfileModel::BetterDipole, "better-dipole"},
+                                                   {ProfileModel::Pbd, "pbd"}};
+constexpr Choice<ExitTerm> kExitTerms[] = {{ExitTerm::Jensen, "jensen"},
+                                           {ExitTerm::Normalized, "normalized"}};
+constexpr Choice<EnergyTarget> kEnergyTargets[] = {{EnergyTarget::SemiInfinite, "semi-infinite"},
+                                                   {EnergyTarget::Object, "object"}};
+constexpr Choice<VolumetricEstimator> kEstimators[] = {{VolumetricEstimator::Camera, "camera"},
+                                                       {VolumetricEstimator::Light, "light"}};
+
+// The value named `name`; anything else is an error naming `option` and the
+// names ("expected a, b or c").
+template <typename E, size_t N>
+E parseChoice(const char* option, const std::string& name, const Choice<E> (&choices)[N]) {
+    for (const auto& [value, text] : choices)
+        if (name == text) return value;
+    std::string expected;
+    for (size_t i = 0; i < N; ++i)
+        expected += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + choices[i].second;
+    fail(option, " '", name, "': expected ", expected);
 }
 
+// The name of `value` (the first's for a value not listed).
+template <typename E, size_t N>
+const char* choiceName(E value, const Choice<E> (&choices)[N]) {
+    for (const auto& [v, text] : choices)
+        if (v == value) return text;
+    return choices[0].second;
+}
+
+}  // namespace
+
+RdPart parseRdPart(const std::string& name) {
+    return parseChoice("--rd-part", name, kRdParts);
+}
 const char* rdPartName(RdPart part) {
-    switch (part) {
-        case RdPart::Local:
-            return "local";
-        case RdPart::Global:
-            return "global";
-        default:
-            return "full";
-    }
+    return choiceName(part, kRdParts);
 }
 
 ProfileModel parseProfileModel(const std::string& name) {
-    if (name == "dipole") return ProfileModel::Dipole;
-    if (name == "better-dipole") return ProfileModel::BetterDipole;
-    if (name == "pbd") return ProfileModel::Pbd;
-    fail("--profile '", name, "': expected dipole, better-dipole or pbd");
+    return parseChoice("--profile", name, kProfileModels);
 }
-
 const char* profileModelName(ProfileModel model) {
-    switch (model) {
-        case ProfileModel::BetterDipole:
-            return "better-dipole";
-        case ProfileModel::Pbd:
-            return "pbd";
-        default:
-            return "dipole";
-    }
+    return choiceName(model, kProfileModels);
 }
 
 ExitTerm parseExitTerm(const std::string& name) {
-    if (name == "jensen") return ExitTerm::Jensen;
-    if (name == "normalized") return ExitTerm::Normalized;
-    fail("--exit '", name, "': expected jensen or normalized");
+    return parseChoice("--exit", name, kExitTerms);
 }
-
 const char* exitTermName(ExitTerm exit) {
-    return exit == ExitTerm::Normalized ? "normalized" : "jensen";
+    return choiceName(exit, kExitTerms);
 }
 
 EnergyTarget parseEnergyTarget(const std::string& name) {
-    if (name == "semi-infinite") return EnergyTarget::SemiInfinite;
-    if (name == "object") return EnergyTarget::Object;
-    fail("--energy '", name, "': expected semi-infinite or object");
+    return parseChoice("--energy", name, kEnergyTargets);
 }
-
 const char* energyTargetName(EnergyTarget energy) {
-    return energy == EnergyTarget::Object ? "object" : "semi-infinite";
+    return choiceName(energy, kEnergyTargets);
 }
 
 VolumetricEstimator parseVolumetricEstimator(const std::string& name) {
-    if (name == "camera") return VolumetricEstimator::Camera;
-    if (name == "light") return VolumetricEstimator::Light;
-    fail("--estimator '", name, "': expected camera or light");
+    return parseChoice("--estimator", name, kEstimators);
 }
-
 const char* volumetricEstimatorName(VolumetricEstimator estimator) {
-    return estimator == VolumetricEstimator::Light ? "light" : "camera";
+    return choiceName(estimator, kEstimators);
 }
 
 double exitScale(ExitTerm exit, double eta) {
