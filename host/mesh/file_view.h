@@ -1,10 +1,11 @@
-// The cameras and lights a mesh file places (glTF camera nodes and
-// KHR_lights_punctual), as the file gives them: what scene/from_file.h makes
-// a Camera and Lights of. Only glTF has them; other formats leave it empty.
+// The cameras, lights and materials a mesh file places (glTF camera nodes,
+// KHR_lights_punctual, glTF materials and OBJ .mtl files), as the file gives
+// them: what scene/from_file.h makes a Camera, Lights and materials of.
 #pragma once
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,37 @@ struct FileLight {
     double range = 0.0;      // 0: unlimited
 };
 
+// A material as the file gives it (a glTF material, an OBJ .mtl entry):
+// what scene/scene_materials.h makes an object's material of. Every field is
+// optional; the file's words are kept, the physics is decided later.
+struct FileMaterial {
+    std::string name;
+    // Surface albedo, linear RGB: glTF baseColorFactor (rgb), OBJ Kd.
+    std::optional<glm::dvec3> albedo;
+    // The albedo texture (glTF baseColorTexture, OBJ map_Kd): a path resolved
+    // against the file's folder, or for an image inside the file (glb, data
+    // URI) its encoded bytes with `texturePath` naming it for messages.
+    std::string texturePath;
+    std::string textureBytes;   // empty: read texturePath
+    bool textureSrgb = true;    // glTF base colour and 8-bit OBJ maps are sRGB
+    std::optional<double> eta;  // KHR_materials_ior, OBJ Ni
+    // KHR_materials_volume: the distance (file units) light travels before
+    // its colour becomes attenuationColor.
+    std::optional<double> attenuationDistance;
+    glm::dvec3 attenuationColor{1.0};
+    // tsis' own parameters (glTF extras {"tsis": {...}}, README "Scenes and
+    // materials"): a preset name, σs′/σa (1/mm), or albedo + mean free path (mm).
+    std::string preset;
+    std::optional<glm::dvec3> sigmaS, sigmaA, mfp;
+};
+
 struct FileView {
-    std::vector<FileCamera> cameras;  // in node order
-    std::vector<FileLight> lights;    // in node order
+    std::vector<FileCamera> cameras;      // in node order
+    std::vector<FileLight> lights;        // in node order
+    std::vector<FileMaterial> materials;  // Mesh::materialIds index it
     // What normalizeView scaled the positions by: mm per file unit (glTF: per metre).
     double mmPerFileUnit = 1.0;
-    bool empty() const { return cameras.empty() && lights.empty(); }
+    bool empty() const { return cameras.empty() && lights.empty() && materials.empty(); }
 };
 
 // The positions through the mesh's normalisation (directions unchanged).

@@ -10,6 +10,10 @@
 
 namespace tsis {
 
+uint32_t Mesh::materialOf(size_t t) const {
+    return materialIds.empty() ? kNoFileMaterial : materialIds[t];
+}
+
 namespace {
 
 glm::dvec3 dv(const glm::vec3& v) {

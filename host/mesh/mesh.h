@@ -11,15 +11,29 @@
 
 namespace tsis {
 
+// A triangle the file gives no material: it takes the scene's (--material).
+constexpr uint32_t kNoFileMaterial = 0xffffffffu;
+
 struct Mesh {
     std::string name;                  // for messages: file path or "builtin:NAME"
     std::vector<glm::vec3> positions;  // mm after normalizeMesh()
     std::vector<glm::vec3> normals;    // empty, or one per vertex
     std::vector<glm::vec2> uvs;        // empty, or one per vertex (atlas coordinates)
     std::vector<glm::uvec3> triangles;
+    // The file's own texture coordinates (empty, or one per vertex), for its
+    // textures: image convention, (0, 0) the top-left corner of the image
+    // (glTF's; OBJ's v is flipped on load). Kept apart from `uvs`, which the
+    // atlas may replace.
+    std::vector<glm::vec2> texcoords;
+    // The file material of each triangle (empty: none anywhere): an index
+    // into FileView::materials, or kNoFileMaterial.
+    std::vector<uint32_t> materialIds;
 
     bool hasNormals() const { return !normals.empty(); }
     bool hasUVs() const { return !uvs.empty(); }
+    bool hasTexcoords() const { return !texcoords.empty(); }
+    // The file material of triangle t (kNoFileMaterial when it has none).
+    uint32_t materialOf(size_t t) const;
     double surfaceArea() const;  // Σ triangle areas (mm²)
     // The volume a closed, consistently wound mesh encloses (mm³): the
     // divergence theorem, |Σ a·(b × c)| / 6 over the triangles.
