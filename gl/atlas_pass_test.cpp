@@ -30,17 +30,24 @@ class AtlasPassTest : public ::testing::Test {
         std::vector<LightView> views;
         views.push_back(makeLightView(light, 5.0f, 1024));
         LightViewPass lightPass;
-        lightPass.run(gpu, views, 1.3f);
+        lightPass.run(gpu, views, materials());
         GeometryAtlasPass geometry;
         geometry.run(gpu, res);
         FluxAtlasPass atlas;
-        atlas.run(geometry.target(), views, lightPass.shadows(), 1.3f);
+        atlas.run(geometry.target(), views, lightPass.shadows(), materials());
         double expected = test::hostFlux(mesh, light, 1.3, 1);
         double got = atlasFlux(atlas.target(), 1);
         return std::abs(got - expected) / expected;
     }
+    // η = 1.3 everywhere, no albedo atlas.
+    const MaterialTables& materials() {
+        tables.updateMedia({{1.3f, 1.0f}});
+        tables.updateAlbedo({}, 0, 0);
+        return tables;
+    }
     GlContext gl;
     Mesh mesh;
+    MaterialTables tables;
 };
 
 TEST_F(AtlasPassTest, DirectionalFluxEqualsIntegralOfIrradiance) {
@@ -65,7 +72,7 @@ TEST_F(AtlasPassTest, LightViewMapHoldsTheSameFlux) {
     std::vector<LightView> views;
     views.push_back(makeLightView(dir, 5.0f, 1024));
     LightViewPass pass;
-    pass.run(gpu, views, 1.3f);
+    pass.run(gpu, views, materials());
     double got = atlasFlux(*views[0].target, 0);
     double expected = test::hostFlux(mesh, dir, 1.3, 0);
     EXPECT_NEAR(got / expected, 1.0, 0.01);

@@ -60,13 +60,14 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBindVertexArray(0);
 
     std::vector<float> vertices;
-    constexpr int kIndexedStride = 7;
+    constexpr int kIndexedStride = 9;
     vertices.reserve(mesh.positions.size() * kIndexedStride);
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         const glm::vec3& p = mesh.positions[v];
         const glm::vec3& n = mesh.normals[v];
+        const glm::vec2& uv = mesh.uvs[v];
         vertices.insert(vertices.end(),
-                        {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v])});
+                        {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v]), uv.x, uv.y});
     }
     glGenVertexArrays(1, &indexedVao_);
     glBindVertexArray(indexedVao_);
@@ -82,6 +83,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     floatAttribute(0, 3, kIndexedStride * sizeof(float), 0);  // position
     floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
     floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
+    floatAttribute(2, 2, kIndexedStride * sizeof(float), 7);  // uv (albedo atlas)
     glBindVertexArray(0);
     checkGl("GpuMesh upload");
 }

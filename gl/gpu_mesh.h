@@ -14,14 +14,14 @@ namespace tsis {
 
 class GpuMesh {
   public:
-    // Attributes: 0 position, 1 normal, 4 medium tag (mesh/media.h);
-    // unindexed only: 2 uv, 3 area ratio.
+    // Attributes: 0 position, 1 normal, 2 uv, 4 medium tag (mesh/media.h);
+    // unindexed only: 3 area ratio.
     explicit GpuMesh(const Mesh& mesh);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    void draw() const;                         // indexed: positions and normals
+    void draw() const;                         // indexed: positions, normals, uvs
     void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
 

@@ -41,11 +41,10 @@ void ShadowMapArray::update(const std::vector<LightView>& lights) {
                            0, id_, GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, res, res, 1);
 }
 
-void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
-                int unit, const ShadowMapArray& shadows) {
+void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, int unit,
+                const ShadowMapArray& shadows) {
     TSIS_CHECK_LE(lights.size(), static_cast<size_t>(kMaxLights));
     program.set("u_lightCount", static_cast<int>(lights.size()));
-    program.set("u_eta", eta);
     program.set("u_shadowMaps", unit);
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     glBindTexture(GL_TEXTURE_2D_ARRAY, shadows.id());

@@ -44,9 +44,9 @@ class ShadowMapArray {
     int resolution_ = 0, layers_ = 0;
 };
 
-// Sets u_lightCount, u_light*, u_shadow* and u_eta on `program`, binding the
+// Sets u_lightCount, u_light* and u_shadow* on `program`, binding the
 // shadow map array to texture unit `unit`.
-void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, float eta,
-                int unit, const ShadowMapArray& shadows);
+void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, int unit,
+                const ShadowMapArray& shadows);
 
 }  // namespace tsis

@@ -6,8 +6,10 @@ namespace tsis {
 
 namespace {
 
-// Texture units: 0–3 for a pass's own inputs, 4 for the shadow map array.
+// Texture units: 0–3 for a pass's own inputs, 4 for the shadow map array, 5
+// and 6 for the material tables.
 constexpr int kShadowUnit = 4;
+constexpr int kMediaUnit = 5;
 
 void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
     p.set(name, unit);
@@ -27,9 +29,11 @@ void ensureTarget(std::unique_ptr<RenderTarget>& t, int w, int h, std::vector<GL
 LightViewPass::LightViewPass()
     : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {}
 
-void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta) {
+void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
+                        const MaterialTables& media) {
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit, shadows_);
+    bindLights(program_, lights, kShadowUnit, shadows_);
+    media.bind(program_, kMediaUnit);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
@@ -71,11 +75,12 @@ FluxAtlasPass::FluxAtlasPass() : program_("fullscreen.vert", "flux_atlas.frag") 
 }
 
 void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-                        const ShadowMapArray& shadows, float eta) {
+                        const ShadowMapArray& shadows, const MaterialTables& media) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
     target_->bindAndClear();
     program_.use();
-    bindLights(program_, lights, eta, kShadowUnit, shadows);
+    bindLights(program_, lights, kShadowUnit, shadows);
+    media.bind(program_, kMediaUnit);
     bindTexture(program_, "u_position", 0, geometry.color(0));
     bindTexture(program_, "u_normal", 1, geometry.color(1));
     glDisable(GL_DEPTH_TEST);
@@ -85,8 +90,8 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
 }
 
 void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
-                      const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj,
-                      int width, int height, bool irradiance) {
+                      const ShadowMapArray& shadows, const MaterialTables& media,
+                      const glm::mat4& viewProj, int width, int height, bool irradiance) {
     current_ = irradiance ? 1 : 0;
     Variant& v = variants_[current_];
     if (!v.program)
@@ -97,7 +102,8 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
     v.target->bindAndClear();
     const ShaderProgram& program = *v.program;
     program.use();
-    bindLights(program, lights, eta, kShadowUnit, shadows);
+    bindLights(program, lights, kShadowUnit, shadows);
+    media.bind(program, kMediaUnit);
     program.set("u_viewProj", viewProj);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -114,7 +120,7 @@ CompositePass::CompositePass()
 }
 
 void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbuffer,
-                             const glm::vec3& eye, float eta, float exitScale) {
+                             const glm::vec3& eye, const MaterialTables& media) {
     int w = gbuffer.width(), h = gbuffer.height();
     ensureTarget(radianceTarget_, w, h, {GL_RGBA32F}, false);
     if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
@@ -122,9 +128,8 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbu
     radiosity_->upload(radiosityRGBA);
     radianceTarget_->bindAndClear();
     radianceProgram_.use();
-    radianceProgram_.set("u_eta", eta);
     radianceProgram_.set("u_eye", eye);
-    radianceProgram_.set("u_exitScale", exitScale);
+    media.bind(radianceProgram_, kMediaUnit);
     bindTexture(radianceProgram_, "u_radiosity", 0, radiosity_->id());
     bindTexture(radianceProgram_, "u_position", 1, gbuffer.color(0));
     bindTexture(radianceProgram_, "u_normal", 2, gbuffer.color(1));
@@ -134,13 +139,15 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbu
 }
 
 void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                            const ShadowMapArray& shadows, const glm::vec3& eye, float eta,
-                            float key, float lavg, float specular, float shininess) {
+                            const ShadowMapArray& shadows, const glm::vec3& eye,
+                            const MaterialTables& media, float key, float lavg, float specular,
+                            float shininess) {
     int w = gbuffer.width(), h = gbuffer.height();
     ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
     colorTarget_->bindAndClear();
     toneMapProgram_.use();
-    bindLights(toneMapProgram_, lights, eta, kShadowUnit, shadows);
+    bindLights(toneMapProgram_, lights, kShadowUnit, shadows);
+    media.bind(toneMapProgram_, kMediaUnit);
     toneMapProgram_.set("u_eye", eye);
     toneMapProgram_.set("u_key", key);
     toneMapProgram_.set("u_lavg", lavg);

@@ -10,6 +10,7 @@
 
 #include "gl/gpu_mesh.h"
 #include "gl/light_view.h"
+#include "gl/material_tables.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
 #include "scene/scene.h"
@@ -22,7 +23,7 @@ namespace tsis {
 class LightViewPass {
   public:
     LightViewPass();
-    void run(const GpuMesh& mesh, std::vector<LightView>& lights, float eta);
+    void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
     // The shadow maps of the last run, for the passes that light.
     const ShadowMapArray& shadows() const { return shadows_; }
 
@@ -50,7 +51,7 @@ class FluxAtlasPass {
   public:
     FluxAtlasPass();
     void run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, float eta);
+             const ShadowMapArray& shadows, const MaterialTables& media);
     const RenderTarget& target() const { return *target_; }
 
   private:
@@ -65,8 +66,8 @@ class FluxAtlasPass {
 class GBufferPass {
   public:
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, float eta, const glm::mat4& viewProj, int width,
-             int height, bool irradiance);
+             const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
+             int width, int height, bool irradiance);
     const RenderTarget& target() const { return *variants_[current_].target; }
 
   private:
@@ -84,12 +85,12 @@ class CompositePass {
     CompositePass();
     // radiosity: width*height RGBA floats, GL row order. Returns nothing; read
     // radiance() after it, then call toneMap().
-    // `exitScale`: the exit term's factor over Ft/π (render_options.h exitScale).
+    // η and the exit term's factor over Ft/π of each pixel's medium from `media`.
     void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
-                  float eta, float exitScale);
+                  const MaterialTables& media);
     void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                 const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key,
-                 float lavg, float specular, float shininess);
+                 const ShadowMapArray& shadows, const glm::vec3& eye, const MaterialTables& media,
+                 float key, float lavg, float specular, float shininess);
     const RenderTarget& radianceTarget() const { return *radianceTarget_; }
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 

@@ -26,7 +26,20 @@ uniform int u_lightShadows[MAX_LIGHTS];      // 0: the light casts no shadows (V
 // One layer per light: a single sampler, since dynamically indexed sampler
 // arrays cost one lookup per array element on llvmpipe.
 uniform sampler2DArrayShadow u_shadowMaps;
-uniform float u_eta;
+// Per medium (gl/material_tables.h): r = η, g = the exit term's scale; texel
+// m = tag − 1 at (m mod 4096, m / 4096).
+uniform sampler2D u_media;
+vec4 mediumOf(float tag) {
+    int m = max(int(tag + 0.5) - 1, 0);
+    return texelFetch(u_media, ivec2(m % 4096, m / 4096), 0);
+}
+// With u_textured, the albedo factor of each atlas texel (render/albedo_atlas.h):
+// light entering there is scaled by it, light leaving too.
+uniform sampler2D u_albedo;
+uniform bool u_textured;
+vec3 albedoFactor(vec2 atlasUv) {
+    return u_textured ? texture(u_albedo, atlasUv).rgb : vec3(1.0);
+}
 
 // Unit vector from p towards light i, and the 1/d² falloff of a point light.
 vec3 toLight(int i, vec3 p, out float falloff) {
@@ -63,8 +76,8 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     return 0.25 * sum;
 }
 
-// E(x) of docs/design.md §2, summed over the lights.
-vec3 irradiance(vec3 p, vec3 n) {
+// E(x) of docs/design.md §2, summed over the lights, into a medium of index eta.
+vec3 irradiance(vec3 p, vec3 n, float eta) {
     vec3 e = vec3(0.0);
     // A constant trip count (unrolled, so the light uniforms are read at
     // constant indices: llvmpipe gathers dynamically indexed ones per lane).
@@ -74,7 +87,7 @@ vec3 irradiance(vec3 p, vec3 n) {
         vec3 l = toLight(i, p, falloff);
         float c = dot(n, l);
         if (c <= 0.0) continue;
-        e += u_lightRgb[i] * (fresnelT(u_eta, c) * c * falloff * visibility(i, p, n, l));
+        e += u_lightRgb[i] * (fresnelT(eta, c) * c * falloff * visibility(i, p, n, l));
     }
     return e;
 }

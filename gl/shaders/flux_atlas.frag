@@ -13,5 +13,6 @@ void main() {
         return;
     }
     vec4 n = texelFetch(u_normal, px, 0);
-    o_flux = vec4(irradiance(p.xyz, n.xyz) * n.w, 1.0);
+    o_flux = vec4(irradiance(p.xyz, n.xyz, mediumOf(p.w).r) * n.w, 1.0);
+    if (u_textured) o_flux.rgb *= texelFetch(u_albedo, px, 0).rgb;
 }

@@ -1,9 +1,10 @@
 // Camera G-buffer: world position (w = the medium tag 1 + medium, 0 where
-// uncovered), normal, and with
+// uncovered), normal (w: below), and with
 // TSIS_GBUFFER_IRRADIANCE the irradiance E(x) at the pixel's surface point
 // (for camera-view methods such as LSS; the shadow taps cost most of the pass).
 in vec3 v_position;
 in vec3 v_normal;
+in vec2 v_uv;
 flat in float v_medium;
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
@@ -14,8 +15,11 @@ layout(location = 2) out vec4 o_irradiance;
 void main() {
     vec3 n = normalize(v_normal);
     o_position = vec4(v_position, v_medium);
-    o_normal = vec4(n, 1.0);
+    // With an albedo atlas, the normal's w is the pixel's atlas texel + 1 (the
+    // host reads its exit factor there, render/albedo_atlas.h), else 1.
+    vec2 texel = min(floor(v_uv * vec2(textureSize(u_albedo, 0))), vec2(textureSize(u_albedo, 0) - 1));
+    o_normal = vec4(n, u_textured ? 1.0 + texel.y * float(textureSize(u_albedo, 0).x) + texel.x : 1.0);
 #ifdef TSIS_GBUFFER_IRRADIANCE
-    o_irradiance = vec4(irradiance(v_position, n), 1.0);
+    o_irradiance = vec4(irradiance(v_position, n, mediumOf(v_medium).r) * albedoFactor(v_uv), 1.0);
 #endif
 }

@@ -4,6 +4,7 @@
 // the area the texel's solid angle covers. Directional: flux = I · Ft · texel area.
 in vec3 v_position;
 in vec3 v_normal;
+in vec2 v_uv;
 flat in float v_medium;  // the flux's a: 1 + medium, 0 where no surface
 uniform int u_light;
 uniform float u_tanHalf;     // point: tan of half the field of view
@@ -23,7 +24,7 @@ void main() {
         float step = 2.0 * u_tanHalf / u_resolution.x;
         measure = step * step / pow(1.0 + dot(t, t), 1.5);
     }
-    vec3 flux = c > 0.0 ? u_lightRgb[u_light] * (fresnelT(u_eta, c) * measure) : vec3(0.0);
-    o_flux = vec4(flux, v_medium);
+    vec3 flux = c > 0.0 ? u_lightRgb[u_light] * (fresnelT(mediumOf(v_medium).r, c) * measure) : vec3(0.0);
+    o_flux = vec4(flux * albedoFactor(v_uv), v_medium);
     o_position = vec4(v_position, length(u_lightVec[u_light] - v_position));
 }

@@ -10,7 +10,9 @@
 #include "mesh/repair.h"
 #include "mesh/uv_check.h"
 #include "physics/material.h"
+#include "render/albedo_inversion.h"
 #include "render/method.h"
+#include "render/object_materials.h"
 #include "render/render_params.h"
 #include "scene/from_file.h"
 #include "util/error.h"
@@ -43,6 +45,12 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
              "R,G,B  reduced scattering σs' in 1/mm (overrides the preset)"},
             {"sigma-a", true, false, "R,G,B  absorption σa in 1/mm (overrides the preset)"},
             {"eta", true, false, "E  relative index of refraction (overrides the preset)"},
+            {"albedo", true, false,
+             "R,G,B  surface albedo, the total diffuse reflectance in (0, 0.99] (with --mfp, "
+             "instead of --sigma-s/--sigma-a; overrides the mesh file's materials)"},
+            {"mfp", true, false,
+             "R,G,B  mean free path 1/σt' in mm (with --albedo; alone it keeps the preset's or "
+             "the file's albedo, textures included)"},
             {"light", true, true,
              "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, "
              "irradiance); repeatable"},
@@ -99,9 +107,39 @@ Material materialFromArgs(const Args& args) {
         m.eta = parseNumber("--eta", *v);
         custom = true;
     }
-    if (custom) m.name = "custom";
     validateMaterial(m);
+    // The artist's parameters (render/albedo_inversion.h): --albedo with
+    // --mfp, or --mfp alone with the material's own albedo.
+    const auto albedo = args.value("albedo"), mfp = args.value("mfp");
+    if (albedo && (args.has("sigma-s") || args.has("sigma-a")))
+        fail("--albedo sets σs' and σa: not with --sigma-s or --sigma-a");
+    if (albedo && !mfp)
+        fail(
+            "--albedo needs --mfp R,G,B (mm): the albedo fixes σs'/σt', the mean free path the "
+            "scale");
+    if (mfp) {
+        const ProfileModel model = profileModelFromArgs(args);
+        const glm::dvec3 a = albedo ? parseVec3("--albedo", *albedo) : albedoOf(m, model);
+        m = materialFromAlbedo("custom", a, parseVec3("--mfp", *mfp), m.eta, model);
+        custom = true;
+    }
+    if (custom) m.name = "custom";
     return m;
+}
+
+MaterialOverrides materialOverridesFromArgs(const Args& args) {
+    MaterialOverrides o;
+    o.replaceAll =
+        args.has("material") || args.has("albedo") || args.has("sigma-s") || args.has("sigma-a");
+    if (auto v = args.value("mfp")) o.mfp = parseVec3("--mfp", *v);
+    if (auto v = args.value("eta")) o.eta = parseNumber("--eta", *v);
+    return o;
+}
+
+ProfileModel profileModelFromArgs(const Args& args) {
+    RenderOptions r;
+    if (auto v = args.value("profile")) findRenderParam("profile")->set(r, *v);
+    return r.profile;
 }
 
 Light parseLight(const std::string& spec) {
@@ -272,6 +310,9 @@ void loadSceneMesh(Scene& scene, const Args& args) {
     use.fov = !args.has("fov");
     use.lights = !args.has("light");
     useFileView(scene, view, use, size, mesh.name);
+    scene.objectMaterials =
+        objectMaterials(view.materials, scene.material, materialOverridesFromArgs(args),
+                        profileModelFromArgs(args), view.mmPerFileUnit, mesh.name);
     scene.mesh = finish(std::move(mesh), size, o);
 }
 

@@ -6,6 +6,7 @@
 
 #include "atlas/atlas.h"
 #include "cli/args.h"
+#include "render/object_materials.h"
 #include "render/render_options.h"
 #include "scene/scene.h"
 
@@ -40,7 +41,14 @@ const std::vector<OptionSpec>& sceneOptionSpecs();
 double sizeMmFromArgs(const Args& args);
 
 // Material from --material (SceneDefaults::material) with --sigma-s/--sigma-a/--eta overrides.
+// --albedo R,G,B with --mfp R,G,B (or --mfp alone: the material's own albedo)
+// replace σs'/σa by the inversion through --profile's total reflectance.
 Material materialFromArgs(const Args& args);
+// What --material, --albedo, --sigma-s/-a (all: the file's materials are not
+// used), --mfp and --eta say over a mesh file's materials.
+MaterialOverrides materialOverridesFromArgs(const Args& args);
+// --profile's model (the default's when not given).
+ProfileModel profileModelFromArgs(const Args& args);
 
 // "point:X,Y,Z:R,G,B" or "dir:X,Y,Z:R,G,B".
 Light parseLight(const std::string& spec);

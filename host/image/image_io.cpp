@@ -171,4 +171,54 @@ ImageF readImageF(const std::string& path) {
     return img;
 }
 
+namespace {
+
+double srgbToLinear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A file name OIIO can pick a reader by, for bytes in memory.
+std::string memoryName(const std::string& name, const std::string& bytes) {
+    if (bytes.rfind("\x89PNG", 0) == 0) return "texture.png";
+    if (bytes.rfind("\xff\xd8", 0) == 0) return "texture.jpg";
+    if (bytes.rfind("\x76\x2f\x31\x01", 0) == 0) return "texture.exr";
+    return name;
+}
+
+}  // namespace
+
+ImageF readColorTexture(const std::string& name, const std::string& bytes, bool srgb) {
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    std::unique_ptr<OIIO::ImageInput> in;
+    if (bytes.empty()) {
+        in = OIIO::ImageInput::open(name);
+    } else {
+        OIIO::ImageSpec config;
+        OIIO::Filesystem::IOProxy* proxy = &memory;
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        in = OIIO::ImageInput::open(memoryName(name, bytes), &config);
+    }
+    if (!in) fail("cannot read texture '", name, "': ", OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
+        static_cast<long long>(spec.width) * spec.height > (1LL << 28))
+        fail("texture '", name, "': ", spec.width, "×", spec.height, " is not a usable size");
+    std::vector<float> raw(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))
+        fail("cannot read texture '", name, "': ", in->geterror());
+    const bool decode = srgb && !spec.format.is_floating_point();
+    ImageF img{spec.width, spec.height, 3, {}};
+    img.pixels.resize(static_cast<size_t>(img.width) * img.height * 3);
+    const int colour = spec.nchannels >= 3 ? 3 : 1;  // grey (and alpha): repeated
+    for (size_t i = 0; i < static_cast<size_t>(img.width) * img.height; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double v = raw[i * spec.nchannels + std::min(c, colour - 1)];
+            if (!std::isfinite(v) || v < 0)
+                fail("texture '", name, "': pixel ", i % img.width, ",", i / img.width,
+                     " is negative or not a number");
+            img.pixels[i * 3 + c] = static_cast<float>(decode ? srgbToLinear(v) : v);
+        }
+    return img;
+}
+
 }  // namespace tsis

@@ -39,6 +39,13 @@ void writeImage8(const std::string& path, int width, int height, int channels,
 
 ImageF readImageF(const std::string& path);
 
+// A colour texture as linear RGB (three channels; a grey one repeated, alpha
+// dropped): from `bytes` (an encoded PNG/JPEG/EXR held in memory; `name` for
+// messages and, by its extension or the bytes' signature, the format) or,
+// when empty, the file `name`. With `srgb`, 8/16-bit pixels are decoded from
+// sRGB (float formats are linear already). Throws Error naming it.
+ImageF readColorTexture(const std::string& name, const std::string& bytes, bool srgb);
+
 // Reorders rows so that row 0 becomes the last (GL read-backs → images).
 template <typename T>
 void flipRows(std::vector<T>& data, int width, int height, int channels) {

@@ -12,6 +12,7 @@ Media findMedia(const Mesh& mesh) {
     media.ofVertex.assign(mesh.positions.size(), 0);
     if (mesh.triangles.empty()) {
         media.count = 1;
+        media.materialOf.assign(1, kNoFileMaterial);
         return media;
     }
     // Seams of one solid weld; solids a gap apart (0.5 mm between two cubes
@@ -44,6 +45,7 @@ Media findMedia(const Mesh& mesh) {
         }
     if (onePiece) {
         media.count = 1;
+        media.materialOf.assign(1, mesh.materialOf(0));
         return media;
     }
     // A piece with an edge of one triangle is open: the open pieces together
@@ -64,6 +66,7 @@ Media findMedia(const Mesh& mesh) {
             continue;
         }
         id = int(media.count++);
+        media.materialOf.push_back(mesh.materialOf(size_t(&t - mesh.triangles.data())));
         if (open[root]) openId = id;
     }
     for (size_t v = 0; v < mesh.positions.size(); ++v) {

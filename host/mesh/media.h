@@ -13,6 +13,10 @@ namespace tsis {
 struct Media {
     uint32_t count = 0;
     std::vector<uint32_t> ofVertex;  // the medium of each vertex (and so of its triangles)
+    // The file material of each medium: its first triangle's (Mesh::materialOf).
+    // A piece whose triangles carry several scatters light as this one; the
+    // others' albedo still shows, per texel (render/albedo_atlas.h).
+    std::vector<uint32_t> materialOf;
 };
 
 // One medium per closed connected piece of the surface (triangles sharing a

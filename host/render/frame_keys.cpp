@@ -10,12 +10,25 @@ uint64_t meshHash(const Mesh& mesh) {
         .addAll(mesh.normals)
         .addAll(mesh.uvs)
         .addAll(mesh.triangles)
+        .addAll(mesh.texcoords)
+        .addAll(mesh.materialIds)
         .digest();
+}
+
+// A texture by its name and size.
+void hashMaterials(Hasher& h, const Scene& scene) {
+    h.add(scene.material.sigmaSPrime).add(scene.material.sigmaA).add(scene.material.eta);
+    for (const ObjectMaterial& o : scene.objectMaterials) {
+        h.add(o.medium.sigmaSPrime).add(o.medium.sigmaA).add(o.medium.eta);
+        h.add(o.albedo).add(o.textureScale);
+        if (o.texture)
+            h.add(o.texture->name).add(o.texture->image.width).add(o.texture->image.height);
+    }
 }
 
 void hashIrradiance(Hasher& h, const Scene& scene) {
     for (const Light& l : scene.lights) h.add(l.type).add(l.vec).add(l.rgb).add(l.shadows);
-    h.add(scene.material.eta);
+    hashMaterials(h, scene);
 }
 
 namespace {
@@ -37,7 +50,7 @@ uint64_t lightingKey(const Scene& scene, const RenderOptions& o, uint64_t meshHa
 
 uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t lighting) {
     Hasher h(lighting);
-    h.add(scene.material.sigmaSPrime).add(scene.material.sigmaA);
+    hashMaterials(h, scene);
     const Camera& c = scene.camera;
     h.add(c.eye).add(c.target).add(c.up).add(c.fovYDegrees);
     h.add(o.method);

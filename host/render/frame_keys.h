@@ -14,8 +14,12 @@ namespace tsis {
 // The mesh's geometry and UVs: decides when to re-upload it.
 uint64_t meshHash(const Mesh& mesh);
 
-// The lights field by field, and η (Fresnel at entry): what the irradiance
-// on the surface depends on besides the mesh.
+// Every material: media (σs′, σa, η), albedos and textures.
+void hashMaterials(Hasher& h, const Scene& scene);
+
+// The lights field by field, and the materials (η: Fresnel at entry; albedo:
+// the entry factor): what the light entering the surface depends on besides
+// the mesh.
 void hashIrradiance(Hasher& h, const Scene& scene);
 
 // Everything the light maps and the flux atlas depend on: the mesh, the

@@ -46,6 +46,9 @@ struct SurfacePoints {
     cl::Buffer xyz;           // count float4 (xyz of each covered pixel)
     std::vector<float> host;  // the same float4s on the host
     std::vector<int> pixel;   // GL pixel index y*width+x (row 0 = bottom)
+    // The albedo's exit factor of each point, rgb (render/albedo_atlas.h);
+    // empty where every albedo is its medium's.
+    std::vector<float> exitAlbedo;
 };
 
 // The camera's G-buffer on the CL side: width*height float4 each, GL row order.

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "util/error.h"
+
 namespace tsis {
 
 namespace {
@@ -80,11 +82,20 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
                 return;
             }
             const std::vector<float> position = gbuffer.target->readRGBA(0);
+            // With an albedo atlas, the normal's w holds each pixel's texel + 1.
+            const AlbedoAtlas& albedo = *ctx.albedo;
+            const std::vector<float> normal =
+                albedo.empty() ? std::vector<float>() : gbuffer.target->readRGBA(1);
             for (int i = 0; i < ctx.width * ctx.height; ++i)
                 if (position[static_cast<size_t>(i) * 4 + 3] > 0) {
                     p.pixel.push_back(i);
                     p.host.insert(p.host.end(), position.begin() + i * 4,
                                   position.begin() + i * 4 + 4);
+                    if (albedo.empty()) continue;
+                    const float texel = normal[static_cast<size_t>(i) * 4 + 3] - 1.0f;
+                    const glm::vec3 f =
+                        albedo.atTexel(texel >= 0 ? static_cast<size_t>(texel) : SIZE_MAX);
+                    p.exitAlbedo.insert(p.exitAlbedo.end(), {f.x, f.y, f.z});
                 }
             p.count = static_cast<int>(p.pixel.size());
             p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
@@ -143,29 +154,49 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
         });
 }
 
-FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph, const FrameContext& ctx) {
+FrameGraphId<RadiosityCl> GlClStaging::declareRadiosity(FrameGraph& graph, size_t slot) {
+    while (slotRadiosity_.size() < slot)
+        slotRadiosity_.push_back(std::make_unique<GrowingBuffer>());
+    return graph.create<RadiosityCl>(concat("radiosity_cl_", slot),
+                                     RadiosityCl{slotRadiosity_[slot - 1].get()});
+}
+
+FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph,
+                                                      const std::vector<FrameContext>& runs) {
     const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
+    const FrameContext& ctx = runs.front();
     graph.addPass(
         "read_radiosity",
         [&](FrameGraph::Builder& b) {
             b.read(ctx.points);
-            b.read(ctx.radiosity);
+            for (const FrameContext& run : runs) b.read(run.radiosity);
             b.write(image);
         },
-        [&ctx, image](FrameGraph::Resources& res) {
+        [&runs, image](FrameGraph::Resources& res) {
+            const FrameContext& ctx = runs.front();
             const SurfacePoints& points = res.read(ctx.points);
-            std::vector<float> packed(static_cast<size_t>(points.count) * 4);
-            if (!packed.empty())
-                ctx.cl->queue().enqueueReadBuffer(res.read(ctx.radiosity).storage->buffer, CL_TRUE,
-                                                  0, packed.size() * sizeof(float), packed.data());
+            const size_t count = static_cast<size_t>(points.count);
+            // Each run's B of every point; a point keeps its medium's run.
+            std::vector<std::vector<float>> packed(runs.size());
+            for (size_t k = 0; k < runs.size(); ++k) {
+                packed[k].resize(count * 4);
+                if (count > 0)
+                    ctx.cl->queue().enqueueReadBuffer(res.read(runs[k].radiosity).storage->buffer,
+                                                      CL_TRUE, 0, count * 4 * sizeof(float),
+                                                      packed[k].data());
+                res.addBytes(bytesOf(packed[k]));
+            }
             std::vector<float>& rgba = res.write(image).rgba;
             rgba.assign(static_cast<size_t>(ctx.width) * ctx.height * 4, 0.0f);
-            for (size_t k = 0; k < points.pixel.size(); ++k) {
-                const size_t i = static_cast<size_t>(points.pixel[k]) * 4;
-                std::memcpy(&rgba[i], &packed[k * 4], 3 * sizeof(float));
-                rgba[i + 3] = 1.0f;
+            for (size_t k = 0; k < count; ++k) {
+                const size_t slot =
+                    runs.size() == 1 ? 0 : ctx.media->slotOfTag(points.host[k * 4 + 3]);
+                const float* b = &packed[slot][k * 4];
+                float* out = &rgba[static_cast<size_t>(points.pixel[k]) * 4];
+                for (int c = 0; c < 3; ++c)
+                    out[c] = points.exitAlbedo.empty() ? b[c] : b[c] * points.exitAlbedo[k * 3 + c];
+                out[3] = 1.0f;
             }
-            res.addBytes(bytesOf(packed));
         });
     return image;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "render/frame_graph.h"
@@ -21,8 +22,14 @@ class GlClStaging {
     void declare(FrameGraph& graph, FrameContext& ctx);
     // The uploads that write ctx's handles from the GL targets.
     void addUploads(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl);
-    // The methods' radiosity, back into a width×height image.
-    FrameGraphId<RadiosityImage> addReadback(FrameGraph& graph, const FrameContext& ctx);
+    // The radiosity of the method's run for material slot `slot` > 0 (slot 0
+    // writes ctx.radiosity of declare).
+    FrameGraphId<RadiosityCl> declareRadiosity(FrameGraph& graph, size_t slot);
+    // The methods' radiosity, back into a width×height image: each point's
+    // from the run of its medium's material (runs[slot], render/scene_media.h),
+    // times its albedo's exit factor.
+    FrameGraphId<RadiosityImage> addReadback(FrameGraph& graph,
+                                             const std::vector<FrameContext>& runs);
 
   private:
     // One attachment of a GL target into a CL buffer, when its version changed.
@@ -31,6 +38,7 @@ class GlClStaging {
                         uint64_t& uploaded, FrameGraphId<AtlasCl> out);
 
     GrowingBuffer fluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_, gbuffer_[3];
+    std::vector<std::unique_ptr<GrowingBuffer>> slotRadiosity_;  // slots 1, 2, …
     std::vector<GrowingBuffer> lightMaps_;
     uint64_t fluxUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0, lightsUploaded_ = 0;
     // The covered pixels of the G-buffer version pointsOf_ (kept while the

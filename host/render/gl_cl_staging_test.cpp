@@ -27,7 +27,8 @@ TEST(GlClStagingDeathTest, AMethodThatForgetsTheRadiosityIsACheckNamingIt) {
                     b.write(table);
                 },
                 [](FrameGraph::Resources&) {});
-            const auto image = staging.addReadback(graph, ctx);
+            const std::vector<FrameContext> runs{ctx};
+            const auto image = staging.addReadback(graph, runs);
             FrameStats stats;
             graph.execute(stats, image);
         },

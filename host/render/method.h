@@ -11,11 +11,13 @@
 
 #include "cl/cl_runtime.h"
 #include "physics/dipole.h"
+#include "render/albedo_atlas.h"
 #include "render/frame_graph.h"
 #include "render/frame_resources.h"
 #include "render/frame_stats.h"
 #include "render/profiles.h"
 #include "render/render_options.h"
+#include "render/scene_media.h"
 #include "scene/projection.h"
 #include "scene/scene.h"
 
@@ -26,6 +28,14 @@ namespace tsis {
 // pass, through FrameGraph::Resources, after declaring them).
 struct FrameContext {
     const Scene* scene = nullptr;
+    // The medium this run of the method integrates: the scene's material, or
+    // with several, one of them — the renderer runs the method once per
+    // material and keeps each point's own (docs/design.md §2 "Materials").
+    const Material* material = nullptr;
+    // The scene's media, their materials and η (render/scene_media.h).
+    const SceneMedia* media = nullptr;
+    // The albedo factor per atlas texel (render/albedo_atlas.h; empty: none).
+    const AlbedoAtlas* albedo = nullptr;
     const RenderOptions* options = nullptr;
     ClRuntime* cl = nullptr;
     FrameStats* stats = nullptr;  // setup-time values; passes report through Resources
@@ -57,7 +67,7 @@ struct FrameContext {
     // The profile every method integrates: --profile's Rd (or one of the
     // hybrid's parts), scaled by --energy.
     KeyedProfile profile(RdPart part = RdPart::Full) const {
-        return scaledProfile(radialProfile(scene->material, *options, part), profileScale);
+        return scaledProfile(radialProfile(*material, *options, part), profileScale);
     }
     cl::Buffer& radiosityBuffer(const FrameGraph::Resources& res, int pointCount) const {
         return res.write(radiosity).storage->reserve(

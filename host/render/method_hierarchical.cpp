@@ -12,8 +12,8 @@ namespace tsis {
 HierarchicalMethod::HierarchicalMethod(ClRuntime& cl) : cl_(cl) {}
 
 void HierarchicalMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
-    const double spacing = ctx.options->spacingMm > 0 ? ctx.options->spacingMm
-                                                      : smallestMeanFreePath(ctx.scene->material);
+    const double spacing =
+        ctx.options->spacingMm > 0 ? ctx.options->spacingMm : smallestMeanFreePath(*ctx.material);
     const auto tree = graph.create<Marker>("hierarchical_tree");
     graph.addPass(
         "hierarchical_build", [&](FrameGraph::Builder& b) { b.write(tree); },
@@ -33,7 +33,7 @@ void HierarchicalMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
 
 void HierarchicalMethod::build(const FrameContext& ctx, double spacing, FrameStats& stats) {
     // Candidates at half the spacing so the thinned set covers the surface evenly.
-    const bool rebuilt = candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical");
+    const bool rebuilt = candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical", ctx.albedo);
     if (rebuilt) {
         std::vector<std::vector<SurfacePoint>> byMedium;
         for (const SurfacePoint& s : poissonThin(candidates_.points(), spacing)) {

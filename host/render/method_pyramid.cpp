@@ -90,7 +90,7 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
                              cl::Buffer& radiosity, FrameStats& stats) {
     rd_.update(ctx.profile(), ctx.maxDistance());
     const RenderOptions& o = *ctx.options;
-    const double ell = smallestMeanFreePath(ctx.scene->material);
+    const double ell = smallestMeanFreePath(*ctx.material);
     const int stride =
         o.pyramidStride > 0 ? o.pyramidStride : autoStride(ctx.scene->camera, ctx.height, ell);
     // Corners farther than twice a frontal cell's diagonal: a grazing or broken

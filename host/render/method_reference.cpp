@@ -56,16 +56,16 @@ void ReferenceMethod::checkCost(const ReferenceCost& cost, bool force) {
 
 void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const double spacing =
-        ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(ctx.scene->material);
+        ctx.options->spacingMm > 0 ? ctx.options->spacingMm : defaultSpacing(*ctx.material);
     const auto samples = graph.create<Marker>("reference_samples");
     graph.addPass(
         "reference_points", [&](FrameGraph::Builder& b) { b.write(samples); },
         [this, &ctx, spacing](FrameGraph::Resources& res) {
-            if (!points_.holds(*ctx.scene, spacing))
+            if (!points_.holds(*ctx.scene, spacing, ctx.albedo))
                 checkCost(estimate(ctx.scene->mesh, spacing,
                                    double(ctx.options->width) * ctx.options->height),
                           ctx.options->force);
-            const bool built = points_.update(*ctx.scene, spacing, "reference");
+            const bool built = points_.update(*ctx.scene, spacing, "reference", ctx.albedo);
             const std::vector<SurfacePoint>& pts = points_.points();
             if (built) {
                 // At least one (zero) sample: a CL buffer cannot be empty.

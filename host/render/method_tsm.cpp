@@ -100,8 +100,7 @@ glm::dvec3 TsmMethod::annulusMean(const RadialImportance& rd, double a, double b
 
 void TsmMethod::updateTables(const FrameContext& ctx) {
     const double diameter = ctx.maxDistance();
-    const double radius =
-        filterRadiusMm(ctx.scene->material, ctx.options->tsmRadius, ctx.boundingRadius);
+    const double radius = filterRadiusMm(*ctx.material, ctx.options->tsmRadius, ctx.boundingRadius);
     const KeyedProfile rd = ctx.profile();
     const std::string key = exactKey(rd.key + " R z", {radius, diameter});
     if (key == tableKey_) return;

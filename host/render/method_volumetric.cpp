@@ -40,7 +40,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
         boundary_ = std::make_unique<MeshBoundary>(scene.mesh);
         meshKey_ = key;
     }
-    WalkScene walk{boundary_.get(), Medium(scene.material), scene.lights, glm::dvec3(0.0)};
+    WalkScene walk{boundary_.get(), Medium(*ctx.material), scene.lights, glm::dvec3(0.0)};
     const size_t count = static_cast<size_t>(points.count);
     const glm::dvec3 eye(ctx.eye);
 
@@ -131,7 +131,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     progress.finish();
 
     // B_eq: what the composite's exit term (either) turns into the volumetric radiance.
-    const double eta = scene.material.eta;
+    const double eta = ctx.material->eta;
     const double exit = exitScale(o.exit, eta);
     std::vector<float> out(count * 4, 0.0f);
     for (size_t k = 0; k < count; ++k) {

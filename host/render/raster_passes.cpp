@@ -36,11 +36,21 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
     h.geometryAtlas = graph.create<GlTarget>("geometry_atlas");
     h.fluxAtlas = graph.create<GlTarget>("flux_atlas");
     h.gbuffer = graph.create<GlTarget>("gbuffer");
-    const float eta = static_cast<float>(ctx.scene->material.eta);
+    // η and the exit scale of every medium (render/scene_media.h).
+    std::vector<glm::vec2> media;
+    for (size_t m = 0; m < ctx.media->etaOfMedium.size(); ++m) {
+        const float eta = ctx.media->etaOfMedium[m];
+        media.emplace_back(eta, static_cast<float>(exitScale(ctx.options->exit, eta)));
+    }
+    Hasher etas;
+    for (const glm::vec2& m : media) etas.add(m.x);
+    const uint64_t eta = etas.digest();
 
     graph.addPass(
         "upload_mesh", [&](FrameGraph::Builder& b) { b.write(h.mesh); },
-        [this, &ctx, meshHash, h](FrameGraph::Resources& res) {
+        [this, &ctx, meshHash, h, media](FrameGraph::Resources& res) {
+            materials_.updateMedia(media);
+            materials_.updateAlbedo(ctx.albedo->factor, ctx.atlasResolution, ctx.albedo->key);
             uploadMesh(ctx.scene->mesh, meshHash);
             res.write(h.mesh) = gpuMesh_.get();
         });
@@ -50,7 +60,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.read(h.mesh);
             b.write(h.lights);
         },
-        [this, &graph, &ctx, lighting, eta, lightMapsCl, h](FrameGraph::Resources& res) {
+        [this, &graph, &ctx, lighting, lightMapsCl, h](FrameGraph::Resources& res) {
             // Flux and position maps only when a light-view method reads them.
             const bool maps = graph.isRead(lightMapsCl);
             if (lightViewKey_ != lighting || (maps && !lightMapsMade_)) {
@@ -59,7 +69,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     lights_.push_back(
                         makeLightView(l, ctx.boundingRadius, ctx.lightResolution, maps));
                 lightMapsMade_ = maps;
-                lightPass_.run(*res.read(h.mesh), lights_, eta);
+                lightPass_.run(*res.read(h.mesh), lights_, materials_);
                 glFinish();
                 lightViewKey_ = lighting;
                 ++lightsVersion_;
@@ -89,11 +99,11 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.read(h.lights);
             b.write(h.fluxAtlas);
         },
-        [this, lighting, eta, h](FrameGraph::Resources& res) {
+        [this, lighting, h](FrameGraph::Resources& res) {
             if (fluxKey_ != lighting) {
                 const GlLights& lights = res.read(h.lights);
                 fluxAtlasPass_.run(*res.read(h.geometryAtlas).target, *lights.views,
-                                   *lights.shadows, eta);
+                                   *lights.shadows, materials_);
                 glFinish();
                 fluxKey_ = lighting;
                 ++fluxVersion_;
@@ -113,12 +123,12 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             // with the lighting).
             const bool irradiance = graph.isRead(gbufferCl);
             Hasher key;
-            key.add(meshHash_).add(ctx.width).add(ctx.height).add(irradiance);
+            key.add(meshHash_).add(ctx.width).add(ctx.height).add(irradiance).add(ctx.albedo->key);
             for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
             if (irradiance) key.add(lighting).add(eta);
             if (key.digest() != gbufferKey_) {
                 const GlLights& lights = res.read(h.lights);
-                gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, eta,
+                gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, materials_,
                                  ctx.viewProj, ctx.width, ctx.height, irradiance);
                 glFinish();
                 gbufferKey_ = key.digest();
@@ -143,16 +153,14 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
         },
         [this, &ctx, gl, radiosity, image](FrameGraph::Resources& res) {
             const RenderOptions& o = *ctx.options;
-            const float eta = static_cast<float>(ctx.scene->material.eta);
             const RenderTarget& gbuffer = *res.read(gl.gbuffer).target;
             const GlLights& lights = res.read(gl.lights);
             FrameImage& out = res.write(image);
-            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, eta,
-                                    static_cast<float>(exitScale(o.exit, eta)));
+            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, materials_);
             out.radiance = compositePass_.radianceTarget().readRGBA(0);
             out.lavg = logAverageLuminance(out.radiance);
-            compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, eta, o.key,
-                                   out.lavg, o.specular ? o.specularKs : 0.0f, o.shininess);
+            compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, materials_,
+                                   o.key, out.lavg, o.specular ? o.specularKs : 0.0f, o.shininess);
             out.rgb8 =
                 fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
         });

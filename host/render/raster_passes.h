@@ -71,6 +71,8 @@ class RasterPasses {
     FluxAtlasPass fluxAtlasPass_;
     GBufferPass gbufferPass_;
     CompositePass compositePass_;
+    MaterialTables
+        materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::vector<LightView> lights_;

@@ -21,6 +21,7 @@ FrameContext frameContext(const Scene& scene, const RenderOptions& opt, ClRuntim
                           FrameStats& stats) {
     FrameContext ctx;
     ctx.scene = &scene;
+    ctx.material = &scene.material;
     ctx.options = &opt;
     ctx.cl = &cl;
     ctx.stats = &stats;
@@ -32,9 +33,18 @@ FrameContext frameContext(const Scene& scene, const RenderOptions& opt, ClRuntim
     ctx.viewProj = cameraViewProj(scene.camera, static_cast<float>(opt.width) / opt.height,
                                   ctx.boundingRadius);
     ctx.eye = scene.camera.eye;
-    if (opt.energy == EnergyTarget::Object)
-        ctx.profileScale = energyScale(scene.material, opt.profile,
-                                       scene.mesh.enclosedVolume() / scene.mesh.surfaceArea());
+    return ctx;
+}
+
+// The context of the method's run for `material`: its profile, scaled by
+// --energy (the object's V/S).
+FrameContext materialContext(const FrameContext& base, const Material& material) {
+    FrameContext ctx = base;
+    ctx.material = &material;
+    const Mesh& mesh = base.scene->mesh;
+    if (base.options->energy == EnergyTarget::Object)
+        ctx.profileScale = energyScale(material, base.options->profile,
+                                       mesh.enclosedVolume() / mesh.surfaceArea());
     return ctx;
 }
 
@@ -80,10 +90,33 @@ Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
 
 Renderer::~Renderer() = default;
 
-Method& Renderer::method(const std::string& name) {
-    auto it = methods_.find(name);
-    if (it == methods_.end()) it = methods_.emplace(name, makeMethod(name, cl_)).first;
+Method& Renderer::method(const std::string& name, size_t slot) {
+    // One instance per material slot: each keeps the tables of its own profile.
+    const std::string key = slot == 0 ? name : concat(name, "#", slot);
+    auto it = methods_.find(key);
+    if (it == methods_.end()) it = methods_.emplace(key, makeMethod(name, cl_)).first;
     return *it->second;
+}
+
+const AlbedoAtlas& Renderer::albedoAtlas(const Scene& scene, const SceneMedia& media,
+                                         const RenderOptions& opt, uint64_t meshKey) {
+    Hasher h(meshKey);
+    hashMaterials(h, scene);
+    const uint64_t key = h.add(opt.atlasResolution).add(opt.profile).digest();
+    if (key != albedoOf_) {
+        albedo_ = bakeAlbedoAtlas(scene, media, opt.atlasResolution, opt.profile);
+        albedoOf_ = key;
+    }
+    return albedo_;
+}
+
+const SceneMedia& Renderer::media(const Scene& scene, uint64_t meshKey) {
+    if (!media_ || meshKey != mediaOf_) {
+        mediaFound_ = findMedia(scene.mesh);
+        mediaOf_ = meshKey;
+    }
+    media_ = std::make_unique<SceneMedia>(sceneMedia(scene, mediaFound_));
+    return *media_;
 }
 
 int autoLightResolution(const Scene& scene) {
@@ -91,8 +124,14 @@ int autoLightResolution(const Scene& scene) {
     // on objects many of those across, the 1024² maps' texels show (measured:
     // ChineseDragon-10kv, ketchup 50 mm, 2.3% against the reference at 1024²,
     // 1.1% at 2048²).
-    const glm::dvec3 tr = Dipole(scene.material).sigmaTr();
-    const double across = 2.0 * boundingRadius(scene.mesh) * std::max({tr.x, tr.y, tr.z});
+    double sigmaTr = 0;
+    auto widen = [&](const Material& m) {
+        const glm::dvec3 tr = Dipole(m).sigmaTr();
+        sigmaTr = std::max({sigmaTr, tr.x, tr.y, tr.z});
+    };
+    widen(scene.material);
+    for (const ObjectMaterial& o : scene.objectMaterials) widen(o.medium);
+    const double across = 2.0 * boundingRadius(scene.mesh) * sigmaTr;
     return across > 100.0 ? 2048 : 1024;
 }
 
@@ -100,6 +139,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
     validateMaterial(scene.material);
+    for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
@@ -109,12 +149,14 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     CpuTimer totalCpu;
     FrameResult result;
     FrameStats& stats = result.stats;
-    Method& m = method(opt.method);
     FrameContext ctx = frameContext(scene, opt, cl_, stats);
 
     // A frame that moves only the camera (or changes σ, N, the method…) reuses
     // the light maps and the flux atlas: same lighting key.
     const uint64_t mesh = meshHash(scene.mesh);
+    const SceneMedia& sm = media(scene, mesh);
+    ctx.media = &sm;
+    ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
     const uint64_t lighting = lightingKey(scene, opt, mesh);
     if (!opt.reuseLighting) raster_.invalidateLighting();
     stats.set("lighting_reused", raster_.lightingCurrent(lighting) ? 1.0 : 0.0);
@@ -128,8 +170,16 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     const RasterHandles gl =
         raster_.addPasses(graph, ctx, mesh, lighting, ctx.lightMaps, ctx.gbuffer);
     staging_.addUploads(graph, ctx, gl);
-    m.addPasses(graph, ctx);
-    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, ctx);
+    // The method, once per material (docs/design.md §2 "Materials"); the
+    // passes hold their context by reference until the graph has run.
+    std::vector<FrameContext> runs;
+    runs.reserve(sm.slots());
+    for (size_t k = 0; k < sm.slots(); ++k) {
+        runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
+        if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
+        method(opt.method, k).addPasses(graph, runs[k]);
+    }
+    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs);
     if (opt.progressive)
         graph.addPass(
             "accumulate",

@@ -46,7 +46,12 @@ class Renderer {
     std::string glRenderer() const { return gl_.renderer(); }
 
   private:
-    Method& method(const std::string& name);
+    Method& method(const std::string& name, size_t slot);
+    // The scene's media (found once per mesh) and their materials.
+    const SceneMedia& media(const Scene& scene, uint64_t meshKey);
+    // The albedo factors (baked again when the mesh, a material or the atlas changed).
+    const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
+                                   const RenderOptions& opt, uint64_t meshKey);
 
     GlContext gl_;
     ClRuntime cl_;
@@ -54,6 +59,11 @@ class Renderer {
     GlClStaging staging_;
     RadiosityAccumulator accumulator_;
     std::map<std::string, std::unique_ptr<Method>> methods_;
+    Media mediaFound_;
+    uint64_t mediaOf_ = 0;
+    std::unique_ptr<SceneMedia> media_;
+    AlbedoAtlas albedo_;
+    uint64_t albedoOf_ = 0;
 };
 
 // The light-map resolution RenderOptions::lightResolution = 0 stands for:

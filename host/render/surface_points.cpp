@@ -9,6 +9,7 @@
 
 #include "mesh/media.h"
 #include "physics/fresnel.h"
+#include "render/albedo_atlas.h"
 #include "render/frame_keys.h"
 #include "render/ray_caster.h"
 #include "tsis_shared.h"
@@ -273,6 +274,21 @@ class IrradianceSampler {
 
 }  // namespace
 
+// The atlas coordinates of x (on triangle t, or projected onto its plane).
+static glm::vec2 atlasUv(const Mesh& mesh, size_t t, const glm::vec3& x) {
+    const glm::uvec3 tri = mesh.triangles[t];
+    const glm::dvec3 a(mesh.positions[tri[0]]), e1 = glm::dvec3(mesh.positions[tri[1]]) - a,
+                                                e2 = glm::dvec3(mesh.positions[tri[2]]) - a;
+    const glm::dvec3 d = glm::dvec3(x) - a;
+    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const double det = d11 * d22 - d12 * d12;
+    if (!(det > 0)) return mesh.uvs[tri[0]];
+    const double s = (d22 * glm::dot(d, e1) - d12 * glm::dot(d, e2)) / det;
+    const double r = (d11 * glm::dot(d, e2) - d12 * glm::dot(d, e1)) / det;
+    return glm::vec2(glm::dvec2(mesh.uvs[tri[0]]) * (1 - s - r) + glm::dvec2(mesh.uvs[tri[1]]) * s +
+                     glm::dvec2(mesh.uvs[tri[2]]) * r);
+}
+
 uint64_t surfacePointCount(const Mesh& mesh, double spacing) {
     uint64_t total = 0;
     for (uint32_t kt : subdivisions(mesh, spacing)) total += uint64_t{kt} * kt;
@@ -307,10 +323,13 @@ glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vec
 }
 
 std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
-                                        const std::vector<Light>& lights, double eta,
+                                        const std::vector<Light>& lights,
+                                        const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress) {
-    const IrradianceSampler sampler(lights, eta, rays, offset, reach);
+                                        Progress* progress, const AlbedoAtlas* albedo) {
+    TSIS_CHECK(!etaOfMedium.empty());
+    std::vector<IrradianceSampler> samplers;
+    for (double eta : etaOfMedium) samplers.emplace_back(lights, eta, rays, offset, reach);
     const std::vector<uint32_t> k = subdivisions(mesh, spacing);
     std::vector<size_t> first(k.size() + 1, 0);  // first point of each triangle
     for (size_t t = 0; t < k.size(); ++t)
@@ -321,9 +340,13 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
     std::mutex progressMutex;
     parallelFor(k.size(), 64, [&](size_t begin, size_t end) {
         for (size_t t = begin; t < end; ++t) {
-            sampler.sampleFacet(facet(mesh, t, k[t]), &points[first[t]]);
-            for (size_t i = first[t]; i < first[t + 1]; ++i)
-                points[i].medium = media.ofVertex[mesh.triangles[t][0]];
+            const uint32_t medium = media.ofVertex[mesh.triangles[t][0]];
+            samplers[std::min<size_t>(medium, samplers.size() - 1)].sampleFacet(
+                facet(mesh, t, k[t]), &points[first[t]]);
+            for (size_t i = first[t]; i < first[t + 1]; ++i) points[i].medium = medium;
+            if (albedo && !albedo->empty())
+                for (size_t i = first[t]; i < first[t + 1]; ++i)
+                    points[i].irradiance *= albedo->at(atlasUv(mesh, t, points[i].position));
         }
         const size_t d = done += first[end] - first[begin];
         // Progress is not thread-safe; whoever gets the lock draws.
@@ -412,18 +435,21 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
     return out;
 }
 
-uint64_t SurfaceSampleCache::keyOf(const Scene& scene, double spacing) {
+uint64_t SurfaceSampleCache::keyOf(const Scene& scene, double spacing, const AlbedoAtlas* albedo) {
     Hasher h(meshHash(scene.mesh));
     hashIrradiance(h, scene);
+    if (albedo) h.add(albedo->key);
     return h.add(spacing).digest();
 }
 
-bool SurfaceSampleCache::holds(const Scene& scene, double spacing) const {
-    return valid_ && keyOf(scene, spacing) == key_;
+bool SurfaceSampleCache::holds(const Scene& scene, double spacing,
+                               const AlbedoAtlas* albedo) const {
+    return valid_ && keyOf(scene, spacing, albedo) == key_;
 }
 
-bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label) {
-    const uint64_t key = keyOf(scene, spacing);
+bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label,
+                                const AlbedoAtlas* albedo) {
+    const uint64_t key = keyOf(scene, spacing, albedo);
     if (valid_ && key == key_) return false;
     Timer t;
     {
@@ -433,8 +459,12 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
         for (uint32_t k : subdivisions(scene.mesh, spacing)) total += static_cast<size_t>(k) * k;
         Progress progress(label + ": irradiance at " + std::to_string(total) + " points",
                           static_cast<long long>(total));
-        points_ = sampleSurface(scene.mesh, spacing, scene.lights, scene.material.eta, rays,
-                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress);
+        const Media media = findMedia(scene.mesh);
+        std::vector<double> eta;
+        for (uint32_t m = 0; m < media.count; ++m)
+            eta.push_back(scene.materialOf(media.materialOf[m]).eta);
+        points_ = sampleSurface(scene.mesh, spacing, scene.lights, eta, rays,
+                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress, albedo);
     }
     key_ = key;
     valid_ = true;

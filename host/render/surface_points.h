@@ -16,6 +16,7 @@ namespace tsis {
 
 class Progress;
 class RayCaster;
+struct AlbedoAtlas;
 
 struct SurfacePoint {
     glm::vec3 position{0.0f};    // mm, on the triangle
@@ -52,10 +53,15 @@ glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vec
 // triangle: the first moment of the flux is kept, so the sum stays second
 // order across shadow edges. Rays: one per light and lattice vertex or
 // centroid, a few dozen more per sub-triangle on a shadow edge.
+// etaOfMedium: η of each medium (mesh/media.h); one value serves them all.
+// With `albedo`, E is scaled by the albedo factor at each point (the light
+// that enters, render/albedo_atlas.h).
 std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
-                                        const std::vector<Light>& lights, double eta,
+                                        const std::vector<Light>& lights,
+                                        const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress = nullptr);
+                                        Progress* progress = nullptr,
+                                        const AlbedoAtlas* albedo = nullptr);
 
 // Poisson-disk thinning: greedily in order, a point becomes a seed when no
 // earlier seed with a normal less than 90° away lies closer than `radius`;
@@ -71,14 +77,16 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
 class SurfaceSampleCache {
   public:
     // Returns true when it (re)built the points; `label` names the progress line.
-    bool update(const Scene& scene, double spacing, const std::string& label);
+    // With `albedo`, E carries its entry factor (sampleSurface).
+    bool update(const Scene& scene, double spacing, const std::string& label,
+                const AlbedoAtlas* albedo = nullptr);
     // True when update() would keep the points it has.
-    bool holds(const Scene& scene, double spacing) const;
+    bool holds(const Scene& scene, double spacing, const AlbedoAtlas* albedo = nullptr) const;
     const std::vector<SurfacePoint>& points() const { return points_; }
     double lastBuildMs() const { return buildMs_; }
 
   private:
-    static uint64_t keyOf(const Scene& scene, double spacing);
+    static uint64_t keyOf(const Scene& scene, double spacing, const AlbedoAtlas* albedo);
     uint64_t key_ = 0;
     bool valid_ = false;
     std::vector<SurfacePoint> points_;

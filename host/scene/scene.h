@@ -3,9 +3,11 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "image/image_io.h"
 #include "mesh/mesh.h"
 #include "physics/material.h"
 #include "tsis_shared.h"
@@ -28,9 +30,34 @@ struct Camera {
     float fovYDegrees = 40.0f;  // vertical; `tsis render` frames the object with --fov (35)
 };
 
+// An albedo texture (a glTF baseColorTexture, an OBJ map_Kd): linear RGB,
+// three channels, row 0 = the image's top, read through Mesh::texcoords.
+struct AlbedoTexture {
+    std::string name;  // for messages: the file it came from
+    ImageF image;
+};
+
+// The material of the triangles that carry one file material (issue 20,
+// docs/design.md §2 "Materials"): the medium light scatters in, and the
+// albedo its surface shows — the medium's own total reflectance unless a
+// texture (times `textureScale`) or another material of the same medium sets
+// it per texel.
+struct ObjectMaterial {
+    Material medium;
+    glm::dvec3 albedo{0.0};  // what `medium` reflects in total (its profile's ∫Rd 2πr dr)
+    std::shared_ptr<const AlbedoTexture> texture;  // null: none
+    glm::dvec3 textureScale{1.0};                  // albedo = textureScale · texel
+};
+
 struct Scene {
-    Mesh mesh;  // normalised (mm), with normals and valid UVs
-    Material material;
+    Mesh mesh;          // normalised (mm), with normals and valid UVs
+    Material material;  // of every triangle without a file material
+    // The file's materials, indexed by Mesh::materialIds (empty: none).
+    std::vector<ObjectMaterial> objectMaterials;
+    // The medium of file material `id` (kNoFileMaterial: `material`).
+    const Material& materialOf(uint32_t id) const {
+        return id < objectMaterials.size() ? objectMaterials[id].medium : material;
+    }
     std::vector<Light> lights;
     Camera camera;
 };

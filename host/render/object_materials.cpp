@@ -1,0 +1,123 @@
+#include "render/object_materials.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/albedo_inversion.h"
+#include "util/error.h"
+
+namespace tsis {
+
+namespace {
+
+void note(const std::string& file, const std::string& what) {
+    std::fprintf(stderr, "tsis: note: mesh '%s': %s\n", file.c_str(), what.c_str());
+}
+
+// The mean of a texture's texels.
+glm::dvec3 meanTexel(const ImageF& image) {
+    glm::dvec3 sum(0.0);
+    const size_t n = static_cast<size_t>(image.width) * image.height;
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) sum[c] += image.pixels[i * 3 + c];
+    return n ? sum / double(n) : glm::dvec3(0.0);
+}
+
+// The mean free path KHR_materials_volume implies with albedo `a`: σa per
+// channel from the attenuation (Beer), σs′/σt′ from the albedo; a channel
+// the file does not attenuate takes `fallback`'s.
+std::optional<glm::dvec3> volumeMeanFreePath(const FileMaterial& f, const glm::dvec3& a, double eta,
+                                             ProfileModel model, double mmPerFileUnit,
+                                             const glm::dvec3& fallback) {
+    if (!f.attenuationDistance || !(*f.attenuationDistance > 0)) return std::nullopt;
+    const Material unit = materialFromAlbedo("", a, glm::dvec3(1.0), eta, model);  // σs′ = α′
+    glm::dvec3 mfp = fallback;
+    bool any = false;
+    for (int c = 0; c < 3; ++c) {
+        const double colour = f.attenuationColor[c];
+        if (!(colour > 0 && colour < 1)) continue;
+        const double sigmaA = -std::log(colour) / (*f.attenuationDistance * mmPerFileUnit);
+        mfp[c] = (1.0 - unit.sigmaSPrime[c]) / sigmaA;  // 1/σt′ = (1 − α′)/σa
+        any = true;
+    }
+    return any ? std::optional<glm::dvec3>(mfp) : std::nullopt;
+}
+
+ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
+                        const MaterialOverrides& over, ProfileModel model, double mmPerFileUnit,
+                        const std::string& file) {
+    const std::string name = f.name.empty() ? "(unnamed)" : f.name;
+    ObjectMaterial o;
+    const double eta = over.eta ? *over.eta : f.eta ? *f.eta : fallback.eta;
+    if (!(eta > 1.0 && eta < 4.0))
+        fail("mesh '", file, "': material '", name, "': index of refraction ", eta,
+             " is not in (1, 4)");
+    if (!f.texturePath.empty()) {
+        try {
+            auto t = std::make_shared<AlbedoTexture>();
+            t->name = f.texturePath;
+            t->image = readColorTexture(f.texturePath, f.textureBytes, f.textureSrgb);
+            o.texture = std::move(t);
+        } catch (const Error& e) {
+            note(file, concat("material '", name, "': ", e.what(), ": its albedo factor alone"));
+        }
+    }
+    if (!f.preset.empty() || (f.sigmaS && f.sigmaA)) {
+        if (!f.preset.empty()) {
+            o.medium = presetMaterial(f.preset);
+        } else {
+            o.medium.sigmaSPrime = *f.sigmaS;
+            o.medium.sigmaA = *f.sigmaA;
+        }
+        o.medium.eta = eta;
+        if (const std::string p = materialProblem(o.medium); !p.empty())
+            fail("mesh '", file, "': material '", name, "': ", p);
+        if (over.mfp)
+            o.medium = materialFromAlbedo(name, albedoOf(o.medium, model), *over.mfp, eta, model);
+    } else {
+        o.textureScale = f.albedo ? *f.albedo : glm::dvec3(1.0);
+        glm::dvec3 a = o.textureScale;
+        if (!f.albedo && !o.texture) a = albedoOf(fallback, model);
+        if (o.texture) a *= meanTexel(o.texture->image);
+        for (int c = 0; c < 3; ++c)
+            if (!(a[c] <= kMaxAlbedo) || !(a[c] >= 1e-3)) {
+                note(file, concat("material '", name, "': albedo ", a.x, ",", a.y, ",", a.z,
+                                  " clamped to [0.001, ", kMaxAlbedo, "]"));
+                a = glm::clamp(a, glm::dvec3(1e-3), glm::dvec3(kMaxAlbedo));
+                break;
+            }
+        const glm::dvec3 own = meanFreePathOf(fallback);
+        std::optional<glm::dvec3> mfp = over.mfp ? over.mfp : f.mfp;
+        if (!mfp) mfp = volumeMeanFreePath(f, a, eta, model, mmPerFileUnit, own);
+        if (!mfp) {
+            note(file, concat("material '", name, "': no mean free path; ", fallback.name, "'s (",
+                              own.x, ",", own.y, ",", own.z, " mm)"));
+            mfp = own;
+        }
+        if (const std::string p = meanFreePathProblem(*mfp); !p.empty())
+            fail("mesh '", file, "': material '", name, "': ", p);
+        o.medium = materialFromAlbedo(name, a, *mfp, eta, model);
+    }
+    o.medium.name = name;
+    o.albedo = albedoOf(o.medium, model);
+    return o;
+}
+
+}  // namespace
+
+std::vector<ObjectMaterial> objectMaterials(const std::vector<FileMaterial>& materials,
+                                            const Material& fallback,
+                                            const MaterialOverrides& overrides, ProfileModel model,
+                                            double mmPerFileUnit, const std::string& file) {
+    std::vector<ObjectMaterial> out;
+    if (overrides.replaceAll) {
+        if (!materials.empty())
+            note(file, concat(materials.size(), " material(s) replaced by the command line's"));
+        return out;
+    }
+    for (const FileMaterial& f : materials)
+        out.push_back(fromFile(f, fallback, overrides, model, mmPerFileUnit, file));
+    return out;
+}
+
+}  // namespace tsis
