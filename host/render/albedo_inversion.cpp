@@ -1,6 +1,7 @@
 #include "render/albedo_inversion.h"
 
 #include <cmath>
+#include <glm/common.hpp>
 
 #include "render/energy_target.h"
 #include "util/error.h"
@@ -59,6 +60,12 @@ Material materialFromAlbedo(const std::string& name, const glm::dvec3& albedo,
 }
 
 glm::dvec3 albedoOf(const Material& m, ProfileModel model) {
+    // No absorption in a channel: all the light comes back out.
+    if (m.sigmaA.x == 0 || m.sigmaA.y == 0 || m.sigmaA.z == 0) {
+        Material absorbing = m;
+        absorbing.sigmaA = glm::max(m.sigmaA, 1e-9 * (m.sigmaSPrime + m.sigmaA));
+        return glm::min(profileTotalReflectance(absorbing, model), glm::dvec3(1.0));
+    }
     return profileTotalReflectance(m, model);
 }
 

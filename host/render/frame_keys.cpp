@@ -28,7 +28,8 @@ void hashMaterials(Hasher& h, const Scene& scene) {
 
 void hashIrradiance(Hasher& h, const Scene& scene) {
     for (const Light& l : scene.lights) h.add(l.type).add(l.vec).add(l.rgb).add(l.shadows);
-    hashMaterials(h, scene);
+    h.add(scene.material.eta);
+    for (const ObjectMaterial& o : scene.objectMaterials) h.add(o.medium.eta);
 }
 
 namespace {

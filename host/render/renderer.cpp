@@ -157,7 +157,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     const SceneMedia& sm = media(scene, mesh);
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
-    const uint64_t lighting = lightingKey(scene, opt, mesh);
+    const uint64_t lighting = Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();
     stats.set("lighting_reused", raster_.lightingCurrent(lighting) ? 1.0 : 0.0);
     const uint64_t accumulation = opt.progressive ? accumulationKey(scene, opt, lighting) : 0;

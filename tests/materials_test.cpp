@@ -1,0 +1,190 @@
+// Materials (issue 20, docs/design.md §2 "Materials"): each object scatters
+// with its own material in every method, and a textured albedo is a factor on
+// the light entering and leaving (render/albedo_atlas.h) — checked against
+// renders of one material and against the plane's closed form.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <glm/geometric.hpp>
+
+#include "atlas/atlas.h"
+#include "render/albedo_inversion.h"
+#include "support/render.h"
+
+namespace tsis {
+namespace {
+
+// A box with its own vertices and normal per face, every triangle of file material `id`.
+void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi, uint32_t id) {
+    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {hi.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
+    const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                             {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+    for (const auto& f : faces) {
+        const auto base = static_cast<unsigned>(m.positions.size());
+        const glm::vec3 n = glm::normalize(glm::cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]));
+        for (int k = 0; k < 4; ++k) {
+            m.positions.push_back(c[f[k]]);
+            m.normals.push_back(n);
+        }
+        m.triangles.emplace_back(base, base + 1, base + 2);
+        m.triangles.emplace_back(base, base + 2, base + 3);
+        m.materialIds.insert(m.materialIds.end(), {id, id});
+    }
+}
+
+ObjectMaterial objectMaterial(const char* preset) {
+    ObjectMaterial o;
+    o.medium = presetMaterial(preset);
+    o.albedo = albedoOf(o.medium, ProfileModel::Dipole);
+    return o;
+}
+
+// Two 10 mm cubes 2 mm apart, side by side, lit from the front and above:
+// the left one of file material 0, the right one of 1.
+Scene twoCubes(const char* left, const char* right) {
+    Mesh m;
+    m.name = "two cubes";
+    addBox(m, {-11, -5, -5}, {-1, 5, 5}, 0);
+    addBox(m, {1, -5, -5}, {11, 5, 5}, 1);
+    AtlasOptions atlas;
+    atlas.resolution = 512;
+    atlas.useCache = false;
+    Scene s;
+    s.mesh = buildAtlas(m, atlas);
+    s.mesh.materialIds = m.materialIds;    // the triangles keep their order
+    s.material = presetMaterial("skin1");  // no triangle uses it
+    s.objectMaterials = {objectMaterial(left), objectMaterial(right)};
+    s.lights = {
+        {Light::Type::Directional, glm::normalize(glm::vec3(0.3f, -1, -1)), glm::vec3(1.0f)}};
+    s.camera.eye = glm::vec3(0, 10, 40);
+    return s;
+}
+
+// Relative RMSE of `aov` between two frames over the covered pixels of one
+// cube (x < 0: the left one), against b's mean there.
+double cubeError(const FrameResult& a, const FrameResult& b, bool left, bool radiance) {
+    double sum2 = 0, sum = 0;
+    size_t n = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            if (!(b.coverage.at(x, y, 0) > 0) || (b.position.at(x, y, 0) < 0) != left) continue;
+            for (int c = 0; c < 3; ++c) {
+                const float va = (radiance ? a.radiance : a.radiosity).at(x, y, c);
+                const float vb = (radiance ? b.radiance : b.radiosity).at(x, y, c);
+                sum2 += double(va - vb) * (va - vb);
+                sum += vb;
+                ++n;
+            }
+        }
+    EXPECT_GT(n, 0u);
+    return n && sum > 0 ? std::sqrt(sum2 / double(n)) / (sum / double(n)) : 0.0;
+}
+
+// Each cube of the two-material scene renders as it does when the whole scene
+// is of its material: in every method, radiosity and radiance (η and the exit
+// term per medium).
+TEST(Materials, EachObjectScattersWithItsOwnMaterialInEveryMethod) {
+    const Scene both = twoCubes("skin1", "marble");
+    const Scene allSkin = twoCubes("skin1", "skin1"), allMarble = twoCubes("marble", "marble");
+    RenderOptions opt = test::smallOptions(96, 512);
+    opt.spp = 4;
+    for (const std::string& method : methodNames()) {
+        const FrameResult f = test::renderWith(both, opt, method);
+        const FrameResult skin = test::renderWith(allSkin, opt, method);
+        const FrameResult marble = test::renderWith(allMarble, opt, method);
+        const double el = cubeError(f, skin, true, false), er = cubeError(f, marble, false, false);
+        const double ll = cubeError(f, skin, true, true), lr = cubeError(f, marble, false, true);
+        std::printf("%-12s skin1 cube %.2e (radiance %.2e), marble cube %.2e (%.2e)\n",
+                    method.c_str(), el, ll, er, lr);
+        // The sampling methods spread one sample budget over both cubes, whose
+        // fluxes differ (η): their noise moves — by no more than it moves
+        // with the seed.
+        double left = 1e-4, right = 1e-4;
+        if (method == "tsis" || method == "hybrid" || method == "mis") {
+            RenderOptions other = opt;
+            other.seed = opt.seed + 1;
+            left = 2 * cubeError(test::renderWith(allSkin, other, method), skin, true, false);
+            right = 2 * cubeError(test::renderWith(allMarble, other, method), marble, false, false);
+            std::printf("%-12s another seed: skin1 cube %.2e, marble cube %.2e\n", method.c_str(),
+                        left / 2, right / 2);
+        }
+        for (double e : {el, ll}) EXPECT_LT(e, left) << method;
+        for (double e : {er, lr}) EXPECT_LT(e, right) << method;
+        // And the two materials differ there by far more.
+        EXPECT_GT(cubeError(skin, marble, false, false), 0.1) << method;
+    }
+}
+
+// A texture of the medium's own albedo changes nothing (≤ 1e-4).
+TEST(Materials, ConstantAlbedoTextureEqualsTheConstantMaterial) {
+    const Light light{Light::Type::Point, glm::vec3(10, 12, 8), glm::vec3(200.0f)};
+    const Scene plain = test::sphereScene("skin1", light);
+    Scene textured = plain;
+    ObjectMaterial o = objectMaterial("skin1");
+    auto texture = std::make_shared<AlbedoTexture>();
+    texture->name = "constant";
+    texture->image = ImageF{4, 4, 3, {}};
+    for (int i = 0; i < 16; ++i)
+        for (int c = 0; c < 3; ++c) texture->image.pixels.push_back(float(o.albedo[c]));
+    o.texture = texture;
+    textured.objectMaterials = {o};
+    textured.mesh.materialIds.assign(textured.mesh.triangles.size(), 0);
+    textured.mesh.texcoords = textured.mesh.uvs;
+    const RenderOptions opt = test::smallOptions(64, 512);
+    for (const char* method : {"pyramid", "ltsm", "lss"}) {
+        const FrameResult a = test::renderWith(plain, opt, method);
+        const FrameResult b = test::renderWith(textured, opt, method);
+        const double err = test::relativeRmse(b, a);
+        std::printf("%-8s constant texture vs constant material: %.2e rel. RMSE\n", method, err);
+        EXPECT_LT(err, 1e-4) << method;
+    }
+}
+
+// A plane whose left half has albedo a1 and right half a2 (one medium, the
+// mean albedo's): far from the border each half is a homogeneous plane of its
+// albedo, B = Ft(1)·a·E (the inversion makes a the profile's total).
+TEST(Materials, PlaneOfTwoAlbedoHalvesMatchesEachHalfsClosedForm) {
+    const glm::dvec3 a1(0.8, 0.6, 0.4), a2(0.3, 0.45, 0.7), mfp(0.1);
+    Scene s = test::squarePlaneScene("skin1", 5.0, 30.0, 2.5);
+    ObjectMaterial o;
+    o.medium = materialFromAlbedo("halves", 0.5 * (a1 + a2), mfp, 1.3, ProfileModel::Dipole);
+    o.albedo = albedoOf(o.medium, ProfileModel::Dipole);
+    auto texture = std::make_shared<AlbedoTexture>();
+    texture->name = "halves";
+    texture->image = ImageF{64, 1, 3, {}};
+    for (int x = 0; x < 64; ++x)
+        for (int c = 0; c < 3; ++c) texture->image.pixels.push_back(float(x < 32 ? a1[c] : a2[c]));
+    o.texture = texture;
+    s.objectMaterials = {o};
+    s.mesh.materialIds.assign(s.mesh.triangles.size(), 0);
+    s.mesh.texcoords = s.mesh.uvs;
+    const double ell = 1.0 / Dipole(o.medium).sigmaTr().x;  // the longest diffusion length
+    const glm::dvec3 e(fresnelTransmittance(1.3, 1.0));
+    for (const char* method : {"pyramid", "ltsm"}) {
+        const FrameResult f = test::renderWith(s, test::smallOptions(64, 1024), method);
+        // Which half a pixel lies in, by its texture coordinate: u = the atlas' u here.
+        glm::dvec3 sum[2] = {glm::dvec3(0.0), glm::dvec3(0.0)};
+        int n[2] = {0, 0};
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x) {
+                if (!(f.coverage.at(x, y, 0) > 0)) continue;
+                const double px = f.position.at(x, y, 0);
+                if (std::abs(px) < 5 * ell) continue;
+                // builtin:plane's u runs along +x.
+                const int half = px < 0 ? 0 : 1;
+                for (int c = 0; c < 3; ++c) sum[half][c] += f.radiosity.at(x, y, c);
+                ++n[half];
+            }
+        ASSERT_GT(n[0], 0);
+        ASSERT_GT(n[1], 0);
+        test::expectNearClosedForm(sum[0] / double(n[0]), e * a1, 0.01,
+                                   std::string(method) + " left half");
+        test::expectNearClosedForm(sum[1] / double(n[1]), e * a2, 0.01,
+                                   std::string(method) + " right half");
+    }
+}
+
+}  // namespace
+}  // namespace tsis
