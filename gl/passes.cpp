@@ -1,6 +1,7 @@
 #include "gl/passes.h"
 
 #include "gl/gl_context.h"
+#include "util/error.h"
 
 namespace tsis {
 
@@ -109,46 +110,59 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
 
 CompositePass::CompositePass()
     : radianceProgram_("fullscreen.vert", "radiance.frag"),
+      resolveProgram_("fullscreen.vert", "resolve.frag"),
       toneMapProgram_("fullscreen.vert", "tonemap.frag") {
     glGenVertexArrays(1, &emptyVao_);
 }
 
-void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbuffer,
-                             const glm::vec3& eye, float eta, float exitScale) {
-    int w = gbuffer.width(), h = gbuffer.height();
-    ensureTarget(radianceTarget_, w, h, {GL_RGBA32F}, false);
+void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+                             const RenderTarget& sampleGbuffer, int aa,
+                             const std::vector<LightView>& lights, const ShadowMapArray& shadows,
+                             const glm::vec3& eye, float eta, float exitScale, float alpha) {
+    const int w = frameGbuffer.width(), h = frameGbuffer.height();
+    TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
+    TSIS_CHECK_EQ(sampleGbuffer.height(), h * aa);
+    aa_ = aa;
+    ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
     if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
         radiosity_ = std::make_unique<FloatTexture>(w, h);
     radiosity_->upload(radiosityRGBA);
-    radianceTarget_->bindAndClear();
+    sampleTarget_->bindAndClear();
     radianceProgram_.use();
-    radianceProgram_.set("u_eta", eta);
+    bindLights(radianceProgram_, lights, eta, kShadowUnit, shadows);
     radianceProgram_.set("u_eye", eye);
     radianceProgram_.set("u_exitScale", exitScale);
+    radianceProgram_.set("u_alpha", alpha);
+    radianceProgram_.set("u_aa", aa);
     bindTexture(radianceProgram_, "u_radiosity", 0, radiosity_->id());
-    bindTexture(radianceProgram_, "u_position", 1, gbuffer.color(0));
-    bindTexture(radianceProgram_, "u_normal", 2, gbuffer.color(1));
+    bindTexture(radianceProgram_, "u_framePosition", 1, frameGbuffer.color(0));
+    bindTexture(radianceProgram_, "u_position", 2, sampleGbuffer.color(0));
+    bindTexture(radianceProgram_, "u_normal", 3, sampleGbuffer.color(1));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (aa > 1) {
+        ensureTarget(frameTarget_, w, h, {GL_RGBA32F}, false);
+        frameTarget_->bindAndClear();
+        resolveProgram_.use();
+        resolveProgram_.set("u_aa", aa);
+        bindTexture(resolveProgram_, "u_radiance", 0, sampleTarget_->color(0));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     checkGl("CompositePass::radiance");
 }
 
-void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                            const ShadowMapArray& shadows, const glm::vec3& eye, float eta,
-                            float key, float lavg, float specular, float shininess) {
-    int w = gbuffer.width(), h = gbuffer.height();
+std::vector<float> CompositePass::frameRadiance() const {
+    return (aa_ > 1 ? *frameTarget_ : *sampleTarget_).readRGBA(0);
+}
+
+void CompositePass::toneMap(float scale) {
+    const int w = sampleTarget_->width() / aa_, h = sampleTarget_->height() / aa_;
     ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
     colorTarget_->bindAndClear();
     toneMapProgram_.use();
-    bindLights(toneMapProgram_, lights, eta, kShadowUnit, shadows);
-    toneMapProgram_.set("u_eye", eye);
-    toneMapProgram_.set("u_key", key);
-    toneMapProgram_.set("u_lavg", lavg);
-    toneMapProgram_.set("u_specular", specular);
-    toneMapProgram_.set("u_shininess", shininess);
-    bindTexture(toneMapProgram_, "u_radiance", 0, radianceTarget_->color(0));
-    bindTexture(toneMapProgram_, "u_position", 1, gbuffer.color(0));
-    bindTexture(toneMapProgram_, "u_normal", 2, gbuffer.color(1));
+    toneMapProgram_.set("u_scale", scale);
+    toneMapProgram_.set("u_aa", aa_);
+    bindTexture(toneMapProgram_, "u_radiance", 0, sampleTarget_->color(0));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     checkGl("CompositePass::toneMap");

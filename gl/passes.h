@@ -78,25 +78,33 @@ class GBufferPass {
     int current_ = 0;
 };
 
-// Composite: radiance L = Ft/π·B (× the exit term's scale), then tone map + specular + sRGB.
+// Composite (docs/design.md "The composite"): radiance per sample of the composite's
+// geometry (aa × aa samples per frame pixel; at aa = 1 the frame's G-buffer),
+// L = Ft/π·B (× the exit term's scale) + the GGX lobe, resolved to the frame's
+// pixels; then exposure, tone curve, the samples' box filter and sRGB.
 class CompositePass {
   public:
     CompositePass();
-    // radiosity: width*height RGBA floats, GL row order. Returns nothing; read
-    // radiance() after it, then call toneMap().
-    // `exitScale`: the exit term's factor over Ft/π (render_options.h exitScale).
-    void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
-                  float eta, float exitScale);
-    void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                 const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float key,
-                 float lavg, float specular, float shininess);
-    const RenderTarget& radianceTarget() const { return *radianceTarget_; }
+    // radiosity: B at the frame's pixels, RGBA floats, GL row order.
+    // `exitScale`: the exit term's factor over Ft/π (render_options.h
+    // exitScale); `alpha`: GGX α, 0 for no lobe. Read frameRadiance() after
+    // it, then call toneMap().
+    void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+                  const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
+                  const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float exitScale,
+                  float alpha);
+    // The radiance at the frame's pixels (RGBA, GL order): the mean over the
+    // covered samples, alpha their fraction.
+    std::vector<float> frameRadiance() const;
+    // Ls = scale·L, Reinhard's curve, the mean over each pixel's samples, sRGB.
+    void toneMap(float scale);
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 
   private:
-    ShaderProgram radianceProgram_, toneMapProgram_;
+    ShaderProgram radianceProgram_, resolveProgram_, toneMapProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
-    std::unique_ptr<RenderTarget> radianceTarget_, colorTarget_;
+    std::unique_ptr<RenderTarget> sampleTarget_, frameTarget_, colorTarget_;
+    int aa_ = 1;
     GLuint emptyVao_ = 0;
 };
 

@@ -1,4 +1,4 @@
-// The surface's specular lobe (docs/design.md §12): a dielectric
+// The surface's specular lobe (docs/design.md "Surface reflection"): a dielectric
 // Cook–Torrance microfacet BRDF with the GGX (Trowbridge–Reitz) distribution,
 // Smith's height-correlated masking-shadowing and the exact Fresnel
 // reflectance at the microfacet, F(η, v·h). The double-precision twin of
