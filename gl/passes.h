@@ -78,14 +78,16 @@ class GBufferPass {
     int current_ = 0;
 };
 
-// Composite (docs/design.md "The composite"): radiance per sample of the composite's
-// geometry (aa × aa samples per frame pixel; at aa = 1 the frame's G-buffer),
-// L = Ft/π·B (× the exit term's scale) + the GGX lobe, resolved to the frame's
-// pixels; then exposure, tone curve, the samples' box filter and sRGB.
+// Composite (docs/design.md "The composite"): radiance L = Ft/π·B (× the
+// exit term's scale) + the GGX lobe at each pixel's centre; where a silhouette
+// or depth jump passes (aa > 1), at aa × aa samples from the composite's own
+// G-buffer as well; the frame's radiance from them; then exposure, tone
+// curve, the samples' box filter and sRGB.
 class CompositePass {
   public:
     CompositePass();
     // radiosity: B at the frame's pixels, RGBA floats, GL row order.
+    // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
     // `exitScale`: the exit term's factor over Ft/π (render_options.h
     // exitScale); `alpha`: GGX α, 0 for no lobe. Read frameRadiance() after
     // it, then call toneMap().
@@ -93,17 +95,19 @@ class CompositePass {
                   const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
                   const ShadowMapArray& shadows, const glm::vec3& eye, float eta, float exitScale,
                   float alpha);
-    // The radiance at the frame's pixels (RGBA, GL order): the mean over the
-    // covered samples, alpha their fraction.
+    // The radiance at the frame's pixels (RGBA, GL order): the centre's, or
+    // in a supersampled pixel the mean over its covered samples (alpha their
+    // fraction).
     std::vector<float> frameRadiance() const;
-    // Ls = scale·L, Reinhard's curve, the mean over each pixel's samples, sRGB.
+    // Ls = scale·L, Reinhard's curve, the mean over a pixel's samples, sRGB.
     void toneMap(float scale);
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 
   private:
-    ShaderProgram radianceProgram_, resolveProgram_, toneMapProgram_;
+    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, toneMapProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
-    std::unique_ptr<RenderTarget> sampleTarget_, frameTarget_, colorTarget_;
+    // centre: radiance and the supersampled pixels' mask (attachment 1)
+    std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_;
     int aa_ = 1;
     GLuint emptyVao_ = 0;
 };

@@ -1,27 +1,51 @@
-// Radiance per sample of the composite's geometry (u_aa × u_aa samples per
-// frame pixel, docs/design.md "The composite"): the subsurface term Ft(η, cos θo)/π · B
-// (§2; × u_exitScale: 1, Jensen's exit term, or 1/c, pbrt's normalised one,
-// --exit) plus the GGX lobe's reflection of the lights (design "Surface reflection").
+// Radiance (docs/design.md "The composite"): the subsurface term
+// Ft(η, cos θo)/π · B (§2; × u_exitScale: 1, Jensen's exit term, or 1/c,
+// pbrt's normalised one, --exit) plus the GGX lobe's reflection of the
+// lights (design "Surface reflection").
+//
+// Two variants. The frame's: one sample at each pixel's centre, from the
+// frame's G-buffer, and (u_findEdges) the pixels to supersample. With
+// TSIS_COMPOSITE_SAMPLES: u_aa × u_aa samples per pixel from the composite's
+// own G-buffer, drawn only in the pixels marked (edge_points.vert; elsewhere
+// the centre's sample stands for the pixel).
 uniform sampler2D u_radiosity;      // B at the frame's pixels
 uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = coverage)
-uniform sampler2D u_position;       // the samples' (u_aa × the frame's size)
-uniform sampler2D u_normal;
-uniform int u_aa;
+uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
 uniform float u_exitScale;
 uniform float u_alpha;  // GGX α = R²; 0: no lobe (--no-specular)
 layout(location = 0) out vec4 o_radiance;
 
+vec3 shade(vec3 p, ivec2 px, vec3 b) {
+    vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
+    vec3 v = normalize(u_eye - p);
+    // An open mesh seen from behind: the side that faces the eye.
+    if (dot(n, v) < 0.0) n = -n;
+    vec3 l = fresnelT(u_eta, dot(n, v)) / PI * b * u_exitScale;
+    if (u_alpha > 0.0) l += specularRadiance(p, n, v, u_alpha);
+    return l;
+}
+
+// Whether two frame G-buffer texels show one surface: both uncovered, or
+// both covered at distances to the eye within 2% (not a silhouette or a
+// depth jump).
+bool sameSurface(vec4 a, vec4 b) {
+    if ((a.w > 0.0) != (b.w > 0.0)) return false;
+    if (a.w == 0.0) return true;
+    float da = distance(a.xyz, u_eye), db = distance(b.xyz, u_eye);
+    return abs(da - db) <= 0.02 * max(da, db);
+}
+
+#ifdef TSIS_COMPOSITE_SAMPLES
+uniform sampler2D u_position;  // the samples'
+uniform int u_aa;
+
 // B at sample px (surface point p): the frame pixel's that holds the sample,
-// or where that pixel shows no surface or another one (a silhouette, a depth
-// jump), the covered neighbour's nearest to p in space. At 1× the sample is
-// the pixel itself.
-vec3 radiosityAt(ivec2 px, vec3 p) {
+// or where that pixel shows no surface or another one, the covered
+// neighbour's nearest to p in space.
+vec3 radiosityAt(ivec2 px, vec4 p) {
     ivec2 c = px / u_aa;
-    vec4 q = texelFetch(u_framePosition, c, 0);
-    float depth = distance(p, u_eye);
-    if (q.w > 0.0 && abs(distance(q.xyz, u_eye) - depth) <= 0.02 * depth)
-        return texelFetch(u_radiosity, c, 0).rgb;
+    if (sameSurface(texelFetch(u_framePosition, c, 0), p)) return texelFetch(u_radiosity, c, 0).rgb;
     ivec2 size = textureSize(u_framePosition, 0);
     ivec2 best = c;
     float bestD2 = 1e30;
@@ -29,7 +53,7 @@ vec3 radiosityAt(ivec2 px, vec3 p) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 k = clamp(c + ivec2(dx, dy), ivec2(0), size - 1);
             vec4 r = texelFetch(u_framePosition, k, 0);
-            vec3 d = r.xyz - p;
+            vec3 d = r.xyz - p.xyz;
             if (r.w > 0.0 && dot(d, d) < bestD2) {
                 bestD2 = dot(d, d);
                 best = k;
@@ -43,15 +67,29 @@ vec3 radiosityAt(ivec2 px, vec3 p) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_position, px, 0);
-    if (p.w == 0.0) {
-        o_radiance = vec4(0.0);
-        return;
-    }
-    vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
-    vec3 v = normalize(u_eye - p.xyz);
-    // An open mesh seen from behind: the side that faces the eye.
-    if (dot(n, v) < 0.0) n = -n;
-    vec3 l = fresnelT(u_eta, dot(n, v)) / PI * radiosityAt(px, p.xyz) * u_exitScale;
-    if (u_alpha > 0.0) l += specularRadiance(p.xyz, n, v, u_alpha);
-    o_radiance = vec4(l, 1.0);
+    o_radiance = p.w == 0.0 ? vec4(0.0) : vec4(shade(p.xyz, px, radiosityAt(px, p)), 1.0);
 }
+#else
+uniform int u_findEdges;
+layout(location = 1) out vec4 o_edge;
+
+// A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
+// depth jump passes through it or beside it.
+bool edgePixel(ivec2 px, vec4 p) {
+    ivec2 size = textureSize(u_framePosition, 0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 k = clamp(px + ivec2(dx, dy), ivec2(0), size - 1);
+            if (!sameSurface(p, texelFetch(u_framePosition, k, 0))) return true;
+        }
+    return false;
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 p = texelFetch(u_framePosition, px, 0);
+    o_edge = vec4(u_findEdges != 0 && edgePixel(px, p) ? 1.0 : 0.0);
+    o_radiance = p.w == 0.0 ? vec4(0.0)
+                            : vec4(shade(p.xyz, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
+}
+#endif

@@ -1,9 +1,11 @@
-// The display image (docs/design.md "The composite") from the radiance of u_aa × u_aa
-// samples per pixel: each sample exposed, Ls = u_scale · L (2^EV, or key/L_avg
-// with --auto-exposure), through Reinhard's curve Ls/(1 + Ls), the samples
-// averaged (a box filter; after the curve, so that a highlight does not flood
-// its silhouette pixel), then sRGB encoding.
-uniform sampler2D u_radiance;  // alpha: 1 where a sample shows the object
+// The display image (docs/design.md "The composite"): each sample exposed,
+// Ls = u_scale · L (2^EV, or key/L_avg with --auto-exposure), through
+// Reinhard's curve Ls/(1 + Ls); in a supersampled pixel the u_aa × u_aa
+// samples averaged (a box filter; after the curve, so that a highlight does
+// not flood its silhouette pixel), elsewhere the centre's; then sRGB.
+uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
+uniform sampler2D u_samples;  // u_aa × the size; read where u_edges is set
+uniform sampler2D u_edges;
 uniform int u_aa;
 uniform float u_scale;
 layout(location = 0) out vec4 o_color;
@@ -13,17 +15,22 @@ vec3 srgb(vec3 c) {
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
+// Background: a dark vertical gradient.
+vec3 exposed(vec4 l, vec3 background) {
+    vec3 ls = u_scale * l.rgb;
+    return l.a > 0.0 ? ls / (1.0 + ls) : background;
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    // Background: a dark vertical gradient.
-    float t = gl_FragCoord.y / float(textureSize(u_radiance, 0).y / u_aa);
-    vec3 background = vec3(mix(0.004, 0.03, t));
+    vec3 background = vec3(mix(0.004, 0.03, gl_FragCoord.y / float(textureSize(u_centre, 0).y)));
+    if (texelFetch(u_edges, px, 0).r == 0.0) {
+        o_color = vec4(srgb(exposed(texelFetch(u_centre, px, 0), background)), 1.0);
+        return;
+    }
     vec3 sum = vec3(0.0);
     for (int j = 0; j < u_aa; ++j)
-        for (int i = 0; i < u_aa; ++i) {
-            vec4 l = texelFetch(u_radiance, px * u_aa + ivec2(i, j), 0);
-            vec3 ls = u_scale * l.rgb;
-            sum += l.a > 0.0 ? ls / (1.0 + ls) : background;
-        }
+        for (int i = 0; i < u_aa; ++i)
+            sum += exposed(texelFetch(u_samples, px * u_aa + ivec2(i, j), 0), background);
     o_color = vec4(srgb(sum / float(u_aa * u_aa)), 1.0);
 }
