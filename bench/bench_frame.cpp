@@ -11,6 +11,15 @@
 // lighting. With TSIS_BEFORE=/path/to/an/older/tsis, that binary's
 // `animate --orbit` whole-frame times are measured too (its own code, same
 // machine, same run). Writes frame.{md,csv}.
+//
+// Then the composite (issue 21) on the default scene, the camera orbiting:
+// its cost without the GGX lobe at one sample, with it, and with --aa 2, 3, 4
+// samples per pixel, and each one's silhouette error against --aa 4; with
+// TSIS_BEFORE, the older binary's composite stage (`render --frames`) in the
+// same run. `bench_frame --composite` measures only this and replaces that
+// section of frame.md.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -69,7 +78,115 @@ std::vector<double> externalOrbit(const std::string& binary, const std::vector<s
     return ms;
 }
 
+const char* const kCompositeHeading = "\n## The composite: GGX lobe and antialiasing";
+
+// The silhouette pixels' RMS difference (8-bit levels) between two frames of
+// the same view: pixels whose coverage differs from a 4-neighbour's.
+double silhouetteRms(const FrameResult& a, const FrameResult& b) {
+    const ImageF& cov = a.coverage;
+    double sq = 0;
+    long n = 0;
+    for (int y = 1; y + 1 < cov.height; ++y)
+        for (int x = 1; x + 1 < cov.width; ++x) {
+            const float c = cov.at(x, y, 0);
+            if (cov.at(x - 1, y, 0) == c && cov.at(x + 1, y, 0) == c && cov.at(x, y - 1, 0) == c &&
+                cov.at(x, y + 1, 0) == c)
+                continue;
+            for (int ch = 0; ch < 3; ++ch) {
+                const size_t k = (static_cast<size_t>(y) * cov.width + x) * 3 + ch;
+                const double d = double(a.rgb8[k]) - double(b.rgb8[k]);
+                sq += d * d;
+                ++n;
+            }
+        }
+    return n ? std::sqrt(sq / n) : 0;
+}
+
+// The older binary's composite stage: `render --frames` (the last, warm frame).
+double externalComposite(const std::string& binary, int frames) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("tsis_bench_composite_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    std::vector<double> ms;
+    for (int f = 0; f < frames; ++f) {
+        const std::string cmd = "'" + binary + "' render --frames 3 -o '" +
+                                (dir / "x.png").string() + "' --stats '" +
+                                (dir / "s.json").string() + "' 2>/dev/null";
+        if (std::system(cmd.c_str()) != 0) break;
+        std::ifstream in(dir / "s.json");
+        const Json stats = Json::parse(in, nullptr, false);
+        if (!stats.is_discarded() && stats.contains("ms"))
+            ms.push_back(stats["ms"].value("composite", std::nan("")));
+    }
+    std::filesystem::remove_all(dir);
+    return ms.empty() ? std::nan("") : summarize(ms).median;
+}
+
+std::string compositeSection(Renderer& renderer, int frames) {
+    const std::vector<Config> configs = {
+        {"no lobe, 1 sample (`--no-specular --aa 1`)", {"--no-specular", "--aa", "1"}, true},
+        {"GGX, 1 sample (`--aa 1`)", {"--aa", "1"}, true},
+        {"GGX, 2×2 samples (default)", {}, true},
+        {"GGX, 3×3 samples (`--aa 3`)", {"--aa", "3"}, true},
+        {"GGX, 4×4 samples (`--aa 4`)", {"--aa", "4"}, true},
+    };
+    std::string md = std::string(kCompositeHeading) + "\n\nMade on " + timestamp() +
+                     ". builtin:default, 512×512, the camera orbiting (the G-buffer and the "
+                     "composite's samples are rasterised every frame; the light maps are "
+                     "reused). Median (min–max) ms over " +
+                     std::to_string(frames) +
+                     " frames after one warm-up frame; load average (1 min) " +
+                     fmt(loadAverage(), 1) +
+                     " on 2 cores at the start, so compare the rows, not the absolute ms with "
+                     "the tables above. Silhouette RMS: the 8-bit difference from the `--aa 4` "
+                     "image on the pixels where the coverage changes, first frame.\n\n";
+    Table t({"composite", "gl_gbuffer ms", "gl_composite_samples ms", "composite ms", "total ms",
+             "silhouette RMS"});
+    std::vector<FrameResult> firsts;
+    std::vector<std::vector<std::string>> rows;
+    for (const Config& cfg : configs) {
+        std::vector<std::string> args = cfg.args;
+        BenchCase c = makeCase(args);
+        c.options.keepAovs = true;
+        firsts.push_back(renderer.render(c.scene, c.options));
+        c.options.keepAovs = false;
+        std::vector<FrameStats> stats;
+        for (int f = 0; f < frames; ++f)
+            stats.push_back(
+                renderer.render(orbit(c.scene, f + 1, frames + 1, true), c.options).stats);
+        std::vector<std::string> row = {cfg.name};
+        for (const char* stage : {"gl_gbuffer", "gl_composite_samples", "composite", "total"})
+            row.push_back(fmtRange(summarize(stageSums(stats, {stage})), 1));
+        rows.push_back(row);
+    }
+    for (size_t i = 0; i < rows.size(); ++i) {
+        rows[i].push_back(fmt(silhouetteRms(firsts[i], firsts.back()), 1));
+        t.add(rows[i]);
+    }
+    md += t.markdown();
+    if (const char* before = std::getenv("TSIS_BEFORE")) {
+        const double ms = externalComposite(before, frames);
+        md += "\nThe older binary `" + std::string(before) + "` (Reinhard + the Phong highlight " +
+              "after it, one sample; `render --frames 3`, the last frame, median of " +
+              std::to_string(frames) + " runs): composite " + fmt(ms, 1) + " ms.\n";
+    }
+    return md;
+}
+
 int run(const BenchArgs& a) {
+    if (std::find(a.rest.begin(), a.rest.end(), "--composite") != a.rest.end()) {
+        Renderer renderer;
+        const std::string section = compositeSection(renderer, a.frames);
+        std::ifstream in(std::filesystem::path(resultsDir()) / "frame.md");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string md = text.str();
+        const size_t at = md.find(kCompositeHeading);
+        md = (at == std::string::npos ? md : md.substr(0, at)) + section;
+        writeResult("frame.md", md);
+        std::printf("%s", section.c_str());
+        return 0;
+    }
     std::vector<std::string> meshes = {"builtin:default", "cow", "bunny00"};
     if (a.quick) meshes.resize(1);
     const std::vector<Config> configs = {
@@ -160,6 +277,7 @@ int run(const BenchArgs& a) {
         md += line;
     }
     progress.finish();
+    md += compositeSection(renderer, a.frames);
     writeResult("frame.md", md);
     writeResult("frame.csv", csv.csv());
     std::printf("%s", md.c_str());

@@ -46,6 +46,12 @@ std::string GlContext::renderer() const {
     return str(GL_RENDERER) + " / " + str(GL_VERSION);
 }
 
+int GlContext::maxTextureSize() const {
+    GLint n = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &n);
+    return n;
+}
+
 void checkGl(const char* where) {
     GLenum e = glGetError();
     if (e == GL_NO_ERROR) return;

@@ -18,6 +18,8 @@ class GlContext {
     void makeCurrent();
     std::string renderer()
         const;  // "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa ..."
+    // GL_MAX_TEXTURE_SIZE: the widest render target.
+    int maxTextureSize() const;
 
   private:
     void* ctx_ = nullptr;  // OSMesaContext

@@ -1,15 +1,16 @@
 #include "gl/passes.h"
 
 #include "gl/gl_context.h"
+#include "util/error.h"
 
 namespace tsis {
 
 namespace {
 
-// Texture units: 0–3 for a pass's own inputs, 4 for the shadow map array, 5
-// and 6 for the material tables.
+// Texture units: 0–3 and 5 for a pass's own inputs, 4 for the shadow map
+// array, 6 and 7 for the material tables.
 constexpr int kShadowUnit = 4;
-constexpr int kMediaUnit = 5;
+constexpr int kMediaUnit = 6;
 
 void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
     p.set(name, unit);
@@ -114,48 +115,84 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
 }
 
 CompositePass::CompositePass()
-    : radianceProgram_("fullscreen.vert", "radiance.frag"),
+    : centreProgram_("fullscreen.vert", "radiance.frag"),
+      sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
+      resolveProgram_("fullscreen.vert", "resolve.frag"),
       toneMapProgram_("fullscreen.vert", "tonemap.frag") {
     glGenVertexArrays(1, &emptyVao_);
 }
 
-void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& gbuffer,
-                             const glm::vec3& eye, const MaterialTables& media) {
-    int w = gbuffer.width(), h = gbuffer.height();
-    ensureTarget(radianceTarget_, w, h, {GL_RGBA32F}, false);
+void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+                             const RenderTarget& sampleGbuffer, int aa,
+                             const std::vector<LightView>& lights, const ShadowMapArray& shadows,
+                             const glm::vec3& eye, const MaterialTables& materials,
+                             float alpha) {
+    const int w = frameGbuffer.width(), h = frameGbuffer.height();
+    TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
+    TSIS_CHECK_EQ(sampleGbuffer.height(), h * aa);
+    aa_ = aa;
     if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
         radiosity_ = std::make_unique<FloatTexture>(w, h);
     radiosity_->upload(radiosityRGBA);
-    radianceTarget_->bindAndClear();
-    radianceProgram_.use();
-    radianceProgram_.set("u_eye", eye);
-    media.bind(radianceProgram_, kMediaUnit);
-    bindTexture(radianceProgram_, "u_radiosity", 0, radiosity_->id());
-    bindTexture(radianceProgram_, "u_position", 1, gbuffer.color(0));
-    bindTexture(radianceProgram_, "u_normal", 2, gbuffer.color(1));
     glBindVertexArray(emptyVao_);
+    // The pixels' centres, and which pixels to supersample.
+    ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, false);
+    centreTarget_->bindAndClear();
+    for (const ShaderProgram* p : {&centreProgram_, &sampleProgram_}) {
+        p->use();
+        bindLights(*p, lights, kShadowUnit, shadows);
+        materials.bind(*p, kMediaUnit);
+        p->set("u_eye", eye);
+        p->set("u_alpha", alpha);
+    }
+    centreProgram_.use();
+    centreProgram_.set("u_findEdges", aa > 1 ? 1 : 0);
+    bindTexture(centreProgram_, "u_radiosity", 0, radiosity_->id());
+    bindTexture(centreProgram_, "u_framePosition", 1, frameGbuffer.color(0));
+    bindTexture(centreProgram_, "u_normal", 2, frameGbuffer.color(1));
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (aa > 1) {
+        // Only the marked pixels' samples are drawn, and only they are read.
+        ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
+        sampleTarget_->bind();
+        sampleProgram_.use();
+        sampleProgram_.set("u_aa", aa);
+        bindTexture(sampleProgram_, "u_radiosity", 0, radiosity_->id());
+        bindTexture(sampleProgram_, "u_framePosition", 1, frameGbuffer.color(0));
+        bindTexture(sampleProgram_, "u_normal", 2, sampleGbuffer.color(1));
+        bindTexture(sampleProgram_, "u_position", 3, sampleGbuffer.color(0));
+        bindTexture(sampleProgram_, "u_edges", 5, centreTarget_->color(1));
+        glEnable(GL_PROGRAM_POINT_SIZE);
+        glDrawArrays(GL_POINTS, 0, w * h);
+        glDisable(GL_PROGRAM_POINT_SIZE);
+        ensureTarget(frameTarget_, w, h, {GL_RGBA32F}, false);
+        frameTarget_->bindAndClear();
+        resolveProgram_.use();
+        resolveProgram_.set("u_aa", aa);
+        bindTexture(resolveProgram_, "u_centre", 0, centreTarget_->color(0));
+        bindTexture(resolveProgram_, "u_samples", 1, sampleTarget_->color(0));
+        bindTexture(resolveProgram_, "u_edges", 2, centreTarget_->color(1));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     checkGl("CompositePass::radiance");
 }
 
-void CompositePass::toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                            const ShadowMapArray& shadows, const glm::vec3& eye,
-                            const MaterialTables& media, float key, float lavg, float specular,
-                            float shininess) {
-    int w = gbuffer.width(), h = gbuffer.height();
+std::vector<float> CompositePass::frameRadiance() const {
+    return (aa_ > 1 ? *frameTarget_ : *centreTarget_).readRGBA(0);
+}
+
+void CompositePass::toneMap(float scale) {
+    const int w = centreTarget_->width(), h = centreTarget_->height();
     ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
     colorTarget_->bindAndClear();
     toneMapProgram_.use();
-    bindLights(toneMapProgram_, lights, kShadowUnit, shadows);
-    media.bind(toneMapProgram_, kMediaUnit);
-    toneMapProgram_.set("u_eye", eye);
-    toneMapProgram_.set("u_key", key);
-    toneMapProgram_.set("u_lavg", lavg);
-    toneMapProgram_.set("u_specular", specular);
-    toneMapProgram_.set("u_shininess", shininess);
-    bindTexture(toneMapProgram_, "u_radiance", 0, radianceTarget_->color(0));
-    bindTexture(toneMapProgram_, "u_position", 1, gbuffer.color(0));
-    bindTexture(toneMapProgram_, "u_normal", 2, gbuffer.color(1));
+    toneMapProgram_.set("u_scale", scale);
+    toneMapProgram_.set("u_aa", aa_);
+    bindTexture(toneMapProgram_, "u_centre", 0, centreTarget_->color(0));
+    // At 1× no pixel is marked and the samples are never read.
+    bindTexture(toneMapProgram_, "u_samples", 1,
+                (aa_ > 1 ? *sampleTarget_ : *centreTarget_).color(0));
+    bindTexture(toneMapProgram_, "u_edges", 2, centreTarget_->color(1));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     checkGl("CompositePass::toneMap");

@@ -79,25 +79,37 @@ class GBufferPass {
     int current_ = 0;
 };
 
-// Composite: radiance L = Ft/π·B (× the exit term's scale), then tone map + specular + sRGB.
+// Composite (docs/design.md "The composite"): radiance L = Ft/π·B (× the
+// exit term's scale) + the GGX lobe at each pixel's centre; where a silhouette
+// or depth jump passes (aa > 1), at aa × aa samples from the composite's own
+// G-buffer as well; the frame's radiance from them; then exposure, tone
+// curve, the samples' box filter and sRGB.
 class CompositePass {
   public:
     CompositePass();
-    // radiosity: width*height RGBA floats, GL row order. Returns nothing; read
-    // radiance() after it, then call toneMap().
-    // η and the exit term's factor over Ft/π of each pixel's medium from `media`.
-    void radiance(const float* radiosityRGBA, const RenderTarget& gbuffer, const glm::vec3& eye,
-                  const MaterialTables& media);
-    void toneMap(const RenderTarget& gbuffer, const std::vector<LightView>& lights,
-                 const ShadowMapArray& shadows, const glm::vec3& eye, const MaterialTables& media,
-                 float key, float lavg, float specular, float shininess);
-    const RenderTarget& radianceTarget() const { return *radianceTarget_; }
+    // radiosity: B at the frame's pixels, RGBA floats, GL row order.
+    // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
+    // `materials`: η and the exit term's factor over Ft/π (render_options.h
+    // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe. Read
+    // frameRadiance() after it, then call toneMap().
+    void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+                  const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
+                  const ShadowMapArray& shadows, const glm::vec3& eye,
+                  const MaterialTables& materials, float alpha);
+    // The radiance at the frame's pixels (RGBA, GL order): the centre's, or
+    // in a supersampled pixel the mean over its covered samples (alpha their
+    // fraction).
+    std::vector<float> frameRadiance() const;
+    // Ls = scale·L, Reinhard's curve, the mean over a pixel's samples, sRGB.
+    void toneMap(float scale);
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 
   private:
-    ShaderProgram radianceProgram_, toneMapProgram_;
+    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, toneMapProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
-    std::unique_ptr<RenderTarget> radianceTarget_, colorTarget_;
+    // centre: radiance and the supersampled pixels' mask (attachment 1)
+    std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_;
+    int aa_ = 1;
     GLuint emptyVao_ = 0;
 };
 

@@ -62,9 +62,13 @@ RenderTarget::~RenderTarget() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
 }
 
-void RenderTarget::bindAndClear() {
+void RenderTarget::bind() {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, width_, height_);
+}
+
+void RenderTarget::bindAndClear() {
+    bind();
     const float zero[4] = {0, 0, 0, 0};
     for (size_t i = 0; i < colors_.size(); ++i)
         glClearBufferfv(GL_COLOR, static_cast<GLint>(i), zero);

@@ -19,6 +19,9 @@ class RenderTarget {
 
     // Binds, sets the viewport and clears colour (to zero) and depth.
     void bindAndClear();
+    // Binds and sets the viewport; the contents stay (a pass that writes
+    // only what it will read).
+    void bind();
     int width() const { return width_; }
     int height() const { return height_; }
     GLuint color(int i) const { return colors_[static_cast<size_t>(i)]; }

@@ -133,6 +133,11 @@ const BadInput kBadInputs[] = {
     {"UnknownProfileFirst", "render --profile multipole --mesh @DIR@/nope.off", "",
      "--profile 'multipole'"},
     {"UnknownExitFirst", "render --exit pbrt --mesh @DIR@/nope.off", "", "--exit 'pbrt'"},
+    // Issue 21: the display's options, checked where they enter.
+    {"RoughnessTwoFirst", "render --roughness 2 --mesh @DIR@/nope.off", "",
+     "--roughness 2 is out of range [0.05, 1]"},
+    {"ExposureNanFirst", "render --exposure nan --mesh @DIR@/nope.off", "", "--exposure"},
+    {"AaZeroFirst", "render --aa 0 --mesh @DIR@/nope.off", "", "--aa 0 is out of range"},
     {"NineLightsFirst",
      "render --mesh @DIR@/nope.off" +
          [] {

@@ -91,3 +91,45 @@ vec3 irradiance(vec3 p, vec3 n, float eta) {
     }
     return e;
 }
+
+// The dielectric GGX lobe (docs/design.md "Surface reflection"; its double twin is
+// host/physics/ggx.h): D·G2·F(η, v·h) / (4 cosθi cosθo) with α = R², Smith's
+// height-correlated G2 and the exact Fresnel reflectance at the microfacet.
+float smithLambda(float alpha, float c) {
+    c = clamp(c, 1e-6, 1.0);
+    float tan2 = (1.0 - c * c) / (c * c);
+    return 0.5 * (sqrt(1.0 + alpha * alpha * tan2) - 1.0);
+}
+float ggxBrdf(float eta, float alpha, vec3 n, vec3 v, vec3 l) {
+    float ci = dot(n, l), co = dot(n, v);
+    if (ci <= 0.0 || co <= 0.0) return 0.0;
+    vec3 h = normalize(l + v);
+    float ch = max(dot(n, h), 0.0);
+    float a2 = alpha * alpha;
+    float t = ch * ch * (a2 - 1.0) + 1.0;
+    float d = a2 / (PI * t * t);
+    float g = 1.0 / (1.0 + smithLambda(alpha, ci) + smithLambda(alpha, co));
+    return d * g * fresnelR(eta, dot(v, h)) / (4.0 * ci * co);
+}
+
+// The lobe's radiance towards v from the lights: Σ f·I·falloff·cosθi·V, on a
+// medium of index eta.
+vec3 specularRadiance(vec3 p, vec3 n, vec3 v, float alpha, float eta) {
+    vec3 s = vec3(0.0);
+    // A constant trip count, as in irradiance().
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_lightCount) break;
+        float falloff;
+        vec3 l = toLight(i, p, falloff);
+        float c = dot(n, l);
+        if (c <= 0.0) continue;
+        vec3 e = u_lightRgb[i] * (c * falloff);
+        float f = ggxBrdf(eta, alpha, n, v, l);
+        // Below 1e-4 of a white Lambertian surface's (1/π) the lobe is under
+        // an 8-bit step wherever the object shows: skip the shadow taps, which
+        // cost most of this pass.
+        if (f < 1e-4 / PI) continue;
+        s += f * e * visibility(i, p, n, l);
+    }
+    return s;
+}

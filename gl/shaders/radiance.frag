@@ -1,22 +1,96 @@
-// L = Ft(η, cos θo) / π · B (docs/design.md §2), per covered pixel, times
-// the exit scale: 1 (Jensen's exit term) or 1/c (pbrt's normalised one,
-// --exit); η and the scale those of the pixel's medium (mediumOf).
-uniform sampler2D u_radiosity;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+// Radiance (docs/design.md "The composite"): the subsurface term
+// Ft(η, cos θo)/π · B (§2; × the exit scale: 1, Jensen's exit term, or 1/c,
+// pbrt's normalised one, --exit) plus the GGX lobe's reflection of the
+// lights (design "Surface reflection"); η and the exit scale those of the
+// point's medium (mediumOf, by the position's w).
+//
+// Two variants. The frame's: one sample at each pixel's centre, from the
+// frame's G-buffer, and (u_findEdges) the pixels to supersample. With
+// TSIS_COMPOSITE_SAMPLES: u_aa × u_aa samples per pixel from the composite's
+// own G-buffer, drawn only in the pixels marked (edge_points.vert; elsewhere
+// the centre's sample stands for the pixel).
+uniform sampler2D u_radiosity;      // B at the frame's pixels
+uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = coverage)
+uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
+uniform float u_alpha;  // GGX α = R²; 0: no lobe (--no-specular)
 layout(location = 0) out vec4 o_radiance;
+
+vec3 shade(vec4 p, ivec2 px, vec3 b) {
+    vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
+    vec3 v = normalize(u_eye - p.xyz);
+    // An open mesh seen from behind: the side that faces the eye.
+    if (dot(n, v) < 0.0) n = -n;
+    vec4 medium = mediumOf(p.w);
+    vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
+    if (u_alpha > 0.0) l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
+    return l;
+}
+
+// Whether two frame G-buffer texels show one surface: both uncovered, or
+// both covered at distances to the eye within 2% (not a silhouette or a
+// depth jump).
+bool sameSurface(vec4 a, vec4 b) {
+    if ((a.w > 0.0) != (b.w > 0.0)) return false;
+    if (a.w == 0.0) return true;
+    float da = distance(a.xyz, u_eye), db = distance(b.xyz, u_eye);
+    return abs(da - db) <= 0.02 * max(da, db);
+}
+
+#ifdef TSIS_COMPOSITE_SAMPLES
+uniform sampler2D u_position;  // the samples'
+uniform int u_aa;
+
+// B at sample px (surface point p): the frame pixel's that holds the sample,
+// or where that pixel shows no surface or another one, the covered
+// neighbour's nearest to p in space.
+vec3 radiosityAt(ivec2 px, vec4 p) {
+    ivec2 c = px / u_aa;
+    if (sameSurface(texelFetch(u_framePosition, c, 0), p)) return texelFetch(u_radiosity, c, 0).rgb;
+    ivec2 size = textureSize(u_framePosition, 0);
+    ivec2 best = c;
+    float bestD2 = 1e30;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 k = clamp(c + ivec2(dx, dy), ivec2(0), size - 1);
+            vec4 r = texelFetch(u_framePosition, k, 0);
+            vec3 d = r.xyz - p.xyz;
+            if (r.w > 0.0 && dot(d, d) < bestD2) {
+                bestD2 = dot(d, d);
+                best = k;
+            }
+        }
+    // A sliver thinner than the frame's pixels: no covered pixel holds it.
+    if (bestD2 == 1e30) return vec3(0.0);
+    return texelFetch(u_radiosity, best, 0).rgb;
+}
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_position, px, 0);
-    if (p.w == 0.0) {
-        o_radiance = vec4(0.0);
-        return;
-    }
-    vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
-    vec3 v = normalize(u_eye - p.xyz);
-    vec3 b = texelFetch(u_radiosity, px, 0).rgb;
-    vec4 medium = mediumOf(p.w);
-    o_radiance = vec4(fresnelT(medium.r, abs(dot(n, v))) / PI * b * medium.g, 1.0);
+    o_radiance = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, radiosityAt(px, p)), 1.0);
 }
+#else
+uniform int u_findEdges;
+layout(location = 1) out vec4 o_edge;
+
+// A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
+// depth jump passes through it or beside it.
+bool edgePixel(ivec2 px, vec4 p) {
+    ivec2 size = textureSize(u_framePosition, 0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 k = clamp(px + ivec2(dx, dy), ivec2(0), size - 1);
+            if (!sameSurface(p, texelFetch(u_framePosition, k, 0))) return true;
+        }
+    return false;
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 p = texelFetch(u_framePosition, px, 0);
+    o_edge = vec4(u_findEdges != 0 && edgePixel(px, p) ? 1.0 : 0.0);
+    o_radiance = p.w == 0.0 ? vec4(0.0)
+                            : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
+}
+#endif

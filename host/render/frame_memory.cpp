@@ -15,7 +15,10 @@ constexpr double kFixed = 275e6;  // GL, CL, programs, the default mesh
 constexpr double kPerPixel = 123;
 constexpr double kPerAovPixel = 83;  // --aov: the float images kept on the host
 constexpr double kPerAtlasTexel = 227;
-constexpr double kPerLightTexel = 16;       // the default scene's two lights
+constexpr double kPerLightTexel = 16;  // the default scene's two lights
+// --aa N: the composite's (N² − 1) extra samples a pixel, each a position,
+// a normal, a depth and a radiance texel (GL targets, host memory on llvmpipe).
+constexpr double kPerExtraSample = 52;
 constexpr int kAutoLightResolution = 2048;  // --light-res 0: at most this (renderer.h)
 
 }  // namespace
@@ -25,8 +28,11 @@ uint64_t frameMemoryBytes(const RenderOptions& o) {
     const double atlas = double(o.atlasResolution) * o.atlasResolution;
     const int lightRes = o.lightResolution > 0 ? o.lightResolution : kAutoLightResolution;
     const double light = double(lightRes) * lightRes;
-    return static_cast<uint64_t>(kFixed + pixels * (kPerPixel + (o.keepAovs ? kPerAovPixel : 0)) +
-                                 atlas * kPerAtlasTexel + light * kPerLightTexel);
+    const double extraSamples = double(o.aa) * o.aa - 1;
+    return static_cast<uint64_t>(
+        kFixed +
+        pixels * (kPerPixel + (o.keepAovs ? kPerAovPixel : 0) + extraSamples * kPerExtraSample) +
+        atlas * kPerAtlasTexel + light * kPerLightTexel);
 }
 
 void requireFrameMemory(const RenderOptions& o) {

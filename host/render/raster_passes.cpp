@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "image/image_io.h"
+#include "physics/ggx.h"
 #include "tsis_shared.h"
 #include "util/hash.h"
 
@@ -19,6 +20,10 @@ float logAverageLuminance(const std::vector<float>& rgba) {
         ++n;
     }
     return n ? static_cast<float>(std::exp(sum / static_cast<double>(n))) : 1.0f;
+}
+
+float exposureScale(const RenderOptions& o, float lavg) {
+    return o.autoExposure ? o.key / std::max(lavg, 1e-30f) : std::exp2(o.exposure);
 }
 
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
@@ -45,6 +50,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
     Hasher etas;
     for (const glm::vec2& m : media) etas.add(m.x);
     const uint64_t eta = etas.digest();
+    h.samples = graph.create<GlTarget>("composite_samples");
 
     graph.addPass(
         "upload_mesh", [&](FrameGraph::Builder& b) { b.write(h.mesh); },
@@ -136,6 +142,36 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             }
             res.write(h.gbuffer) = {&gbufferPass_.target(), gbufferVersion_};
         });
+    // The composite's geometry at --aa × the size: rasterised again (cheap),
+    // while B stays at the frame's pixels (the methods' cost).
+    graph.addPass(
+        "gl_composite_samples",
+        [&](FrameGraph::Builder& b) {
+            b.read(h.mesh);
+            b.read(h.lights);
+            b.read(h.gbuffer);
+            b.write(h.samples);
+        },
+        [this, &ctx, h](FrameGraph::Resources& res) {
+            const int aa = ctx.options->aa;
+            if (aa == 1) {
+                res.write(h.samples) = res.read(h.gbuffer);
+                return;
+            }
+            Hasher key;
+            key.add(meshHash_).add(ctx.width).add(ctx.height).add(aa);
+            for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
+            if (key.digest() != samplesKey_) {
+                const GlLights& lights = res.read(h.lights);
+                sampleGbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows,
+                                       materials_, ctx.viewProj, ctx.width * aa, ctx.height * aa,
+                                       false);
+                glFinish();
+                samplesKey_ = key.digest();
+                ++samplesVersion_;
+            }
+            res.write(h.samples) = {&sampleGbufferPass_.target(), samplesVersion_};
+        });
     return h;
 }
 
@@ -148,19 +184,22 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
         [&](FrameGraph::Builder& b) {
             b.read(radiosity);
             b.read(gl.gbuffer);
+            b.read(gl.samples);
             b.read(gl.lights);
             b.write(image);
         },
         [this, &ctx, gl, radiosity, image](FrameGraph::Resources& res) {
             const RenderOptions& o = *ctx.options;
-            const RenderTarget& gbuffer = *res.read(gl.gbuffer).target;
             const GlLights& lights = res.read(gl.lights);
             FrameImage& out = res.write(image);
-            compositePass_.radiance(res.read(radiosity).rgba.data(), gbuffer, ctx.eye, materials_);
-            out.radiance = compositePass_.radianceTarget().readRGBA(0);
+            const float alpha = o.specular ? static_cast<float>(ggxAlpha(o.roughness)) : 0.0f;
+            compositePass_.radiance(res.read(radiosity).rgba.data(), *res.read(gl.gbuffer).target,
+                                    *res.read(gl.samples).target, o.aa, *lights.views,
+                                    *lights.shadows, ctx.eye, materials_, alpha);
+            out.radiance = compositePass_.frameRadiance();
             out.lavg = logAverageLuminance(out.radiance);
-            compositePass_.toneMap(gbuffer, *lights.views, *lights.shadows, ctx.eye, materials_,
-                                   o.key, out.lavg, o.specular ? o.specularKs : 0.0f, o.shininess);
+            out.exposureScale = exposureScale(o, out.lavg);
+            compositePass_.toneMap(out.exposureScale);
             out.rgb8 =
                 fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
         });

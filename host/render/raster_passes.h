@@ -34,16 +34,24 @@ struct FrameImage {
     std::vector<uint8_t> rgb8;    // sRGB, row 0 = top
     std::vector<float> radiance;  // RGBA, GL row order
     float lavg = 1;               // log-average luminance of the radiance
+    float exposureScale = 1;      // Ls = exposureScale·L before the tone curve
 };
 
 struct RasterHandles {
     FrameGraphId<const GpuMesh*> mesh;
     FrameGraphId<GlLights> lights;
     FrameGraphId<GlTarget> geometryAtlas, fluxAtlas, gbuffer;
+    // The composite's geometry: positions and normals at --aa × the frame's
+    // size (the G-buffer itself at 1×).
+    FrameGraphId<GlTarget> samples;
 };
 
 // The log-average luminance (Reinhard's L_avg) of RGBA pixels whose alpha > 0.
 float logAverageLuminance(const std::vector<float>& rgba);
+
+// The factor on radiance before the tone curve: 2^exposure, or with
+// autoExposure key/L_avg (docs/design.md "The composite").
+float exposureScale(const RenderOptions& o, float lavg);
 
 class RasterPasses {
   public:
@@ -53,8 +61,8 @@ class RasterPasses {
     RasterHandles addPasses(FrameGraph& graph, const FrameContext& ctx, uint64_t meshHash,
                             uint64_t lightingKey, FrameGraphId<LightMapsCl> lightMapsCl,
                             FrameGraphId<CameraBuffersCl> gbufferCl);
-    // Radiance L = Ft/π·B (× the exit term's scale), then tone mapping, the Phong highlight and
-    // sRGB.
+    // Radiance L = Ft/π·B (× the exit term's scale) + the GGX lobe per
+    // sample, then exposure, the tone curve, the samples' mean and sRGB.
     FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
                                           const RasterHandles& gl,
                                           FrameGraphId<RadiosityImage> radiosity);
@@ -69,7 +77,7 @@ class RasterPasses {
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
     FluxAtlasPass fluxAtlasPass_;
-    GBufferPass gbufferPass_;
+    GBufferPass gbufferPass_, sampleGbufferPass_;
     CompositePass compositePass_;
     MaterialTables
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
@@ -81,7 +89,9 @@ class RasterPasses {
     uint64_t lightViewKey_ = 0, fluxKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
     uint64_t gbufferKey_ = 0;  // mesh, camera, size (and the lighting, with irradiance)
-    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0;
+    uint64_t samplesKey_ = 0;  // mesh, camera, size, --aa
+    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0,
+             samplesVersion_ = 0;
 };
 
 }  // namespace tsis

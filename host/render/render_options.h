@@ -56,10 +56,18 @@ struct RenderOptions {
     int lightResolution = 0;
     int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
-    float key = 0.18f;  // Reinhard key
+    // The display (docs/design.md "The composite"): radiance × 2^exposure before the tone
+    // curve, a fixed exposure (README "Exposure, reflection and antialiasing"), or with
+    // autoExposure each frame's key/L_avg (Reinhard's key, the log-average luminance).
+    float exposure = 3.3f;
+    bool autoExposure = false;
+    float key = 0.18f;
+    // The GGX lobe (physics/ggx.h): on, and its roughness R (α = R²); 0.3
+    // reads as polished marble or skin.
     bool specular = true;
-    float specularKs = 0.2f;
-    float shininess = 40.0f;
+    float roughness = 0.3f;
+    // Composite samples per pixel along each axis (docs/design.md "The composite").
+    int aa = 2;
     // Hybrid split (docs/design.md §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).
     double rpBound = 0.1;
     double rpK = 1.5;

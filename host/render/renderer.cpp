@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/dipole.h"
@@ -145,6 +146,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
+    // The composite's samples are one render target (docs/design.md "The composite").
+    if (const int most = gl_.maxTextureSize(); std::max(opt.width, opt.height) * opt.aa > most)
+        fail("--aa ", opt.aa, " at ", opt.width, "×", opt.height, " needs ", opt.width * opt.aa,
+             "×", opt.height * opt.aa, " composite samples, past GL's largest target ", most,
+             "; lower --aa");
     Timer total;
     CpuTimer totalCpu;
     FrameResult result;

@@ -83,6 +83,11 @@ void settings(ViewState& s) {
         resize(s, std::clamp(double(size), kMinSizeMm, kMaxSizeMm));
     ImGui::SliderInt("N samples", &s.options.samples, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic);
     s.options.samples = std::max(1, s.options.samples);
+    // The display: one exposure for every frame (--auto-exposure re-exposes each).
+    ImGui::SliderFloat("roughness", &s.options.roughness, 0.05f, 1.0f, "%.2f");
+    s.options.roughness = std::clamp(s.options.roughness, 0.05f, 1.0f);
+    ImGui::SliderFloat("exposure EV", &s.options.exposure, -10.0f, 10.0f, "%+.1f");
+    s.options.exposure = std::clamp(s.options.exposure, -30.0f, 30.0f);
     resolutionCombo("atlas res", s.options.atlasResolution, 64, 4096, nullptr);
     resolutionCombo("light res", s.options.lightResolution, 256, 4096, "auto");
     ImGui::Checkbox("auto-orbit light", &s.autoOrbit);

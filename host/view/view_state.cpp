@@ -77,8 +77,8 @@ bool drawsSamples(const std::string& method) {
 
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {
-        "material", "sigma-s",   "sigma-a",   "eta",         "size-mm", "method",
-        "samples",  "atlas-res", "light-res", "progressive", "frames",  "auto-orbit"};
+        "material",  "sigma-s",   "sigma-a",     "eta",    "size-mm",    "method",    "samples",
+        "atlas-res", "light-res", "progressive", "frames", "auto-orbit", "roughness", "exposure"};
     return names;
 }
 
@@ -99,7 +99,8 @@ void setParameter(ViewState& state, const std::string& name, const std::string& 
     } else if (name == "method") {
         o.method = value;
         validateRenderOptions(o);
-    } else if (name == "samples" || name == "atlas-res" || name == "light-res") {
+    } else if (name == "samples" || name == "atlas-res" || name == "light-res" ||
+               name == "roughness" || name == "exposure") {
         findRenderParam(name)->set(o, value);  // the ranges of the command line's options
     } else if (name == "progressive") {
         s.progressive = onOff(name, value);
@@ -124,7 +125,8 @@ bool sameScene(const ViewState& a, const ViewState& b) {
 bool sameFrame(const ViewState& a, const ViewState& b) {
     const RenderOptions &oa = a.options, &ob = b.options;
     return sameScene(a, b) && oa.method == ob.method && oa.samples == ob.samples &&
-           oa.atlasResolution == ob.atlasResolution && oa.lightResolution == ob.lightResolution;
+           oa.atlasResolution == ob.atlasResolution && oa.lightResolution == ob.lightResolution &&
+           oa.roughness == ob.roughness && oa.exposure == ob.exposure;
 }
 
 }  // namespace tsis

@@ -47,7 +47,7 @@ bool drawsSamples(const std::string& method);
 
 // Sets a parameter by the name a script uses (`set NAME VALUE`): material,
 // sigma-s, sigma-a, eta, size-mm, method, samples, atlas-res, light-res,
-// progressive (on|off), frames, auto-orbit (on|off). Throws tsis::Error naming
+// progressive (on|off), frames, auto-orbit (on|off), roughness, exposure. Throws tsis::Error naming
 // the parameter when the name or the value is bad; the state is then unchanged.
 void setParameter(ViewState& state, const std::string& name, const std::string& value);
 
@@ -57,7 +57,7 @@ const std::vector<std::string>& parameterNames();
 // Same mesh, size, material, lights, camera and image size: one reference
 // image holds for both.
 bool sameScene(const ViewState& a, const ViewState& b);
-// sameScene, and the same method, N and resolutions (what the viewer changes
+// sameScene, and the same method, N, resolutions, roughness and exposure (what the viewer changes
 // of the options): the same frame, so a new one is not needed.
 bool sameFrame(const ViewState& a, const ViewState& b);
 

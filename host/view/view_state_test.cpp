@@ -78,6 +78,10 @@ TEST(ViewState, SetParameterChangesOneThingOrNothing) {
     setParameter(s, "auto-orbit", "on");
     setParameter(s, "frames", "8");
     setParameter(s, "size-mm", "20");
+    setParameter(s, "roughness", "0.5");
+    setParameter(s, "exposure", "-2.5");
+    EXPECT_EQ(s.options.roughness, 0.5f);
+    EXPECT_EQ(s.options.exposure, -2.5f);
     EXPECT_EQ(s.options.method, "tsis");
     EXPECT_EQ(s.options.samples, 64);
     EXPECT_EQ(s.options.atlasResolution, 256);
@@ -88,7 +92,8 @@ TEST(ViewState, SetParameterChangesOneThingOrNothing) {
     const std::pair<const char*, const char*> bad[] = {
         {"material", "unobtainium"}, {"sigma-s", "1,2"}, {"eta", "0.5"},        {"size-mm", "1000"},
         {"method", "magic"},         {"samples", "0"},   {"atlas-res", "1000"}, {"light-res", "12"},
-        {"progressive", "maybe"},    {"frames", "x"},    {"colour", "red"},
+        {"progressive", "maybe"},    {"frames", "x"},    {"colour", "red"},     {"roughness", "2"},
+        {"exposure", "nan"},
     };
     for (const auto& [name, value] : bad) {
         ViewState before = s;

@@ -1,0 +1,143 @@
+#include "render/raster_passes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "physics/ggx.h"
+#include "support/render.h"
+
+namespace tsis {
+namespace {
+
+// A marble sphere under a directional light from the camera's side.
+Scene frontLitSphere(glm::vec3 travel) {
+    return test::sphereScene("marble",
+                             {Light::Type::Directional, glm::normalize(travel), glm::vec3(1.0f)});
+}
+
+// The shader's GGX lobe (gl/shaders/common.glsl) on rendered pixels against
+// the double-precision one (physics/ggx.h): the frame with the lobe minus the
+// frame without it is f·E·cosθi at each pixel's position and normal (the
+// radiosity, a display-only change apart, is the same). Unshadowed: V = 1.
+TEST(Composite, GlslLobeMatchesTheHostLobeOnRenderedPixels) {
+    Scene scene = frontLitSphere({0.3f, -0.4f, -1.0f});
+    scene.lights[0].shadows = false;
+    RenderOptions opt = test::smallOptions(128, 256);
+    opt.aa = 1;
+    for (float roughness : {0.2f, 0.3f, 0.6f, 1.0f}) {
+        SCOPED_TRACE(roughness);
+        opt.roughness = roughness;
+        opt.specular = true;
+        const FrameResult with = test::renderWith(scene, opt, "pyramid");
+        opt.specular = false;
+        const FrameResult without = test::renderWith(scene, opt, "pyramid");
+        ASSERT_EQ(with.radiosity.pixels, without.radiosity.pixels);
+        const glm::dvec3 l = -glm::dvec3(scene.lights[0].vec);
+        const glm::dvec3 eye(scene.camera.eye);
+        double maxExpected = 0, worst = 0;
+        int checked = 0;
+        for (int pass = 0; pass < 2; ++pass)
+            for (int y = 0; y < with.height; ++y)
+                for (int x = 0; x < with.width; ++x) {
+                    if (with.coverage.at(x, y, 0) == 0) continue;
+                    const glm::dvec3 p(with.position.at(x, y, 0), with.position.at(x, y, 1),
+                                       with.position.at(x, y, 2));
+                    const glm::dvec3 n = glm::normalize(glm::dvec3(
+                        with.normal.at(x, y, 0), with.normal.at(x, y, 1), with.normal.at(x, y, 2)));
+                    const glm::dvec3 v = glm::normalize(eye - p);
+                    const double cosI = glm::dot(n, l);
+                    if (cosI <= 0 || glm::dot(n, v) <= 0) continue;
+                    // The surface's frame: n = +z.
+                    const glm::dvec3 t = glm::normalize(glm::cross(
+                        n, std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+                    const glm::dvec3 b = glm::cross(n, t);
+                    auto local = [&](glm::dvec3 w) {
+                        return glm::dvec3(glm::dot(w, t), glm::dot(w, b), glm::dot(w, n));
+                    };
+                    const double expected =
+                        ggxBrdf(scene.material.eta, roughness, local(l), local(v)) * cosI;
+                    if (pass == 0) {
+                        maxExpected = std::max(maxExpected, expected);
+                        continue;
+                    }
+                    if (expected < 0.02 * maxExpected) continue;
+                    for (int c = 0; c < 3; ++c) {
+                        const double got = with.radiance.at(x, y, c) - without.radiance.at(x, y, c);
+                        worst = std::max(worst, std::abs(got - expected) / expected);
+                    }
+                    ++checked;
+                }
+        EXPECT_GT(checked, 30);
+        EXPECT_LT(worst, 1e-3) << checked << " pixels";  // measured 1.6e-4 at most
+    }
+}
+
+// The fixed exposure shows the light's strength (× 1000: brighter); the
+// auto exposure takes it back out (each frame's own log-average).
+TEST(Composite, FixedExposureShowsTheLightsStrength) {
+    Scene dim = frontLitSphere({0.3f, -0.4f, -1.0f}), bright = dim;
+    dim.lights[0].rgb = glm::vec3(0.01f);
+    bright.lights[0].rgb = glm::vec3(10.0f);
+    RenderOptions opt = test::smallOptions(48, 256);
+    auto mean = [](const FrameResult& f) {
+        double s = 0;
+        for (uint8_t v : f.rgb8) s += v;
+        return s / static_cast<double>(f.rgb8.size());
+    };
+    const double fixedDim = mean(test::renderWith(dim, opt, "pyramid"));
+    const double fixedBright = mean(test::renderWith(bright, opt, "pyramid"));
+    EXPECT_GT(fixedBright, fixedDim + 30);
+    opt.autoExposure = true;
+    const double autoDim = mean(test::renderWith(dim, opt, "pyramid"));
+    const double autoBright = mean(test::renderWith(bright, opt, "pyramid"));
+    EXPECT_NEAR(autoBright, autoDim, 0.5);
+}
+
+TEST(Composite, ExposureScale) {
+    RenderOptions o;
+    o.exposure = 2.5f;
+    EXPECT_FLOAT_EQ(exposureScale(o, 0.01f), std::exp2(2.5f));
+    EXPECT_FLOAT_EQ(exposureScale(o, 100.0f), std::exp2(2.5f));
+    o.autoExposure = true;
+    o.key = 0.18f;
+    EXPECT_FLOAT_EQ(exposureScale(o, 0.02f), 9.0f);
+}
+
+// --aa: the silhouette pixels come closer to the 4×4-sample image than the
+// one-sample ones do (the staircase goes), at no cost to the interior.
+TEST(Composite, SupersampledSilhouettesApproachTheFinelySampledImage) {
+    const Scene scene = frontLitSphere({0.3f, -0.4f, -1.0f});
+    RenderOptions opt = test::smallOptions(64, 256);
+    FrameResult f[3];
+    const int aa[3] = {1, 2, 4};
+    for (int i = 0; i < 3; ++i) {
+        opt.aa = aa[i];
+        f[i] = test::renderWith(scene, opt, "pyramid");
+    }
+    // Silhouette pixels: a covered pixel next to an uncovered one, or the reverse.
+    const ImageF& cov = f[0].coverage;
+    double err[2] = {0, 0}, interior[2] = {0, 0};
+    int edges = 0;
+    for (int y = 1; y + 1 < cov.height; ++y)
+        for (int x = 1; x + 1 < cov.width; ++x) {
+            const float c = cov.at(x, y, 0);
+            const bool edge = cov.at(x - 1, y, 0) != c || cov.at(x + 1, y, 0) != c ||
+                              cov.at(x, y - 1, 0) != c || cov.at(x, y + 1, 0) != c;
+            edges += edge;
+            for (int i = 0; i < 2; ++i)
+                for (int ch = 0; ch < 3; ++ch) {
+                    const size_t k = (static_cast<size_t>(y) * cov.width + x) * 3 + ch;
+                    const double d = double(f[i].rgb8[k]) - double(f[2].rgb8[k]);
+                    (edge ? err : interior)[i] += d * d;
+                }
+        }
+    ASSERT_GT(edges, 50);
+    EXPECT_LT(err[1], 0.3 * err[0]) << "silhouette squared error, 2×2 against 1×1 samples";
+    // The interior: the same surface, at most a level or two of difference.
+    EXPECT_LT(interior[1], interior[0] + 1e-9 + 4.0 * cov.width * cov.height);
+}
+
+}  // namespace
+}  // namespace tsis
