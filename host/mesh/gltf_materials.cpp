@@ -183,7 +183,9 @@ struct Reader {
                 if (v.Has("attenuationColor"))
                     fm.attenuationColor = triple(v.Get("attenuationColor"), i,
                                                  "KHR_materials_volume.attenuationColor", false);
-                if (v.Has("thicknessTexture")) ignored.add("KHR_materials_volume.thicknessTexture");
+                // The mesh is the volume: thickness is for thin-walled stand-ins.
+                if (v.Has("thicknessFactor") || v.Has("thicknessTexture"))
+                    ignored.add("KHR_materials_volume thickness");
             } else {
                 ignored.add(ext);
             }

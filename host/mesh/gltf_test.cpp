@@ -537,7 +537,8 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
                   "TEXCOORD_0 is read) (1)\n" +
                   n +
                   "material features ignored (materials using them): baseColorFactor alpha < 1 "
-                  "(1), normalTexture (1), KHR_materials_clearcoat (1), alphaMode BLEND (1)\n");
+                  "(1), KHR_materials_volume thickness (1), normalTexture (1), "
+                  "KHR_materials_clearcoat (1), alphaMode BLEND (1)\n");
 }
 
 TEST(GLTF, TexturedPrimitiveWithoutTexcoordsIsNoted) {
