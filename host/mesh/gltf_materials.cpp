@@ -102,7 +102,8 @@ struct Reader {
                 droppedTextures.add("an external image, not read when parsing from memory");
                 return;
             }
-            const std::string path = (std::filesystem::path(folder) / image.uri).string();
+            const std::string path =
+                (std::filesystem::path(folder) / image.uri).lexically_normal().string();
             std::error_code ec;
             if (!std::filesystem::exists(path, ec)) {
                 note(name, concat("material '", materialName(i), "': texture '", path,

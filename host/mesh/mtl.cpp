@@ -88,7 +88,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             // A file name may hold spaces: the rest of the line.
             std::string file(tok[1]);
             for (size_t k = 2; k < tok.size(); ++k) file += concat(" ", tok[k]);
-            const std::string resolved = (folder / file).string();
+            const std::string resolved = (folder / file).lexically_normal().string();
             std::error_code ec;
             if (!fs::exists(resolved, ec)) {
                 note(meshName, concat(where(line), ": material '", m.name, "': texture '", resolved,

@@ -167,7 +167,7 @@ std::vector<FileMaterial> readLibraries(const std::vector<std::string>& librarie
                               "' not read (parsing from memory): its materials are undefined"));
             continue;
         }
-        const std::string path = (std::filesystem::path(folder) / lib).string();
+        const std::string path = (std::filesystem::path(folder) / lib).lexically_normal().string();
         std::string text;
         try {
             text = readRegularFile(path, "material library");
