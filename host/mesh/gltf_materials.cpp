@@ -13,29 +13,13 @@ namespace {
 
 using namespace meshparse;
 
-// Kinds of things noted once each, with how many materials have them.
-struct Counts {
-    std::vector<std::pair<std::string, size_t>> kinds;
-    void add(const std::string& kind) {
-        auto it = std::find_if(kinds.begin(), kinds.end(),
-                               [&](const auto& k) { return k.first == kind; });
-        if (it == kinds.end()) it = kinds.insert(kinds.end(), {kind, 0});
-        ++it->second;
-    }
-    std::string list() const {
-        std::string s;
-        for (const auto& [k, n] : kinds) s += concat(s.empty() ? "" : ", ", k, " (", n, ")");
-        return s;
-    }
-};
-
 struct Reader {
     const tinygltf::Model& model;
     const std::string& name;
     const std::string& folder;
     const ImageBytes& images;
-    Counts ignored;          // material features tsis does not use
-    Counts droppedTextures;  // base colour textures not used, by why
+    KindCounts ignored;          // material features tsis does not use
+    KindCounts droppedTextures;  // base colour textures not used, by why
 
     std::string materialName(size_t i) const {
         const std::string& n = model.materials[i].name;
@@ -213,11 +197,11 @@ std::vector<FileMaterial> readMaterials(const tinygltf::Model& model, const std:
     Reader r{model, name, folder, images, {}, {}};
     std::vector<FileMaterial> out;
     for (size_t i = 0; i < model.materials.size(); ++i) out.push_back(r.material(i));
-    if (!r.droppedTextures.kinds.empty())
-        note(name,
-             "base colour textures ignored (albedo factor only): " + r.droppedTextures.list());
-    if (!r.ignored.kinds.empty())
-        note(name, "material features ignored (materials using them): " + r.ignored.list());
+    if (!r.droppedTextures.empty())
+        note(name, "base colour textures ignored (albedo factor only): " +
+                       r.droppedTextures.list("materials"));
+    if (!r.ignored.empty())
+        note(name, "material features ignored (materials using them): " + r.ignored.list("uses"));
     return out;
 }
 

@@ -28,8 +28,8 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
     Lines lines(text, '#');
     std::vector<std::string_view> tok;
     std::vector<FileMaterial> out;
-    std::vector<std::pair<std::string, size_t>> ignored;  // keyword, count
-    size_t outside = 0;                                   // statements before the first newmtl
+    KindCounts ignored;  // keywords
+    size_t outside = 0;  // statements before the first newmtl
     auto where = [&](size_t line) { return concat("material library '", path, "': line ", line); };
     auto failLine = [&](size_t line, const auto&... args) -> void {
         failIn(meshName, where(line), ": ", args...);
@@ -98,22 +98,16 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             }
             m.texturePath = resolved;
         } else {
-            auto it = std::find_if(ignored.begin(), ignored.end(),
-                                   [&](const auto& o) { return o.first == key; });
-            if (it == ignored.end()) it = ignored.insert(ignored.end(), {std::string(key), 0});
-            ++it->second;
+            ignored.add(key);
         }
     }
     if (outside)
         note(meshName, concat("material library '", path, "': ", outside, " ",
                               plural(outside, "statement", "statements"),
                               " before the first newmtl ignored"));
-    if (!ignored.empty()) {
-        std::string s;
-        for (const auto& [k, n] : ignored) s += concat(s.empty() ? "" : ", ", k, " (", n, ")");
-        note(meshName, concat("material library '", path, "': statements ignored: ", s,
+    if (!ignored.empty())
+        note(meshName, concat("material library '", path, "': statements ignored: ", ignored.list(),
                               " (read: newmtl, Kd, map_Kd, Ni)"));
-    }
     return out;
 }
 

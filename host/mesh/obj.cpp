@@ -92,9 +92,7 @@ struct Names {
 struct Ignored {
     Names libraries, materials, smoothing;  // mtllib, usemtl (when not read), s (but off)
     size_t groups = 0, elements = 0;
-    std::vector<std::pair<std::string, size_t>> other;  // keyword, count; at most kKinds
-    size_t otherMore = 0;                               // lines of further keywords
-    static constexpr size_t kKinds = 8;  // a garbage file's keywords are not all listed
+    KindCounts other;  // keywords
 
     void add(std::string_view key, const std::vector<std::string_view>& tok) {
         if (key == "mtllib") {
@@ -108,14 +106,7 @@ struct Ignored {
         } else if (key == "l" || key == "p") {
             ++elements;
         } else {
-            auto it = std::find_if(other.begin(), other.end(),
-                                   [&](const auto& o) { return o.first == key; });
-            if (it == other.end() && other.size() == kKinds) {
-                ++otherMore;
-                return;
-            }
-            if (it == other.end()) it = other.insert(other.end(), {std::string(key), 0});
-            ++it->second;
+            other.add(key);
         }
     }
 
@@ -139,13 +130,7 @@ struct Ignored {
             meshparse::note(
                 name, concat(elements, " line and point ", plural(elements, "element", "elements"),
                              " (l, p) ignored (only faces are drawn)"));
-        if (!other.empty()) {
-            std::string s;
-            for (const auto& [key, n] : other)
-                s += concat(s.empty() ? "" : ", ", key, " (", n, ")");
-            if (otherMore) s += concat(" and ", otherMore, " more lines");
-            meshparse::note(name, "statements ignored: " + s);
-        }
+        if (!other.empty()) meshparse::note(name, "statements ignored: " + other.list());
     }
 };
 
@@ -160,6 +145,7 @@ double number(std::string_view token, const std::string& name, size_t line) {
 std::vector<FileMaterial> readLibraries(const std::vector<std::string>& libraries,
                                         const std::string& folder, const std::string& name) {
     std::vector<FileMaterial> out;
+    std::unordered_set<std::string> defined;
     Names twice;
     for (const std::string& lib : libraries) {
         if (folder.empty()) {
@@ -176,8 +162,7 @@ std::vector<FileMaterial> readLibraries(const std::vector<std::string>& librarie
             continue;
         }
         for (FileMaterial& m : parseMTL(text, path, name)) {
-            if (std::any_of(out.begin(), out.end(),
-                            [&](const FileMaterial& o) { return o.name == m.name; })) {
+            if (!defined.insert(m.name).second) {
                 twice.add(m.name);
                 continue;
             }
@@ -197,15 +182,17 @@ void assignMaterials(Mesh& mesh, const std::vector<size_t>& faceStart,
                      const std::vector<uint32_t>& faceMaterial,
                      const std::vector<std::string>& usedNames, std::vector<FileMaterial> materials,
                      FileView& view) {
+    std::unordered_map<std::string, uint32_t> byName;  // names are distinct (readLibraries)
+    for (size_t m = 0; m < materials.size(); ++m)
+        byName.emplace(materials[m].name, static_cast<uint32_t>(m));
     std::vector<uint32_t> id(usedNames.size(), kNoFileMaterial);
     Names undefined;
     for (size_t u = 0; u < usedNames.size(); ++u) {
-        const auto it = std::find_if(materials.begin(), materials.end(),
-                                     [&](const FileMaterial& m) { return m.name == usedNames[u]; });
-        if (it == materials.end())
+        const auto it = byName.find(usedNames[u]);
+        if (it == byName.end())
             undefined.add(usedNames[u]);
         else
-            id[u] = static_cast<uint32_t>(it - materials.begin());
+            id[u] = it->second;
     }
     if (!undefined.empty())
         note(mesh.name,
@@ -244,6 +231,8 @@ Mesh parseOBJ(const std::string& text, const std::string& name, const std::strin
     // With a view: the mtllib files, and each face's usemtl (an index into
     // usedNames, or kNone before the first usemtl).
     std::vector<std::string> libraries, usedNames;
+    std::unordered_set<std::string> libraryNames;
+    std::unordered_map<std::string, uint32_t> usedIndex;  // into usedNames
     std::vector<uint32_t> faceMaterial;
     uint32_t current = kNone;
     while (lines.next(tok)) {
@@ -284,16 +273,16 @@ Mesh parseOBJ(const std::string& text, const std::string& name, const std::strin
             triangleCount += tok.size() - 3;
         } else if (view && key == "mtllib") {
             for (size_t k = 1; k < tok.size(); ++k)
-                if (std::find(libraries.begin(), libraries.end(), tok[k]) == libraries.end())
-                    libraries.emplace_back(tok[k]);
+                if (libraryNames.emplace(tok[k]).second) libraries.emplace_back(tok[k]);
         } else if (view && key == "usemtl") {
             if (tok.size() < 2) {
                 current = kNone;  // "usemtl" alone: back to no material
                 continue;
             }
-            const auto it = std::find(usedNames.begin(), usedNames.end(), tok[1]);
-            current = static_cast<uint32_t>(it - usedNames.begin());
-            if (it == usedNames.end()) usedNames.emplace_back(tok[1]);
+            const auto [it, added] =
+                usedIndex.try_emplace(std::string(tok[1]), static_cast<uint32_t>(usedNames.size()));
+            if (added) usedNames.emplace_back(tok[1]);
+            current = it->second;
         } else {
             ignored.add(key, tok);
         }

@@ -56,6 +56,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     fs::create_symlink("/etc/hostname", dir + "/out.bin", ec);
     fs::create_directory(dir + "/sub", ec);
     std::ofstream(dir + "/sub/c.bin", std::ios::binary) << std::string(64, '\0');
+    // corpus/materials.obj's library: a texture that exists, one that does not.
+    std::ofstream(dir + "/m.mtl") << "newmtl a\nKd 0.8 0.1 0.1\nNi 1.4\nmap_Kd b.bin\nKs 1 1 1\n"
+                                     "newmtl b\nKd 0.5\nmap_Kd -s 2 2 1 b.bin\nmap_Kd none.png\n";
     std::atexit([] { fs::remove_all(gltfFolder); });
     return 0;
 }
