@@ -30,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <set>
 
 #include "mesh/gltf_materials.h"
 #include "mesh/mesh_io.h"
@@ -567,12 +568,19 @@ void noteIgnoredParts(const tinygltf::Model& model, int scene, const std::string
         for (const std::string& a : attributes) list += (list.empty() ? "" : ", ") + a;
         note(name, "vertex attributes ignored: " + list + " (read: POSITION, NORMAL, TEXCOORD_0)");
     }
+    // Read, or noted with the materials that use them (readMaterials): a
+    // material's extensions, and texture transforms (their textures are
+    // either dropped or ignored, with a note).
+    std::set<std::string> noted{"KHR_lights_punctual"};
+    if (materialsRead) {
+        noted.insert("KHR_texture_transform");
+        for (const tinygltf::Material& m : model.materials)
+            for (const auto& [e, value] : m.extensions) noted.insert(e);
+    }
     std::vector<std::string> extensions;
     for (const std::vector<std::string>* list : {&model.extensionsUsed, &model.extensionsRequired})
         for (const std::string& e : *list)
-            if (e != "KHR_lights_punctual" &&
-                !(materialsRead &&
-                  (e.rfind("KHR_materials_", 0) == 0 || e == "KHR_texture_transform")) &&
+            if (!noted.count(e) &&
                 std::find(extensions.begin(), extensions.end(), e) == extensions.end())
                 extensions.push_back(e);
     if (!extensions.empty()) {

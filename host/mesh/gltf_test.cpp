@@ -485,7 +485,7 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
                                std::string(R"([{"uri": "data:image/png;base64,)") + kPng1x1 +
                                    R"("}, {"uri": "missing.png"}])",
                                R"(, "extensionsUsed": ["KHR_materials_ior", "KHR_materials_volume",
-                                              "KHR_materials_clearcoat"])"));
+                                              "KHR_materials_clearcoat", "KHR_materials_variants"])"));
     FileView view;
     testing::internal::CaptureStderr();
     const Mesh m = loadMesh(path, &view);
@@ -538,7 +538,8 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
                   n +
                   "material features ignored (materials using them): baseColorFactor alpha < 1 "
                   "(1), KHR_materials_volume thickness (1), normalTexture (1), "
-                  "KHR_materials_clearcoat (1), alphaMode BLEND (1)\n");
+                  "KHR_materials_clearcoat (1), alphaMode BLEND (1)\n" +
+                  n + "extensions ignored: KHR_materials_variants\n");
 }
 
 TEST(GLTF, TexturedPrimitiveWithoutTexcoordsIsNoted) {
