@@ -198,8 +198,8 @@ TEST(GltfView, FileCameraAndLightsRenderAsTheSameOptions) {
     EXPECT_GT(maxValue, 0.0);
 }
 
-// A second camera, an orthographic one, a spot light and a material: each
-// left-out kind is one note naming the file; --camera out of range is one
+// A second camera, an orthographic one, a spot light and a material's
+// alphaMode: each left-out kind is one note naming the file; --camera out of range is one
 // line that says how many there are.
 TEST(GltfView, CameraChoiceAndNotesNameTheFile) {
     ScratchDir dir;
@@ -211,7 +211,7 @@ TEST(GltfView, CameraChoiceAndNotesNameTheFile) {
                      "znear": 0.1}},
                      {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1,
                       "znear": 0.1, "zfar": 10}})",
-                         R"(, "materials": [{"name": "Jade"}])"));
+                         R"(, "materials": [{"name": "Jade", "alphaMode": "BLEND"}])"));
     const RunResult r =
         runTsis("render " + kFast + "--mesh " + gltf + " --camera 2 -o " + dir.file("x.png"));
     EXPECT_EQ(r.exitCode, 1) << r.err;
@@ -226,8 +226,10 @@ TEST(GltfView, CameraChoiceAndNotesNameTheFile) {
         ++notes;
         EXPECT_EQ(line.rfind("tsis: note: mesh '" + gltf + "': ", 0), 0u) << line;
     }
-    EXPECT_EQ(notes, 2u) << r.err;  // the material, the orthographic camera
-    EXPECT_NE(r.err.find("material 'Jade' ignored"), std::string::npos) << r.err;
+    EXPECT_EQ(notes, 2u) << r.err;  // the material's alphaMode, the orthographic camera
+    EXPECT_NE(r.err.find("material features ignored (materials using them): alphaMode BLEND (1)"),
+              std::string::npos)
+        << r.err;
     EXPECT_NE(r.err.find("1 orthographic camera ignored"), std::string::npos) << r.err;
 
     const RunResult both = runTsis("render " + kFast + "--mesh " + gltf +

@@ -63,6 +63,12 @@ void validateInput(const Mesh& mesh, const AtlasOptions& opt) {
     if (mesh.hasNormals() && mesh.normals.size() != mesh.positions.size())
         fail(mesh.name, ": ", mesh.normals.size(), " normals for ", mesh.positions.size(),
              " vertices");
+    if (mesh.hasTexcoords() && mesh.texcoords.size() != mesh.positions.size())
+        fail(mesh.name, ": ", mesh.texcoords.size(), " texture coordinates for ",
+             mesh.positions.size(), " vertices");
+    if (!mesh.materialIds.empty() && mesh.materialIds.size() != mesh.triangles.size())
+        fail(mesh.name, ": ", mesh.materialIds.size(), " material ids for ", mesh.triangles.size(),
+             " triangles");
 }
 
 }  // namespace

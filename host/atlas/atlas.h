@@ -63,9 +63,9 @@ struct AtlasStats {
 };
 
 // Gives the mesh UVs for every vertex, splitting vertices along chart seams:
-// the result may have more vertices than the input (positions and normals
-// copied); triangles keep their order and count. Throws tsis::Error with a
-// clear line when it cannot (empty mesh, non-finite positions).
+// the result may have more vertices than the input (positions, normals and
+// the file's texcoords copied; the triangles' file materials too); triangles keep their order and
+// count. Throws tsis::Error with a clear line when it cannot (empty mesh, non-finite positions).
 Mesh buildAtlas(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats = nullptr);
 
 // The policy behind `--atlas`:

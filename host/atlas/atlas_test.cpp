@@ -513,6 +513,32 @@ TEST(AtlasCache, HitIsIdenticalAndCorruptEntryIsRebuilt) {
     std::filesystem::remove_all(dir);
 }
 
+// The atlas splits vertices along its seams: each copy has its source's file
+// texcoords, and each triangle its material, built or from the cache.
+TEST(AtlasCache, CarriesTexcoordsAndMaterials) {
+    const auto dir = scratchDir("cache_texcoords");
+    const ScopedEnv env("TSIS_CACHE_DIR", dir.string());
+    Mesh mesh = test::sphereMesh(16, 32);
+    for (const glm::vec3& p : mesh.positions) mesh.texcoords.emplace_back(p.x + p.y, p.z);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        mesh.materialIds.push_back(t % 5 == 4 ? kNoFileMaterial : uint32_t(t % 5));
+    AtlasOptions opt;
+    opt.resolution = 256;
+    for (int pass = 0; pass < 2; ++pass) {
+        AtlasStats stats;
+        const Mesh out = atlas::buildAtlasCached(mesh, opt, &stats);
+        EXPECT_EQ(stats.fromCache, pass == 1);
+        EXPECT_GT(out.positions.size(), mesh.positions.size());  // seams split
+        ASSERT_EQ(out.texcoords.size(), out.positions.size());
+        EXPECT_EQ(out.materialIds, mesh.materialIds);
+        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                ASSERT_EQ(out.texcoords[out.triangles[t][k]], mesh.texcoords[mesh.triangles[t][k]])
+                    << t << " " << k;
+    }
+    std::filesystem::remove_all(dir);
+}
+
 // The atlas belongs to the shape, not the size: the mesh at 30 mm finds the
 // entry made at 10 mm (issue 25: a new --size-mm rebuilt it), with the same
 // UVs and three times the positions.

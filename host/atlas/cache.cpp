@@ -97,6 +97,13 @@ void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceV
         for (size_t v = 0; v < sourceVertex.size(); ++v)
             atlas.normals[v] = mesh.normals[sourceVertex[v]];
     }
+    if (mesh.hasTexcoords()) {
+        atlas.texcoords.resize(sourceVertex.size());
+        for (size_t v = 0; v < sourceVertex.size(); ++v)
+            atlas.texcoords[v] = mesh.texcoords[sourceVertex[v]];
+    }
+    // Triangles keep their order and count.
+    atlas.materialIds = mesh.materialIds;
 }
 
 std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mesh& mesh,

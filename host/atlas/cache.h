@@ -36,8 +36,9 @@ bool storeCachedAtlas(const std::filesystem::path& file, const Mesh& atlas,
                       const std::vector<uint32_t>& sourceVertex, size_t inputVertices,
                       const AtlasStats& stats);
 
-// Fills the atlas' positions (and normals, when the mesh has them) from the
-// input vertex of each of its vertices.
+// Fills the atlas' positions (and normals and the file's texcoords, when the
+// mesh has them) from the input vertex of each of its vertices, and copies the
+// triangles' file materials (the atlas keeps the triangles' order).
 void copySourceAttributes(const Mesh& mesh, const std::vector<uint32_t>& sourceVertex, Mesh& atlas);
 
 // buildAtlas that also returns the input vertex of every output vertex.

@@ -2,9 +2,12 @@
 // tinygltf. The default scene's nodes are walked with their transforms and
 // every triangle primitive becomes part of one mesh: POSITION, NORMAL and
 // TEXCOORD_0 (float, or normalized unsigned byte/short), indices of any
-// unsigned width or none. UVs are kept only when every primitive has them,
-// with v flipped (glTF's origin is the image's top left, the atlas' the
-// bottom left, as in OBJ); normals likewise. Images are never decoded. Every
+// unsigned width or none, and the primitive's material (gltf_materials.h).
+// UVs are kept only when every primitive has them, with v flipped (glTF's
+// origin is the image's top left, the atlas' the bottom left, as in OBJ);
+// normals likewise. TEXCOORD_0 is also kept as it is, as the texcoords of the
+// file's textures, when any primitive has it ((0, 0) on the others). Images
+// are never decoded: their encoded bytes are kept for the materials. Every
 // accessor is bounds-checked here rather than trusting the file.
 //
 // A small file can name a huge scene: nodes are instances. Before anything is
@@ -27,7 +30,9 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <set>
 
+#include "mesh/gltf_materials.h"
 #include "mesh/mesh_io.h"
 #include "mesh/parse_util.h"
 #include "mesh/repair.h"
@@ -41,9 +46,16 @@ using namespace meshparse;
 
 constexpr int kMaxNodeDepth = 64;  // deeper hierarchies are refused (and cycles)
 
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
-    return true;  // textures are not used
+// Images are not decoded here: their bytes are kept (gltf::ImageBytes) for
+// the materials' textures.
+bool keepImageBytes(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void* user) {
+    auto& images = *static_cast<gltf::ImageBytes*>(user);
+    if (index < 0 || size < 0) return true;
+    if (images.size() <= static_cast<size_t>(index)) images.resize(static_cast<size_t>(index) + 1);
+    images[static_cast<size_t>(index)].assign(reinterpret_cast<const char*>(bytes),
+                                              static_cast<size_t>(size));
+    return true;
 }
 
 // Without a folder (parsing from memory), files a glTF names are not read.
@@ -309,10 +321,13 @@ struct Builder {
     const tinygltf::Model& model;
     const std::string& name;
     Mesh mesh;
+    // Whether each material has a texture (sized when materials are read).
+    const std::vector<char>& textured;
     std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> uvs;
-    bool allNormals = true, allUVs = true;
-    size_t skippedPrimitives = 0;
+    std::vector<glm::vec2> uvs, texcoords;
+    std::vector<uint32_t> materialIds;
+    bool allNormals = true, allUVs = true, anyTexcoords = false, anyMaterial = false;
+    size_t skippedPrimitives = 0, texturedWithoutUV = 0;
 
     // Nodes checked by checkForest: valid indices, a tree, depth bounded.
     void node(int index, const glm::mat4& parent) {
@@ -366,10 +381,23 @@ struct Builder {
             const std::vector<float> t =
                 readFloats(model, at("TEXCOORD_0"), 2, true, name, "TEXCOORD_0");
             if (t.size() / 2 != count) failIn(name, "TEXCOORD_0 and POSITION counts differ");
-            for (size_t i = 0; i < count; ++i) uvs.emplace_back(t[2 * i], 1.0f - t[2 * i + 1]);
+            for (size_t i = 0; i < count; ++i) {
+                uvs.emplace_back(t[2 * i], 1.0f - t[2 * i + 1]);
+                texcoords.emplace_back(t[2 * i], t[2 * i + 1]);
+            }
+            anyTexcoords = true;
         } else {
             allUVs = false;
+            texcoords.resize(texcoords.size() + count, glm::vec2(0.0f));
         }
+        if (p.material >= static_cast<int>(model.materials.size()))
+            failIn(name, "material ", p.material, " does not exist");
+        const uint32_t material =
+            p.material >= 0 ? static_cast<uint32_t>(p.material) : kNoFileMaterial;
+        anyMaterial = anyMaterial || p.material >= 0;
+        if (p.material >= 0 && static_cast<size_t>(p.material) < textured.size() &&
+            textured[static_cast<size_t>(p.material)] && at("TEXCOORD_0") < 0)
+            ++texturedWithoutUV;
         std::vector<uint32_t> idx;
         if (p.indices >= 0) {
             idx = readIndices(model, p.indices, name);
@@ -383,6 +411,7 @@ struct Builder {
                     failIn(name, "index ", idx[k + size_t(c)], " past the primitive's ", count,
                            " vertices");
             mesh.triangles.emplace_back(base + idx[k], base + idx[k + 1], base + idx[k + 2]);
+            materialIds.push_back(material);
         }
     }
 };
@@ -497,19 +526,22 @@ std::string nameList(const std::vector<std::string>& names) {
     return s;
 }
 
-// One note per kind of thing the file has and tsis does not use.
-void noteIgnoredParts(const tinygltf::Model& model, int scene, const std::string& name) {
+// One note per kind of thing the file has and tsis does not use. With
+// `materialsRead`, materials and their textures were read (readMaterials
+// noted what of them was not).
+void noteIgnoredParts(const tinygltf::Model& model, int scene, const std::string& name,
+                      bool materialsRead) {
     auto count = [&](size_t n, const char* one, const char* many, const char* why) {
         if (n) note(name, concat(n, " ", plural(n, one, many), " ignored (", why, ")"));
     };
-    if (!model.materials.empty()) {
+    if (!model.materials.empty() && !materialsRead) {
         std::vector<std::string> names;
         for (const tinygltf::Material& m : model.materials) names.push_back(m.name);
         const size_t n = names.size();
         note(name, concat(n == 1 ? "material " : concat(n, " materials "), nameList(names),
                           " ignored (the material is --material's)"));
     }
-    if (!model.textures.empty() || !model.images.empty())
+    if ((!model.textures.empty() || !model.images.empty()) && !materialsRead)
         note(name, concat(model.textures.size(), " ",
                           plural(model.textures.size(), "texture", "textures"), " and ",
                           model.images.size(), " ", plural(model.images.size(), "image", "images"),
@@ -536,10 +568,19 @@ void noteIgnoredParts(const tinygltf::Model& model, int scene, const std::string
         for (const std::string& a : attributes) list += (list.empty() ? "" : ", ") + a;
         note(name, "vertex attributes ignored: " + list + " (read: POSITION, NORMAL, TEXCOORD_0)");
     }
+    // Read, or noted with the materials that use them (readMaterials): a
+    // material's extensions, and texture transforms (their textures are
+    // either dropped or ignored, with a note).
+    std::set<std::string> noted{"KHR_lights_punctual"};
+    if (materialsRead) {
+        noted.insert("KHR_texture_transform");
+        for (const tinygltf::Material& m : model.materials)
+            for (const auto& [e, value] : m.extensions) noted.insert(e);
+    }
     std::vector<std::string> extensions;
     for (const std::vector<std::string>* list : {&model.extensionsUsed, &model.extensionsRequired})
         for (const std::string& e : *list)
-            if (e != "KHR_lights_punctual" &&
+            if (!noted.count(e) &&
                 std::find(extensions.begin(), extensions.end(), e) == extensions.end())
                 extensions.push_back(e);
     if (!extensions.empty()) {
@@ -559,7 +600,8 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
                FileView* view) {
     if (bytes.empty()) failIn(name, "empty file");
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skipImage, nullptr);
+    gltf::ImageBytes images;
+    loader.SetImageLoader(keepImageBytes, &images);
     Folder root;
     if (folder.empty()) {
         loader.SetFsCallbacks({noFile, samePath, noRead, noWrite, nullptr});
@@ -590,7 +632,12 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
         std::string first = err.substr(0, err.find('\n'));
         failIn(name, "not a valid glTF 2.0 file (", first.empty() ? "no reason given" : first, ")");
     }
-    Builder b{model, name, {}, {}, {}};
+    // Materials first: the walk counts textured ones without TEXCOORD_0.
+    std::vector<FileMaterial> materials;
+    if (view) materials = gltf::readMaterials(model, name, folder, images);
+    std::vector<char> textured(materials.size());
+    for (size_t m = 0; m < materials.size(); ++m) textured[m] = !materials[m].texturePath.empty();
+    Builder b{model, name, {}, textured};
     b.mesh.name = name;  // repair's notes name the file
     ViewCollector views{model, name, {}};
     const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -615,7 +662,12 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
         note(name, std::to_string(b.skippedPrimitives) + " non-triangle " +
                        plural(b.skippedPrimitives, "primitive", "primitives") + " skipped");
     if (b.mesh.triangles.empty()) failIn(name, "no triangles");
-    noteIgnoredParts(model, scene, name);
+    noteIgnoredParts(model, scene, name, view != nullptr);
+    if (b.texturedWithoutUV)
+        note(name, concat(b.texturedWithoutUV, " ",
+                          plural(b.texturedWithoutUV, "primitive", "primitives"),
+                          " with a textured material but no TEXCOORD_0: the texture shows its "
+                          "(0, 0) corner there"));
     const size_t cameras = views.view.cameras.size(), lights = views.view.lights.size();
     if (views.orthographic)
         note(name, concat(views.orthographic, " orthographic ",
@@ -627,6 +679,8 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
                           " ignored (their node's transform is degenerate)"));
     if (view) {
         *view = std::move(views.view);
+        view->materials = std::move(materials);
+        if (b.anyMaterial) b.mesh.materialIds = std::move(b.materialIds);
     } else if (cameras || lights) {
         note(name,
              concat(cameras, " ", plural(cameras, "camera", "cameras"), " and ", lights, " ",
@@ -634,6 +688,7 @@ Mesh parseGLTF(const std::string& bytes, const std::string& name, const std::str
     }
     if (b.allNormals) b.mesh.normals = std::move(b.normals);
     if (b.allUVs) b.mesh.uvs = std::move(b.uvs);
+    if (b.anyTexcoords) b.mesh.texcoords = std::move(b.texcoords);
     repairMesh(b.mesh);
     return b.mesh;
 }

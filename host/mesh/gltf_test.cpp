@@ -15,6 +15,7 @@
 #include "mesh/mesh_io.h"
 #include "support/error_of.h"
 #include "support/scoped_env.h"
+#include "support/scratch_dir.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -415,6 +416,202 @@ TEST(GLTF, IgnoredPartsAreOneNoteEach) {
               "one.gltf");
     EXPECT_EQ(testing::internal::GetCapturedStderr(),
               "tsis: note: mesh 'one.gltf': material 'M' ignored (the material is --material's)\n");
+}
+
+// A 1×1 PNG (70 bytes) as a data URI's base64.
+const char* kPng1x1 =
+    "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg"
+    "==";
+
+// The new user's glTF (issue 20): three quads side by side, the first with
+// TEXCOORD_0 and material 0, the second without and material 1, the third
+// with no material; `materials`, `textures` and `images` as given. With
+// `pngView`, buffer 1 is the 1×1 PNG and bufferView 4 all of it.
+std::string materialScene(const std::string& materials, const std::string& textures = "[]",
+                          const std::string& images = "[]", const std::string& extra = "",
+                          bool pngView = false) {
+    const std::string pngBuffer =
+        pngView
+            ? std::string(R"(, {"byteLength": 70, "uri": "data:application/octet-stream;base64,)") +
+                  kPng1x1 + R"("})"
+            : "";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+      "nodes": [{"mesh": 0}, {"mesh": 1, "translation": [3, 0, 0]},
+                {"mesh": 2, "translation": [6, 0, 0]}],
+      "meshes": [
+        {"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
+                         "indices": 3, "material": 0}]},
+        {"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3,
+                         "material": 1}]},
+        {"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 3}]}],
+      "materials": )" +
+           materials + R"(, "textures": )" + textures + R"(, "images": )" + images +
+           R"(, "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,)" +
+           base64(quadBuffer()) + R"("})" + pngBuffer + R"(],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                      {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                      {"buffer": 0, "byteOffset": 96, "byteLength": 32},
+                      {"buffer": 0, "byteOffset": 128, "byteLength": 12})" +
+           (pngView ? R"(, {"buffer": 1, "byteOffset": 0, "byteLength": 70})" : "") + R"(],
+      "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+         "min": [0, 0, 0], "max": [1, 1, 0]},
+        {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}])" +
+           extra + "}";
+}
+
+TEST(GLTF, MaterialsTexturesAndTexcoords) {
+    const std::string materials = R"([
+      {"name": "Skin",
+       "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.5, 0.4, 0.5],
+                                "baseColorTexture": {"index": 0}},
+       "normalTexture": {"index": 0},
+       "extensions": {"KHR_materials_ior": {"ior": 1.4},
+                      "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.01,
+                                               "attenuationColor": [0.8, 0.3, 0.2]}},
+       "extras": {"tsis": {"preset": "marble", "colour": 1}}},
+      {"name": "Jade", "alphaMode": "BLEND",
+       "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}},
+       "extensions": {"KHR_materials_clearcoat": {}},
+       "extras": {"tsis": {"albedo": [0.9, 0.9, 0.9], "mfp": [1, 2, 3], "eta": 1.5}}},
+      {"pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.3, 0.4, 1],
+                                "baseColorTexture": {"index": 0, "texCoord": 1}}}])";
+    test::ScratchDir dir;
+    const std::string path =
+        dir.file("scene.gltf",
+                 materialScene(materials, R"([{"source": 0}, {"source": 1}])",
+                               std::string(R"([{"uri": "data:image/png;base64,)") + kPng1x1 +
+                                   R"("}, {"uri": "missing.png"}])",
+                               R"(, "extensionsUsed": ["KHR_materials_ior", "KHR_materials_volume",
+                                              "KHR_materials_clearcoat", "KHR_materials_variants"])"));
+    FileView view;
+    testing::internal::CaptureStderr();
+    const Mesh m = loadMesh(path, &view);
+    const std::string notes = testing::internal::GetCapturedStderr();
+
+    ASSERT_EQ(view.materials.size(), 3u);
+    const FileMaterial &skin = view.materials[0], &jade = view.materials[1];
+    EXPECT_EQ(skin.name, "Skin");
+    EXPECT_EQ(skin.albedo, glm::dvec3(0.9, 0.5, 0.4));  // alpha ignored (noted)
+    EXPECT_EQ(skin.texturePath, path + "#image0");
+    ASSERT_EQ(skin.textureBytes.size(), 70u);  // the PNG's encoded bytes
+    EXPECT_EQ(skin.textureBytes.substr(0, 4), "\x89PNG");
+    EXPECT_TRUE(skin.textureSrgb);
+    EXPECT_EQ(skin.eta, 1.4);
+    EXPECT_EQ(skin.attenuationDistance, 0.01);
+    EXPECT_EQ(skin.attenuationColor, glm::dvec3(0.8, 0.3, 0.2));
+    EXPECT_EQ(skin.preset, "marble");
+    EXPECT_EQ(jade.name, "Jade");
+    EXPECT_EQ(jade.albedo, glm::dvec3(0.9));  // extras; white baseColorFactor sets none
+    EXPECT_EQ(jade.mfp, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(jade.eta, 1.5);
+    EXPECT_EQ(jade.texturePath, "");  // missing: noted
+    EXPECT_EQ(view.materials[2].name, "#2");
+    EXPECT_EQ(view.materials[2].albedo, glm::dvec3(0.2, 0.3, 0.4));
+    EXPECT_EQ(view.materials[2].texturePath, "");  // TEXCOORD_1: noted
+
+    // Each triangle's material and texcoords: the first quad's are its
+    // TEXCOORD_0 as given (its UVs equal its x, y), the others' (0, 0).
+    ASSERT_EQ(m.triangles.size(), 6u);
+    EXPECT_EQ(m.materialIds, (std::vector<uint32_t>{0, 0, 1, 1, kNoFileMaterial, kNoFileMaterial}));
+    ASSERT_TRUE(m.hasTexcoords());
+    EXPECT_FALSE(m.hasUVs());  // not every primitive has TEXCOORD_0
+    for (size_t t = 0; t < m.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = m.triangles[t][k];
+            const glm::vec2 expected =
+                m.materialIds[t] == 0 ? glm::vec2(m.positions[v]) : glm::vec2(0.0f);
+            EXPECT_EQ(m.texcoords[v], expected) << t << " " << k;
+        }
+
+    const std::string n = "tsis: note: mesh '" + path + "': ";
+    EXPECT_EQ(notes,
+              n +
+                  "material 'Skin': extras.tsis keys ignored: colour (read: preset, sigma_s, "
+                  "sigma_a, albedo, mfp, eta)\n" +
+                  n + "material 'Jade': texture '" + dir.file("missing.png") +
+                  "' not found: albedo factor only\n" + n +
+                  "base colour textures ignored (albedo factor only): TEXCOORD_1 (only "
+                  "TEXCOORD_0 is read) (1)\n" +
+                  n +
+                  "material features ignored (materials using them): baseColorFactor alpha < 1 "
+                  "(1), KHR_materials_volume thickness (1), normalTexture (1), "
+                  "KHR_materials_clearcoat (1), alphaMode BLEND (1)\n" +
+                  n + "extensions ignored: KHR_materials_variants\n");
+}
+
+TEST(GLTF, TexturedPrimitiveWithoutTexcoordsIsNoted) {
+    // Material 1 has a texture in the file; its primitive has no TEXCOORD_0.
+    const std::string materials =
+        R"([{}, {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])";
+    FileView view;
+    testing::internal::CaptureStderr();
+    const Mesh m = parseGLTF(
+        materialScene(materials, R"([{"source": 0}])",
+                      std::string(R"([{"uri": "data:image/png;base64,)") + kPng1x1 + R"("}])"),
+        "t.gltf", "", &view);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(),
+              "tsis: note: mesh 't.gltf': 1 primitive with a textured material but no "
+              "TEXCOORD_0: the texture shows its (0, 0) corner there\n");
+    EXPECT_EQ(view.materials[1].texturePath, "t.gltf#image0");
+    EXPECT_FALSE(view.materials[0].albedo.has_value());
+    // Without a view: no materials, as before.
+    testing::internal::CaptureStderr();
+    const Mesh plain = parseGLTF(materialScene(materials), "t.gltf");
+    EXPECT_THAT(
+        testing::internal::GetCapturedStderr(),
+        testing::HasSubstr("2 materials '#0', '#1' ignored (the material is --material's)"));
+    EXPECT_TRUE(plain.materialIds.empty());
+    EXPECT_TRUE(plain.hasTexcoords());
+}
+
+TEST(GLTF, ImageInABufferViewKeepsItsBytes) {
+    FileView view;
+    testing::internal::CaptureStderr();
+    parseGLTF(materialScene(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}, {}])",
+                            R"([{"source": 0}])", R"([{"bufferView": 4, "mimeType": "image/png"}])",
+                            "", true),
+              "v.gltf", "", &view);
+    testing::internal::GetCapturedStderr();
+    ASSERT_EQ(view.materials.size(), 2u);
+    EXPECT_EQ(view.materials[0].texturePath, "v.gltf#image0");
+    ASSERT_EQ(view.materials[0].textureBytes.size(), 70u);
+    EXPECT_EQ(view.materials[0].textureBytes.substr(0, 4), "\x89PNG");
+}
+
+TEST(GLTF, BadMaterialValuesAreOneLineErrors) {
+    auto load = [](const std::string& material) {
+        FileView view;
+        return test::errorOf(
+            [&] { parseGLTF(materialScene("[" + material + ", {}]"), "bad.gltf", "", &view); },
+            "bad.gltf");
+    };
+    using testing::HasSubstr;
+    EXPECT_THAT(
+        load(R"({"name": "M", "pbrMetallicRoughness": {"baseColorFactor": [1e999, 0, 0, 1]}})"),
+        HasSubstr("number overflow parsing '1e999'"));  // JSON has no NaN: refused whole
+    EXPECT_THAT(load(R"({"pbrMetallicRoughness": {"baseColorFactor": [0.5, -0.1, 0, 1]}})"),
+                HasSubstr("material '#0': baseColorFactor (0.5, -0.1, 0) must be finite"));
+    EXPECT_THAT(
+        load(R"({"name": "M", "extras": {"tsis": {"sigma_s": "much"}}})"),
+        HasSubstr("mesh 'bad.gltf': material 'M': extras.tsis.sigma_s: expected [r, g, b]"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"sigma_a": [1, "x", 2]}}})"),
+                HasSubstr("material 'M': extras.tsis.sigma_a[1]: expected a number"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"mfp": [1, 0, 1]}}})"),
+                HasSubstr("material 'M': extras.tsis.mfp[1] 0 must be finite and > 0"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"eta": "glass"}}})"),
+                HasSubstr("material 'M': extras.tsis.eta: expected a number"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"preset": 3}}})"),
+                HasSubstr("material 'M': extras.tsis.preset: expected a preset name"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": 1}})"),
+                HasSubstr("material 'M': extras.tsis: expected an object"));
+    EXPECT_THAT(load(R"({"name": "M", "extensions": {"KHR_materials_ior": {"ior": 0}}})"),
+                HasSubstr("material 'M': KHR_materials_ior.ior 0 must be finite and > 0"));
+    EXPECT_THAT(
+        load(R"({"name": "M", "pbrMetallicRoughness": {"baseColorTexture": {"index": 4}}})"),
+        HasSubstr("material 'M': baseColorTexture: texture 4 does not exist"));
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ std::string lowerExtension(const std::string& spec) {
 
 Mesh loadByExtension(const std::string& path, const std::string& ext, FileView* view) {
     if (ext == ".off") return loadOFF(path);
-    if (ext == ".obj") return loadOBJ(path);
+    if (ext == ".obj") return loadOBJ(path, view);
     if (ext == ".stl") return loadSTL(path);
     if (ext == ".gltf" || ext == ".glb") return loadGLTF(path, view);
     return loadPLY(path);
@@ -48,8 +48,10 @@ bool knownExtension(const std::string& ext) {
 Mesh loadOFF(const std::string& path) {
     return parseOFF(readFile(path), path);
 }
-Mesh loadOBJ(const std::string& path) {
-    return parseOBJ(readFile(path), path);
+Mesh loadOBJ(const std::string& path, FileView* view) {
+    // mtllib files are read from its folder.
+    const std::string folder = fs::path(path).parent_path().string();
+    return parseOBJ(readFile(path), path, folder.empty() ? "." : folder, view);
 }
 Mesh loadPLY(const std::string& path) {
     return parsePLY(readFile(path), path);

@@ -13,19 +13,22 @@ namespace tsis {
 
 // `spec` is a path (format from its extension, .off/.obj/.ply/.stl/.gltf/.glb), "builtin:NAME",
 // or a bare name resolved under the unpacked data meshes (data/meshes/NAME.off).
-// `view`, when given, receives the file's cameras and lights (glTF; empty for
-// the other formats); without it the loader notes them as ignored.
+// `view`, when given, receives the file's cameras, lights (glTF) and materials
+// (glTF, OBJ's .mtl files; Mesh::materialIds index them); without it the
+// loader notes them as ignored and the mesh has no materialIds.
 Mesh loadMesh(const std::string& spec, FileView* view = nullptr);
 
 Mesh loadOFF(const std::string& path);
-Mesh loadOBJ(const std::string& path);
+Mesh loadOBJ(const std::string& path, FileView* view = nullptr);
 Mesh loadPLY(const std::string& path);
 Mesh loadSTL(const std::string& path);
 Mesh loadGLTF(const std::string& path, FileView* view = nullptr);  // .gltf or .glb
 
 // Parsers from memory (used by the loaders and the fuzz targets).
 Mesh parseOFF(const std::string& text, const std::string& name);
-Mesh parseOBJ(const std::string& text, const std::string& name);
+// OBJ: mtllib files are read from `folder` (none when it is empty).
+Mesh parseOBJ(const std::string& text, const std::string& name, const std::string& folder = "",
+              FileView* view = nullptr);
 Mesh parsePLY(const std::string& bytes, const std::string& name);
 Mesh parseSTL(const std::string& bytes, const std::string& name);
 // glTF 2.0, text or binary (.glb) by its first bytes; external buffers are read

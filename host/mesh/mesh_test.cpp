@@ -170,6 +170,20 @@ TEST(Mesh, CreaseSplitCopiesUVsAndKeepsFileNormals) {
     EXPECT_EQ(own.normals, std::vector<glm::vec3>(8, glm::vec3(0, 0, 1)));
 }
 
+TEST(Mesh, CreaseSplitCopiesTexcoordsAndKeepsMaterials) {
+    Mesh m = cube();
+    for (const glm::vec3& p : m.positions) m.texcoords.emplace_back(p.x + 2 * p.y, p.z);
+    for (size_t t = 0; t < m.triangles.size(); ++t) m.materialIds.push_back(uint32_t(t % 3));
+    const std::vector<uint32_t> ids = m.materialIds;
+    ensureNormals(m);
+    EXPECT_EQ(m.positions.size(), 24u);  // split at every corner
+    ASSERT_EQ(m.texcoords.size(), m.positions.size());
+    for (size_t i = 0; i < m.positions.size(); ++i)
+        EXPECT_EQ(m.texcoords[i],
+                  glm::vec2(m.positions[i].x + 2 * m.positions[i].y, m.positions[i].z));
+    EXPECT_EQ(m.materialIds, ids);  // triangles keep their order
+}
+
 TEST(Mesh, SmoothGroupsReachAcrossSeams) {
     // The cube as an OBJ with a UV per face corner: 24 vertices, a seam
     // between every two faces. Smooth everywhere, each corner's 3 copies get

@@ -106,6 +106,7 @@ UnionFind smoothGroups(const Mesh& mesh, const std::vector<uint32_t>& weld, cons
 void ensureNormals(Mesh& mesh, double creaseDegrees) {
     const size_t n = mesh.positions.size();
     TSIS_CHECK(mesh.normals.empty() || mesh.normals.size() == n);
+    TSIS_CHECK(mesh.texcoords.empty() || mesh.texcoords.size() == n);
     TSIS_CHECK(creaseDegrees >= 0 && creaseDegrees <= 180);
     const std::vector<char> valid = keepFileNormals(mesh);
     if (mesh.hasNormals() && std::count(valid.begin(), valid.end(), 1) == std::ptrdiff_t(n)) return;
@@ -150,6 +151,7 @@ void ensureNormals(Mesh& mesh, double creaseDegrees) {
             it->second = uint32_t(mesh.positions.size());
             mesh.positions.push_back(mesh.positions[v]);
             if (mesh.hasUVs()) mesh.uvs.push_back(mesh.uvs[v]);
+            if (mesh.hasTexcoords()) mesh.texcoords.push_back(mesh.texcoords[v]);
             groupOf.push_back(g);
         }
         mesh.triangles[c / 3][c % 3] = it->second;

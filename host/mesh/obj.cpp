@@ -1,15 +1,19 @@
 // Wavefront OBJ: v, vt, vn and f (v, v/vt, v//vn, v/vt/vn; negative indices
-// count back from the latest). Corners with separate v/vt/vn indices become one
-// vertex per distinct combination, so every attribute is per vertex.
+// count back from the latest), mtllib and usemtl (the .mtl files through
+// mtl.h). Corners with separate v/vt/vn indices become one vertex per
+// distinct combination, so every attribute is per vertex.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "mesh/mesh_io.h"
+#include "mesh/mtl.h"
 #include "mesh/parse_util.h"
 #include "mesh/repair.h"
+#include "util/input_file.h"
 
 namespace tsis {
 
@@ -86,11 +90,9 @@ struct Names {
 
 // Statements that do not change the surface, one note per kind.
 struct Ignored {
-    Names libraries, materials, smoothing;  // mtllib, usemtl, s (but off)
+    Names libraries, materials, smoothing;  // mtllib, usemtl (when not read), s (but off)
     size_t groups = 0, elements = 0;
-    std::vector<std::pair<std::string, size_t>> other;  // keyword, count; at most kKinds
-    size_t otherMore = 0;                               // lines of further keywords
-    static constexpr size_t kKinds = 8;  // a garbage file's keywords are not all listed
+    KindCounts other;  // keywords
 
     void add(std::string_view key, const std::vector<std::string_view>& tok) {
         if (key == "mtllib") {
@@ -104,14 +106,7 @@ struct Ignored {
         } else if (key == "l" || key == "p") {
             ++elements;
         } else {
-            auto it = std::find_if(other.begin(), other.end(),
-                                   [&](const auto& o) { return o.first == key; });
-            if (it == other.end() && other.size() == kKinds) {
-                ++otherMore;
-                return;
-            }
-            if (it == other.end()) it = other.insert(other.end(), {std::string(key), 0});
-            ++it->second;
+            other.add(key);
         }
     }
 
@@ -119,7 +114,7 @@ struct Ignored {
         if (!libraries.empty())
             meshparse::note(
                 name, concat(plural(libraries.size(), "material library ", "material libraries "),
-                             libraries.list(), " ignored (mtllib: not read)"));
+                             libraries.list(), " ignored (mtllib: not read by this command)"));
         if (!materials.empty())
             meshparse::note(
                 name, concat(plural(materials.size(), "material ", "materials "), materials.list(),
@@ -135,13 +130,7 @@ struct Ignored {
             meshparse::note(
                 name, concat(elements, " line and point ", plural(elements, "element", "elements"),
                              " (l, p) ignored (only faces are drawn)"));
-        if (!other.empty()) {
-            std::string s;
-            for (const auto& [key, n] : other)
-                s += concat(s.empty() ? "" : ", ", key, " (", n, ")");
-            if (otherMore) s += concat(" and ", otherMore, " more lines");
-            meshparse::note(name, "statements ignored: " + s);
-        }
+        if (!other.empty()) meshparse::note(name, "statements ignored: " + other.list());
     }
 };
 
@@ -151,9 +140,82 @@ double number(std::string_view token, const std::string& name, size_t line) {
     return v;
 }
 
+// The materials of the mtllib files, in order (the first definition of a
+// name counts), into view->materials; a library that cannot be read is a note.
+std::vector<FileMaterial> readLibraries(const std::vector<std::string>& libraries,
+                                        const std::string& folder, const std::string& name) {
+    std::vector<FileMaterial> out;
+    std::unordered_set<std::string> defined;
+    Names twice;
+    for (const std::string& lib : libraries) {
+        if (folder.empty()) {
+            note(name, concat("material library '", lib,
+                              "' not read (parsing from memory): its materials are undefined"));
+            continue;
+        }
+        const std::string path = (std::filesystem::path(folder) / lib).lexically_normal().string();
+        std::string text;
+        try {
+            text = readRegularFile(path, "material library");
+        } catch (const Error& e) {
+            note(name, concat(e.what(), ": its materials are undefined"));
+            continue;
+        }
+        for (FileMaterial& m : parseMTL(text, path, name)) {
+            if (!defined.insert(m.name).second) {
+                twice.add(m.name);
+                continue;
+            }
+            out.push_back(std::move(m));
+        }
+    }
+    if (!twice.empty())
+        note(name, concat(plural(twice.size(), "material ", "materials "), twice.list(),
+                          " defined twice: the first definition is used"));
+    return out;
+}
+
+// Each triangle's material: its face's usemtl name looked up in `materials`
+// (which become view.materials). Faces are fans of (corners − 2) triangles,
+// in order; faceStart ends with the corner count.
+void assignMaterials(Mesh& mesh, const std::vector<size_t>& faceStart,
+                     const std::vector<uint32_t>& faceMaterial,
+                     const std::vector<std::string>& usedNames, std::vector<FileMaterial> materials,
+                     FileView& view) {
+    std::unordered_map<std::string, uint32_t> byName;  // names are distinct (readLibraries)
+    for (size_t m = 0; m < materials.size(); ++m)
+        byName.emplace(materials[m].name, static_cast<uint32_t>(m));
+    std::vector<uint32_t> id(usedNames.size(), kNoFileMaterial);
+    Names undefined;
+    for (size_t u = 0; u < usedNames.size(); ++u) {
+        const auto it = byName.find(usedNames[u]);
+        if (it == byName.end())
+            undefined.add(usedNames[u]);
+        else
+            id[u] = it->second;
+    }
+    if (!undefined.empty())
+        note(mesh.name,
+             concat(plural(undefined.size(), "material ", "materials "), undefined.list(),
+                    " (usemtl) defined in no material library: ",
+                    plural(undefined.size(), "its", "their"), " faces take the scene's material"));
+    view.materials = std::move(materials);
+    std::vector<uint32_t> ids;
+    ids.reserve(mesh.triangles.size());
+    bool any = false;
+    for (size_t f = 0; f < faceMaterial.size(); ++f) {
+        const uint32_t m = faceMaterial[f] == kNone ? kNoFileMaterial : id[faceMaterial[f]];
+        any = any || m != kNoFileMaterial;
+        ids.insert(ids.end(), faceStart[f + 1] - faceStart[f] - 2, m);
+    }
+    TSIS_CHECK(ids.size() == mesh.triangles.size());
+    if (any) mesh.materialIds = std::move(ids);
+}
+
 }  // namespace
 
-Mesh parseOBJ(const std::string& text, const std::string& name) {
+Mesh parseOBJ(const std::string& text, const std::string& name, const std::string& folder,
+              FileView* view) {
     std::string_view body(text);
     if (body.substr(0, 3) == "\xEF\xBB\xBF") body.remove_prefix(3);  // UTF-8 BOM
     Lines lines(body, '#');
@@ -166,6 +228,13 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
     std::vector<size_t> faceStart;
     size_t lineCount = 0, shortFaces = 0, triangleCount = 0;
     Ignored ignored;
+    // With a view: the mtllib files, and each face's usemtl (an index into
+    // usedNames, or kNone before the first usemtl).
+    std::vector<std::string> libraries, usedNames;
+    std::unordered_set<std::string> libraryNames;
+    std::unordered_map<std::string, uint32_t> usedIndex;  // into usedNames
+    std::vector<uint32_t> faceMaterial;
+    uint32_t current = kNone;
     while (lines.next(tok)) {
         ++lineCount;
         const size_t line = lines.lineNumber();
@@ -197,10 +266,23 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
                 continue;
             }
             faceStart.push_back(corners.size());
+            faceMaterial.push_back(current);
             for (size_t k = 1; k < tok.size(); ++k)
                 corners.push_back(
                     parseCorner(tok[k], pos.size(), tex.size(), nrm.size(), name, line));
             triangleCount += tok.size() - 3;
+        } else if (view && key == "mtllib") {
+            for (size_t k = 1; k < tok.size(); ++k)
+                if (libraryNames.emplace(tok[k]).second) libraries.emplace_back(tok[k]);
+        } else if (view && key == "usemtl") {
+            if (tok.size() < 2) {
+                current = kNone;  // "usemtl" alone: back to no material
+                continue;
+            }
+            const auto [it, added] =
+                usedIndex.try_emplace(std::string(tok[1]), static_cast<uint32_t>(usedNames.size()));
+            if (added) usedNames.emplace_back(tok[1]);
+            current = it->second;
         } else {
             ignored.add(key, tok);
         }
@@ -211,16 +293,20 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
     ignored.note(name);
 
     // Attributes only when every corner has one: a partly textured mesh has
-    // no atlas, a partly shaded one gets computed normals.
+    // no atlas, a partly shaded one gets computed normals. The file's
+    // texcoords (for its textures) are kept when any corner has one, (0, 0)
+    // on the others.
     size_t withUV = 0, withN = 0;
     for (const Corner& c : corners) {
         withUV += c.vt != kNone;
         withN += c.vn != kNone;
     }
     const bool keepUV = withUV == corners.size(), keepN = withN == corners.size();
+    const bool keepTex = withUV > 0;
     if (withUV && !keepUV)
-        note(name, concat("ignored texture coordinates: only ", withUV, " of ", corners.size(),
-                          " face corners have one"));
+        note(name, concat("texture coordinates on only ", withUV, " of ", corners.size(),
+                          " face corners: not used as the atlas; a texture shows its (0, 0) "
+                          "corner on the others"));
     if (withN && !keepN)
         note(name, concat("ignored normals: only ", withN, " of ", corners.size(),
                           " face corners have one"));
@@ -235,18 +321,25 @@ Mesh parseOBJ(const std::string& text, const std::string& name) {
         Fan fan(mesh.triangles);
         for (size_t k = faceStart[f]; k < faceStart[f + 1]; ++k) {
             Corner c = corners[k];
-            if (!keepUV) c.vt = kNone;
             if (!keepN) c.vn = kNone;
             const auto [it, added] =
                 index.try_emplace(c, static_cast<uint32_t>(mesh.positions.size()));
             if (added) {
                 mesh.positions.push_back(pos[c.v]);
                 if (keepUV) mesh.uvs.push_back(tex[c.vt]);
+                // OBJ's v runs up the image, the texcoords' down.
+                if (keepTex)
+                    mesh.texcoords.push_back(c.vt == kNone
+                                                 ? glm::vec2(0.0f)
+                                                 : glm::vec2(tex[c.vt].x, 1.0f - tex[c.vt].y));
                 if (keepN) mesh.normals.push_back(nrm[c.vn]);
             }
             fan.add(it->second);
         }
     }
+    if (view)
+        assignMaterials(mesh, faceStart, faceMaterial, usedNames,
+                        readLibraries(libraries, folder, name), *view);
     // Vertices no face uses never became mesh vertices; say so like the
     // other formats do.
     std::vector<char> used(pos.size(), 0);

@@ -10,6 +10,7 @@ namespace {
 
 using test::errorOf;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 TEST(OBJ, AllCornerFormsAndPolygon) {
     // A unit square as one quad, then a triangle in v//vn form.
@@ -68,8 +69,18 @@ TEST(OBJ, PartialAttributesAreDroppedWithNote) {
         "p.obj");
     const std::string err = testing::internal::GetCapturedStderr();
     EXPECT_FALSE(m.hasUVs());
-    EXPECT_EQ(m.positions.size(), 4u);  // one vertex per position again
-    EXPECT_THAT(err, HasSubstr("ignored texture coordinates: only 3 of 6"));
+    // The texcoords stay, (0, 0) where a corner has none: 2/2 and 2 differ
+    // there, 3/3 (0, 1 − 1) and 3 do not (merged).
+    ASSERT_TRUE(m.hasTexcoords());
+    EXPECT_EQ(m.positions.size(), 5u);
+    EXPECT_THAT(err, HasSubstr("texture coordinates on only 3 of 6 face corners: not used as the "
+                               "atlas"));
+    EXPECT_THAT(err, HasSubstr("merged 1 duplicate vertex"));
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+        if (m.positions[v] == glm::vec3(1, 0, 0) && m.texcoords[v] != glm::vec2(0.0f)) {
+            EXPECT_EQ(m.texcoords[v], glm::vec2(1, 1));
+        }
+    }
 }
 
 TEST(OBJ, UnusedVerticesNoted) {
@@ -124,11 +135,12 @@ TEST(OBJ, RealWorldFile) {
     EXPECT_NEAR(m.surfaceArea(), 1.0 + 1.5, 1e-6);
     // What was not used: one note per kind, each naming the file.
     const std::string n = "tsis: note: mesh '" + path + "': ";
-    EXPECT_EQ(notes, n + "material library 'scene.mtl' ignored (mtllib: not read)\n" + n +
-                         "materials 'red', 'blue' ignored (the material is --material's)\n" + n +
-                         "3 groups (o, g) ignored (the file is one mesh)\n" + n +
-                         "1 smoothing group (s) ignored (normals: vn, else from the faces)\n" + n +
-                         "1 line and point element (l, p) ignored (only faces are drawn)\n");
+    EXPECT_EQ(notes,
+              n + "material library 'scene.mtl' ignored (mtllib: not read by this command)\n" + n +
+                  "materials 'red', 'blue' ignored (the material is --material's)\n" + n +
+                  "3 groups (o, g) ignored (the file is one mesh)\n" + n +
+                  "1 smoothing group (s) ignored (normals: vn, else from the faces)\n" + n +
+                  "1 line and point element (l, p) ignored (only faces are drawn)\n");
 }
 
 TEST(OBJ, OtherStatementsAreNotedByKeyword) {
@@ -143,6 +155,117 @@ TEST(OBJ, OtherStatementsAreNotedByKeyword) {
     parseOBJ(junk, "j.obj");
     EXPECT_THAT(testing::internal::GetCapturedStderr(),
                 HasSubstr("k6 (1), k7 (1) and 12 more lines\n"));
+}
+
+// The new user's OBJ (issue 20): an .mtl with Kd, map_Kd and Ni, two o/usemtl
+// groups, what the .mtl has that tsis does not read, a missing texture, a
+// name no library defines.
+TEST(OBJ, MaterialsFromMtlLibraries) {
+    test::ScratchDir dir;
+    const std::string png = dir.file("wood.png", std::string("\x89PNG\r\n\x1a\n", 8));
+    dir.file("scene.mtl",
+             "# two materials\nnewmtl red\nKa 1 1 1\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNi 1.4\n"
+             "map_Kd wood.png\nillum 2\n"
+             "newmtl blue\nKd 0.2\nmap_Kd missing.png\nKs 0 0 0\n"
+             "newmtl scaled\nKd 0.5 0.5 0.5\nmap_Kd -s 2 2 1 wood.png\n");
+    dir.file("more.mtl", "newmtl blue\nKd 0.9 0.9 0.9\nnewmtl green\nKd 0.1 0.7 0.1\n");
+    const char* text =
+        "mtllib scene.mtl more.mtl gone.mtl\n"
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.25 0.75\n"
+        "f 1/1 2/2 3/3\n"  // before any usemtl: no material
+        "o A\nusemtl red\nf 1/1 3/3 4/4\n"
+        "o B\nusemtl green\nf 2/1 5/2 6/3 3/5\n"  // a quad: two triangles
+        "usemtl ghost\nf 4/4 2/2 6/3\n";
+    const std::string path = dir.file("scene.obj", text);
+    FileView view;
+    testing::internal::CaptureStderr();
+    const Mesh m = loadMesh(path, &view);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    const std::string n = "tsis: note: mesh '" + path + "': ";
+    const std::string mtl = "material library '" + dir.file("scene.mtl") + "'";
+
+    // In order of first definition; blue's second definition is not used.
+    ASSERT_EQ(view.materials.size(), 4u);
+    const FileMaterial &red = view.materials[0], &blue = view.materials[1];
+    EXPECT_EQ(red.name, "red");
+    EXPECT_EQ(red.albedo, glm::dvec3(0.8, 0.1, 0.1));
+    EXPECT_EQ(red.eta, 1.4);
+    EXPECT_EQ(red.texturePath, png);
+    EXPECT_TRUE(red.textureBytes.empty());
+    EXPECT_EQ(blue.name, "blue");
+    EXPECT_EQ(blue.albedo, glm::dvec3(0.2));  // "Kd r" is grey
+    EXPECT_EQ(blue.texturePath, "");          // missing: Kd only
+    EXPECT_FALSE(blue.eta.has_value());
+    EXPECT_EQ(view.materials[2].name, "scaled");
+    EXPECT_EQ(view.materials[2].texturePath, "");  // an option: not used
+    EXPECT_EQ(view.materials[3].name, "green");
+
+    // One material per triangle, in face order.
+    ASSERT_EQ(m.triangles.size(), 5u);
+    EXPECT_EQ(m.materialIds, (std::vector<uint32_t>{kNoFileMaterial, 0, 3, 3, kNoFileMaterial}));
+    EXPECT_EQ(m.materialOf(1), 0u);
+    // Texcoords: OBJ's v flipped; the atlas UVs keep it.
+    ASSERT_TRUE(m.hasTexcoords());
+    ASSERT_TRUE(m.hasUVs());
+    for (size_t v = 0; v < m.positions.size(); ++v)
+        EXPECT_EQ(m.texcoords[v], glm::vec2(m.uvs[v].x, 1 - m.uvs[v].y));
+    const glm::uvec3 quadSecond = m.triangles[3];  // 2/1 6/3 3/5
+    EXPECT_EQ(m.texcoords[quadSecond.z], glm::vec2(0.25f, 0.25f));
+
+    EXPECT_THAT(notes, HasSubstr(n + mtl + ": line 11: material 'blue': texture '" +
+                                 dir.file("missing.png") + "' not found: albedo factor only\n"));
+    EXPECT_THAT(notes, HasSubstr(n + mtl +
+                                 ": line 15: material 'scaled': map_Kd option -s not supported: "
+                                 "texture ignored (Kd only)\n"));
+    EXPECT_THAT(notes, HasSubstr(n + mtl +
+                                 ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
+                                 "Kd, map_Kd, Ni)\n"));
+    EXPECT_THAT(notes,
+                HasSubstr(n + "material library '" + dir.file("gone.mtl") + "': cannot open"));
+    EXPECT_THAT(notes,
+                HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
+    EXPECT_THAT(notes, HasSubstr(n + "material 'ghost' (usemtl) defined in no material library: "
+                                     "its faces take the scene's material\n"));
+    // Groups are still not objects; materials did not come from them.
+    EXPECT_THAT(notes, HasSubstr(n + "2 groups (o, g) ignored (the file is one mesh)\n"));
+    EXPECT_THAT(notes, Not(HasSubstr("usemtl: not read")));
+    EXPECT_THAT(notes, Not(HasSubstr("'']")));
+}
+
+TEST(OBJ, MaterialsWithoutLibrariesOrFromMemory) {
+    FileView view;
+    testing::internal::CaptureStderr();
+    const Mesh m = parseOBJ("mtllib a.mtl\nusemtl x\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                            "mem.obj", "", &view);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(),
+              "tsis: note: mesh 'mem.obj': material library 'a.mtl' not read (parsing from "
+              "memory): its materials are undefined\n"
+              "tsis: note: mesh 'mem.obj': material 'x' (usemtl) defined in no material "
+              "library: its faces take the scene's material\n");
+    EXPECT_TRUE(view.materials.empty());
+    EXPECT_TRUE(m.materialIds.empty());  // no triangle has a material
+    EXPECT_FALSE(m.hasTexcoords());
+}
+
+TEST(OBJ, BadMaterialValuesAreOneLineErrors) {
+    test::ScratchDir dir;
+    const std::string obj = "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string path = dir.file("m.obj", obj);
+    auto load = [&](const std::string& mtl) {
+        dir.file("m.mtl", mtl);
+        FileView view;
+        return errorOf([&] { loadMesh(path, &view); }, path);
+    };
+    const std::string lib = "material library '" + dir.file("m.mtl") + "'";
+    EXPECT_THAT(load("newmtl a\nKd nan 0 0\n"),
+                HasSubstr(lib + ": line 2: material 'a': Kd nan 0 0 must be finite and >= 0"));
+    EXPECT_THAT(load("newmtl a\nKd 0.5 -1 0\n"), HasSubstr("must be finite and >= 0"));
+    EXPECT_THAT(load("newmtl a\nKd 0.5 x 0\n"),
+                HasSubstr(lib + ": line 2: material 'a': Kd: bad number 'x'"));
+    EXPECT_THAT(load("newmtl a\nNi 0\n"),
+                HasSubstr(lib + ": line 2: material 'a': Ni 0 must be finite and > 0"));
+    EXPECT_THAT(load("newmtl\n"), HasSubstr(lib + ": line 1: newmtl needs a name"));
 }
 
 }  // namespace

@@ -125,6 +125,24 @@ void note(const std::string& name, const std::string& what) {
                  name.empty() ? "(unnamed)" : printable(name).c_str(), printable(what).c_str());
 }
 
+void KindCounts::add(std::string_view kind) {
+    auto it =
+        std::find_if(kinds_.begin(), kinds_.end(), [&](const auto& k) { return k.first == kind; });
+    if (it == kinds_.end() && kinds_.size() == kMax) {
+        ++more_;
+        return;
+    }
+    if (it == kinds_.end()) it = kinds_.insert(kinds_.end(), {std::string(kind), 0});
+    ++it->second;
+}
+
+std::string KindCounts::list(const char* more) const {
+    std::string s;
+    for (const auto& [k, n] : kinds_) s += concat(s.empty() ? "" : ", ", k, " (", n, ")");
+    if (more_) s += concat(" and ", more_, " more ", more);
+    return s;
+}
+
 void noteShortFaces(const std::string& name, size_t count) {
     if (count)
         note(name, concat("skipped ", count, " ", plural(count, "face", "faces"),

@@ -82,6 +82,23 @@ class Fan {
     uint32_t first_ = 0, prev_ = 0;
     size_t corners_ = 0;
 };
+// Kinds of ignored things with how often each came, for one note: the first
+// kMax kinds listed ("Ka (1), Ks (2)"), the rest counted ("and 12 more
+// lines"), so a garbage file neither floods the note nor costs more than
+// kMax comparisons a line.
+class KindCounts {
+  public:
+    static constexpr size_t kMax = 8;
+    void add(std::string_view kind);
+    bool empty() const { return kinds_.empty(); }
+    // `more`: what the uncounted ones are ("lines", "materials").
+    std::string list(const char* more = "lines") const;
+
+  private:
+    std::vector<std::pair<std::string, size_t>> kinds_;
+    size_t more_ = 0;
+};
+
 inline const char* plural(size_t n, const char* one, const char* many) {
     return n == 1 ? one : many;
 }

@@ -26,6 +26,8 @@ void validate(const Mesh& mesh) {
     const size_t n = mesh.positions.size();
     TSIS_CHECK(mesh.normals.empty() || mesh.normals.size() == n);
     TSIS_CHECK(mesh.uvs.empty() || mesh.uvs.size() == n);
+    TSIS_CHECK(mesh.texcoords.empty() || mesh.texcoords.size() == n);
+    TSIS_CHECK(mesh.materialIds.empty() || mesh.materialIds.size() == mesh.triangles.size());
     for (size_t i = 0; i < n; ++i) {
         const glm::vec3& p = mesh.positions[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -33,6 +35,9 @@ void validate(const Mesh& mesh) {
     }
     for (size_t i = 0; i < mesh.uvs.size(); ++i)
         if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y))
+            fail("mesh '", mesh.name, "': vertex ", i, " has a non-finite texture coordinate");
+    for (size_t i = 0; i < mesh.texcoords.size(); ++i)
+        if (!std::isfinite(mesh.texcoords[i].x) || !std::isfinite(mesh.texcoords[i].y))
             fail("mesh '", mesh.name, "': vertex ", i, " has a non-finite texture coordinate");
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
@@ -42,7 +47,8 @@ void validate(const Mesh& mesh) {
     if (mesh.triangles.empty()) fail("mesh '", mesh.name, "': no triangles");
 }
 
-// Folds vertices equal in every attribute; returns how many went.
+// Folds vertices equal in every attribute (the file's texcoords included: a
+// texture seam stays open); returns how many went.
 size_t mergeDuplicates(Mesh& mesh) {
     const size_t n = mesh.positions.size();
     // Bit patterns: exact equality, a total order even for NaN normals; +0.0f
@@ -50,8 +56,10 @@ size_t mergeDuplicates(Mesh& mesh) {
     auto key = [&](uint32_t i) {
         const glm::vec3 p = mesh.positions[i] + 0.0f;
         const glm::vec3 q = mesh.hasNormals() ? mesh.normals[i] + 0.0f : glm::vec3(0.0f);
+        const glm::vec2 w = mesh.hasTexcoords() ? mesh.texcoords[i] + 0.0f : glm::vec2(0.0f);
         auto bits = [](float f) { return std::bit_cast<uint32_t>(f); };
-        return std::make_tuple(bits(p.x), bits(p.y), bits(p.z), bits(q.x), bits(q.y), bits(q.z));
+        return std::make_tuple(bits(p.x), bits(p.y), bits(p.z), bits(q.x), bits(q.y), bits(q.z),
+                               bits(w.x), bits(w.y));
     };
     std::vector<uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
@@ -73,6 +81,16 @@ size_t mergeDuplicates(Mesh& mesh) {
     return merged;  // the orphans go in the silent compaction after
 }
 
+// Triangle t moved to slot `to` (≤ t) with its file material.
+void keepTriangle(Mesh& mesh, size_t t, size_t to) {
+    mesh.triangles[to] = mesh.triangles[t];
+    if (!mesh.materialIds.empty()) mesh.materialIds[to] = mesh.materialIds[t];
+}
+void resizeTriangles(Mesh& mesh, size_t count) {
+    mesh.triangles.resize(count);
+    if (!mesh.materialIds.empty()) mesh.materialIds.resize(count);
+}
+
 size_t dropDegenerate(Mesh& mesh) {
     glm::dvec3 lo(mesh.positions[0]), hi(lo);
     for (const glm::vec3& p : mesh.positions) {
@@ -86,10 +104,10 @@ size_t dropDegenerate(Mesh& mesh) {
         const glm::uvec3 tri = mesh.triangles[t];
         const bool repeated = tri.x == tri.y || tri.y == tri.z || tri.x == tri.z;
         if (repeated || !(mesh.triangleArea(t) > minArea)) continue;
-        mesh.triangles[kept++] = tri;
+        keepTriangle(mesh, t, kept++);
     }
     const size_t dropped = mesh.triangles.size() - kept;
-    mesh.triangles.resize(kept);
+    resizeTriangles(mesh, kept);
     return dropped;
 }
 
@@ -117,8 +135,8 @@ size_t dropDuplicateTriangles(Mesh& mesh) {
     if (dropped == 0) return 0;
     size_t kept = 0;
     for (size_t t = 0; t < n; ++t)
-        if (keep[t]) mesh.triangles[kept++] = mesh.triangles[t];
-    mesh.triangles.resize(kept);
+        if (keep[t]) keepTriangle(mesh, t, kept++);
+    resizeTriangles(mesh, kept);
     return dropped;
 }
 
@@ -134,12 +152,14 @@ size_t dropUnreferenced(Mesh& mesh) {
         mesh.positions[next] = mesh.positions[i];
         if (mesh.hasNormals()) mesh.normals[next] = mesh.normals[i];
         if (mesh.hasUVs()) mesh.uvs[next] = mesh.uvs[i];
+        if (mesh.hasTexcoords()) mesh.texcoords[next] = mesh.texcoords[i];
         ++next;
     }
     if (next == n) return 0;
     mesh.positions.resize(next);
     if (mesh.hasNormals()) mesh.normals.resize(next);
     if (mesh.hasUVs()) mesh.uvs.resize(next);
+    if (mesh.hasTexcoords()) mesh.texcoords.resize(next);
     for (glm::uvec3& tri : mesh.triangles)
         for (int k = 0; k < 3; ++k) tri[k] = remap[tri[k]];
     return n - next;

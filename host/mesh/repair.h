@@ -18,7 +18,8 @@ struct EdgeStats {
 EdgeStats edgeStats(const Mesh& mesh);
 
 struct RepairReport {
-    size_t mergedVertices = 0;        // exact duplicates folded into one (only without UVs)
+    size_t mergedVertices =
+        0;  // exact duplicates (texcoords too) folded into one (only without UVs)
     size_t degenerateTriangles = 0;   // repeated index or area < 1e-12 · diagonal²
     size_t duplicateTriangles = 0;    // same corners, same order (up to rotation) as an earlier one
     size_t unreferencedVertices = 0;  // used by no triangle, dropped

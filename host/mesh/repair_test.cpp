@@ -140,6 +140,49 @@ TEST(Repair, ReportsNonManifoldEdgesButKeepsThem) {
     EXPECT_THAT(notes, HasSubstr("1 non-manifold edge"));
 }
 
+// The file's texcoords and materials survive every repair: a vertex merges
+// only with its texcoords equal, a dropped triangle takes its material along.
+TEST(Repair, CarriesTexcoordsAndMaterials) {
+    Mesh m;
+    m.name = "tm";
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                   {1, 1, 0}, {1, 0, 0},  // 4: 1 again, same texcoords: merged
+                   {0, 1, 0},             // 5: 2 again, other texcoords: kept
+                   {5, 5, 5},             // 6: unreferenced
+                   {2, 0, 0}};            // 7
+    m.texcoords = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {1, 0}, {0.5f, 0.5f}, {9, 9}, {0.2f, 0.2f}};
+    const Mesh in = [&] {
+        Mesh c = m;
+        c.triangles = {{0, 1, 2}, {2, 4, 3}, {0, 0, 1}, {1, 2, 0}, {5, 3, 7}};
+        c.materialIds = {0, 1, 2, 3, kNoFileMaterial};
+        return c;
+    }();
+    m = in;
+    std::string notes;
+    const RepairReport r = quietRepair(m, &notes);
+    EXPECT_EQ(r.mergedVertices, 1u);
+    EXPECT_EQ(r.degenerateTriangles, 1u);
+    EXPECT_EQ(r.duplicateTriangles, 1u);
+    EXPECT_EQ(r.unreferencedVertices, 1u);
+    EXPECT_EQ(m.positions.size(), 6u);
+    ASSERT_EQ(m.texcoords.size(), m.positions.size());
+    // Triangles 0, 1 and 4 stay, in order, each corner as it was.
+    const size_t kept[] = {0, 1, 4};
+    ASSERT_EQ(m.triangles.size(), 3u);
+    ASSERT_EQ(m.materialIds.size(), 3u);
+    for (size_t t = 0; t < 3; ++t) {
+        EXPECT_EQ(m.materialOf(t), in.materialIds[kept[t]]);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(m.positions[m.triangles[t][k]], in.positions[in.triangles[kept[t]][k]]);
+            EXPECT_EQ(m.texcoords[m.triangles[t][k]], in.texcoords[in.triangles[kept[t]][k]]);
+        }
+    }
+    // Without texcoords the same mesh merges 5 into 2 as well.
+    Mesh plain = in;
+    plain.texcoords.clear();
+    EXPECT_EQ(quietRepair(plain).mergedVertices, 2u);
+}
+
 TEST(Repair, Refusals) {
     Mesh all = square();
     all.triangles = {{0, 0, 1}, {2, 2, 2}};

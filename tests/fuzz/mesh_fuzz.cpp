@@ -5,8 +5,8 @@
 // with 's'), '{' or "glTF" → glTF (JSON or .glb), an OFF keyword letter → OFF,
 // anything else → OBJ. A glTF's external files are looked up in a temporary
 // folder holding a buffer, a FIFO, a link out of the folder and a subfolder
-// (only the buffer may be read). A tsis::Error is the expected answer to bad
-// input; any other exception, crash, leak, sanitizer report, timeout or
+// (only the buffer may be read); an OBJ's mtllib files are looked up there too. A tsis::Error is
+// the expected answer to bad input; any other exception, crash, leak, sanitizer report, timeout or
 // allocation past -rss_limit_mb is a finding.
 #include <sys/stat.h>
 #include <unistd.h>
@@ -56,6 +56,9 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     fs::create_symlink("/etc/hostname", dir + "/out.bin", ec);
     fs::create_directory(dir + "/sub", ec);
     std::ofstream(dir + "/sub/c.bin", std::ios::binary) << std::string(64, '\0');
+    // corpus/materials.obj's library: a texture that exists, one that does not.
+    std::ofstream(dir + "/m.mtl") << "newmtl a\nKd 0.8 0.1 0.1\nNi 1.4\nmap_Kd b.bin\nKs 1 1 1\n"
+                                     "newmtl b\nKd 0.5\nmap_Kd -s 2 2 1 b.bin\nmap_Kd none.png\n";
     std::atexit([] { fs::remove_all(gltfFolder); });
     return 0;
 }
@@ -65,16 +68,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     try {
         tsis::Mesh mesh;
+        tsis::FileView view;  // materials read (an OBJ's mtllib from the folder too)
         if (data[0] == 'p') {
             mesh = tsis::parsePLY(bytes, "fuzz.ply");
         } else if (data[0] == 's') {
             mesh = tsis::parseSTL(bytes, "fuzz.stl");
         } else if (data[0] == '{' || bytes.compare(0, 4, "glTF") == 0) {
-            mesh = tsis::parseGLTF(bytes, "fuzz.gltf", gltfFolder);
+            mesh = tsis::parseGLTF(bytes, "fuzz.gltf", gltfFolder, &view);
         } else if (std::strchr("OCNS4n", data[0]) != nullptr) {
             mesh = tsis::parseOFF(bytes, "fuzz.off");
         } else {
-            mesh = tsis::parseOBJ(bytes, "fuzz.obj");
+            mesh = tsis::parseOBJ(bytes, "fuzz.obj", gltfFolder, &view);
         }
         // What a renderer does next with a mesh the parser accepted.
         tsis::ensureNormals(mesh);

@@ -1,0 +1,208 @@
+// readMaterials (gltf_materials.h).
+#include "mesh/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "mesh/parse_util.h"
+
+namespace tsis::gltf {
+
+namespace {
+
+using namespace meshparse;
+
+struct Reader {
+    const tinygltf::Model& model;
+    const std::string& name;
+    const std::string& folder;
+    const ImageBytes& images;
+    KindCounts ignored;          // material features tsis does not use
+    KindCounts droppedTextures;  // base colour textures not used, by why
+
+    std::string materialName(size_t i) const {
+        const std::string& n = model.materials[i].name;
+        return n.empty() ? concat("#", i) : n;
+    }
+
+    template <typename... Args>
+    [[noreturn]] void bad(size_t i, const Args&... args) const {
+        failIn(name, "material '", materialName(i), "': ", args...);
+    }
+
+    // Three finite numbers >= 0 (> 0 with positive) from a glTF array of at least 3.
+    glm::dvec3 rgb(const std::vector<double>& v, size_t i, const char* key) const {
+        if (v.size() < 3) bad(i, key, " needs 3 components");
+        const glm::dvec3 c(v[0], v[1], v[2]);
+        if (!std::isfinite(c.x + c.y + c.z) || std::min({c.x, c.y, c.z}) < 0)
+            bad(i, key, " (", c.x, ", ", c.y, ", ", c.z, ") must be finite and >= 0");
+        return c;
+    }
+
+    double number(const tinygltf::Value& v, size_t i, const std::string& key, bool positive) const {
+        if (!v.IsNumber()) bad(i, key, ": expected a number");
+        const double x = v.GetNumberAsDouble();
+        if (!std::isfinite(x) || !(positive ? x > 0 : x >= 0))
+            bad(i, key, " ", x, positive ? " must be finite and > 0" : " must be finite and >= 0");
+        return x;
+    }
+
+    glm::dvec3 triple(const tinygltf::Value& v, size_t i, const std::string& key,
+                      bool positive) const {
+        if (!v.IsArray() || v.ArrayLen() != 3) bad(i, key, ": expected [r, g, b]");
+        glm::dvec3 c;
+        for (int k = 0; k < 3; ++k) c[k] = number(v.Get(k), i, concat(key, "[", k, "]"), positive);
+        return c;
+    }
+
+    // The base colour texture: a path or the image's bytes; false (noted)
+    // when it cannot be used.
+    void baseTexture(FileMaterial& fm, size_t i) {
+        const tinygltf::TextureInfo& info =
+            model.materials[i].pbrMetallicRoughness.baseColorTexture;
+        if (info.index < 0) return;
+        if (info.index >= static_cast<int>(model.textures.size()))
+            bad(i, "baseColorTexture: texture ", info.index, " does not exist");
+        if (info.texCoord != 0) {
+            droppedTextures.add(concat("TEXCOORD_", info.texCoord, " (only TEXCOORD_0 is read)"));
+            return;
+        }
+        if (info.extensions.count("KHR_texture_transform")) {
+            droppedTextures.add("KHR_texture_transform");
+            return;
+        }
+        const tinygltf::Texture& t = model.textures[static_cast<size_t>(info.index)];
+        if (t.source < 0) {
+            droppedTextures.add("no PNG or JPEG source (an extension's image format)");
+            return;
+        }
+        if (t.source >= static_cast<int>(model.images.size()))
+            bad(i, "baseColorTexture: image ", t.source, " does not exist");
+        const size_t img = static_cast<size_t>(t.source);
+        const tinygltf::Image& image = model.images[img];
+        if (!image.uri.empty()) {
+            if (folder.empty()) {
+                droppedTextures.add("an external image, not read when parsing from memory");
+                return;
+            }
+            const std::string path =
+                (std::filesystem::path(folder) / image.uri).lexically_normal().string();
+            std::error_code ec;
+            if (!std::filesystem::exists(path, ec)) {
+                note(name, concat("material '", materialName(i), "': texture '", path,
+                                  "' not found: albedo factor only"));
+                return;
+            }
+            fm.texturePath = path;
+            return;
+        }
+        // In the file (a bufferView or a data URI): the bytes tinygltf handed over.
+        if (img >= images.size() || images[img].empty()) {
+            note(name, concat("material '", materialName(i), "': image ", img,
+                              " has no data: albedo factor only"));
+            return;
+        }
+        fm.textureBytes = images[img];
+        fm.texturePath = concat(name, "#image", img);
+    }
+
+    // extras: {"tsis": {...}}: tsis' own parameters, over the glTF's.
+    void extras(FileMaterial& fm, size_t i) {
+        const tinygltf::Value& e = model.materials[i].extras;
+        if (!e.IsObject() || !e.Has("tsis")) return;
+        const tinygltf::Value& t = e.Get("tsis");
+        if (!t.IsObject()) bad(i, "extras.tsis: expected an object");
+        std::vector<std::string> unknown;
+        for (const std::string& key : t.Keys()) {
+            const tinygltf::Value& v = t.Get(key);
+            const std::string where = "extras.tsis." + key;
+            if (key == "preset") {
+                if (!v.IsString() || v.Get<std::string>().empty())
+                    bad(i, where, ": expected a preset name");
+                fm.preset = v.Get<std::string>();
+            } else if (key == "sigma_s") {
+                fm.sigmaS = triple(v, i, where, false);
+            } else if (key == "sigma_a") {
+                fm.sigmaA = triple(v, i, where, false);
+            } else if (key == "albedo") {
+                fm.albedo = triple(v, i, where, false);
+            } else if (key == "mfp") {
+                fm.mfp = triple(v, i, where, true);
+            } else if (key == "eta") {
+                fm.eta = number(v, i, where, true);
+            } else {
+                unknown.push_back(key);
+            }
+        }
+        if (!unknown.empty()) {
+            std::string list;
+            for (const std::string& k : unknown) list += concat(list.empty() ? "" : ", ", k);
+            note(name, concat("material '", materialName(i), "': extras.tsis keys ignored: ", list,
+                              " (read: preset, sigma_s, sigma_a, albedo, mfp, eta)"));
+        }
+    }
+
+    FileMaterial material(size_t i) {
+        const tinygltf::Material& m = model.materials[i];
+        FileMaterial fm;
+        fm.name = m.name.empty() ? concat("#", i) : m.name;
+        const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
+        const glm::dvec3 base = rgb(f, i, "baseColorFactor");
+        if (f.size() > 3 && !(f[3] >= 1)) ignored.add("baseColorFactor alpha < 1");
+        // White is glTF's default, given or not: no albedo of the file's then
+        // (the texture alone, or the scene's material).
+        if (base != glm::dvec3(1.0)) fm.albedo = base;
+        baseTexture(fm, i);
+        for (const auto& [ext, v] : m.extensions) {
+            if (ext == "KHR_materials_ior") {
+                if (v.Has("ior"))
+                    fm.eta = number(v.Get("ior"), i, "KHR_materials_ior.ior", true);
+                else
+                    fm.eta = 1.5;  // the extension's default
+            } else if (ext == "KHR_materials_volume") {
+                if (v.Has("attenuationDistance"))
+                    fm.attenuationDistance =
+                        number(v.Get("attenuationDistance"), i,
+                               "KHR_materials_volume.attenuationDistance", true);
+                if (v.Has("attenuationColor"))
+                    fm.attenuationColor = triple(v.Get("attenuationColor"), i,
+                                                 "KHR_materials_volume.attenuationColor", false);
+                // The mesh is the volume: thickness is for thin-walled stand-ins.
+                if (v.Has("thicknessFactor") || v.Has("thicknessTexture"))
+                    ignored.add("KHR_materials_volume thickness");
+            } else {
+                ignored.add(ext);
+            }
+        }
+        const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+        if (pbr.metallicRoughnessTexture.index >= 0) ignored.add("metallicRoughnessTexture");
+        if (m.normalTexture.index >= 0) ignored.add("normalTexture");
+        if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");
+        if (m.emissiveTexture.index >= 0) ignored.add("emissiveTexture");
+        if (m.emissiveFactor.size() == 3 &&
+            (m.emissiveFactor[0] != 0 || m.emissiveFactor[1] != 0 || m.emissiveFactor[2] != 0))
+            ignored.add("emissiveFactor");
+        if (m.alphaMode == "BLEND" || m.alphaMode == "MASK")
+            ignored.add("alphaMode " + m.alphaMode);
+        extras(fm, i);
+        return fm;
+    }
+};
+
+}  // namespace
+
+std::vector<FileMaterial> readMaterials(const tinygltf::Model& model, const std::string& name,
+                                        const std::string& folder, const ImageBytes& images) {
+    Reader r{model, name, folder, images, {}, {}};
+    std::vector<FileMaterial> out;
+    for (size_t i = 0; i < model.materials.size(); ++i) out.push_back(r.material(i));
+    if (!r.droppedTextures.empty())
+        note(name, "base colour textures ignored (albedo factor only): " +
+                       r.droppedTextures.list("materials"));
+    if (!r.ignored.empty())
+        note(name, "material features ignored (materials using them): " + r.ignored.list("uses"));
+    return out;
+}
+
+}  // namespace tsis::gltf
