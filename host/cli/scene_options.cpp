@@ -295,25 +295,57 @@ Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o) {
     return prepareLoadedMesh(loadMesh(spec), sizeMm, o);
 }
 
-void loadSceneMesh(Scene& scene, const Args& args) {
-    const double size = sizeMmFromArgs(args);
-    const MeshOptions o = meshOptionsFromArgs(args);
+namespace {
+
+// The mesh `spec` names into `scene` (which holds the command line's
+// material, camera and lights): its file's camera and lights where `use`
+// lets them, its materials, then the mesh prepared at sizeMm.
+void loadInto(Scene& scene, const std::string& spec, double size, const MeshOptions& o,
+              const FileViewUse& use, const MaterialOverrides& overrides, ProfileModel profile) {
     FileView view;
-    Mesh mesh = loadMesh(args.getString("mesh", SceneDefaults().mesh), &view);
+    Mesh mesh = loadMesh(spec, &view);
     turn(mesh, &view, o);
     normalizeView(view, normalizationOf(mesh, size));
-    // The command line's camera and lights win, per kind. Before the atlas: a
-    // wrong --camera costs no waiting.
+    // Before the atlas: a wrong --camera costs no waiting.
+    useFileView(scene, view, use, size, mesh.name);
+    scene.objectMaterials = objectMaterials(view.materials, scene.material, overrides, profile,
+                                            view.mmPerFileUnit, mesh.name);
+    scene.mesh = finish(std::move(mesh), size, o);
+}
+
+}  // namespace
+
+FileViewUse fileViewUseFromArgs(const Args& args) {
+    // The command line's camera and lights win, per kind.
     FileViewUse use;
     use.camera = !args.has("eye") && !args.has("target") && !args.has("up");
     if (args.has("camera")) use.cameraIndex = args.getInt("camera", 0, 0, 1 << 20);
     use.fov = !args.has("fov");
     use.lights = !args.has("light");
-    useFileView(scene, view, use, size, mesh.name);
-    scene.objectMaterials =
-        objectMaterials(view.materials, scene.material, materialOverridesFromArgs(args),
-                        profileModelFromArgs(args), view.mmPerFileUnit, mesh.name);
-    scene.mesh = finish(std::move(mesh), size, o);
+    return use;
+}
+
+void loadSceneMesh(Scene& scene, const Args& args) {
+    loadInto(scene, args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
+             meshOptionsFromArgs(args), fileViewUseFromArgs(args), materialOverridesFromArgs(args),
+             profileModelFromArgs(args));
+}
+
+ViewMesh loadViewMesh(const std::string& spec, double sizeMm, const Scene& cli,
+                      const MeshOptions& o, const FileViewUse& use,
+                      const MaterialOverrides& overrides, ProfileModel profile) {
+    Scene scene = cli;
+    loadInto(scene, spec, sizeMm, o, use, overrides, profile);
+    ViewMesh out;
+    out.mesh = std::move(scene.mesh);
+    out.materials = std::move(scene.objectMaterials);
+    // The viewer's lights stay its own (it drags them); the file's camera
+    // when it has one the command line left to it.
+    if (use.camera &&
+        !(scene.camera.eye == cli.camera.eye && scene.camera.target == cli.camera.target &&
+          scene.camera.up == cli.camera.up))
+        out.camera = scene.camera;
+    return out;
 }
 
 Scene sceneFromArgs(const Args& args) {

@@ -8,7 +8,9 @@
 #include "cli/args.h"
 #include "render/object_materials.h"
 #include "render/render_options.h"
+#include "scene/from_file.h"
 #include "scene/scene.h"
+#include "view/view_state.h"
 
 namespace tsis {
 
@@ -88,6 +90,14 @@ Mesh prepareMesh(const std::string& spec, double sizeMm, const MeshOptions& o);
 // (--camera N) and lights replace the scene's where the command line gives
 // none, per kind (scene/from_file.h), turned and scaled with the mesh.
 void loadSceneMesh(Scene& scene, const Args& args);
+// What --eye/--target/--up, --camera, --fov and --light leave to the file.
+FileViewUse fileViewUseFromArgs(const Args& args);
+// For `tsis view`: the mesh `spec` names, prepared at sizeMm as
+// loadSceneMesh does on the command line's scene `cli`, with its file's
+// materials and (where `use` lets it) its camera.
+ViewMesh loadViewMesh(const std::string& spec, double sizeMm, const Scene& cli,
+                      const MeshOptions& o, const FileViewUse& use,
+                      const MaterialOverrides& overrides, ProfileModel profile);
 // parseScene, then loadSceneMesh.
 Scene sceneFromArgs(const Args& args);
 // Parsed and validated through render/render_params.h's table; a parameter

@@ -55,8 +55,6 @@ int runView(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) fail("unexpected argument '", args.positional()[0], "'");
     // Every option and the script first, then the window, GL, CL and the mesh.
     const Scene scene = parseScene(args);
-    if (args.has("camera"))
-        fail("--camera: tsis view starts from its own camera (tsis render reads the file's)");
     ViewerConfig config;
     ViewState& s = config.state;
     s.meshSpec = args.getString("mesh", "builtin:default");
@@ -68,8 +66,15 @@ int runView(const std::vector<std::string>& argv) {
     config.clDevice = args.getString("cl-device", "");
     // Every mesh the window opens is turned, its normals and its atlas made alike.
     const MeshOptions meshOptions = meshOptionsFromArgs(args);
-    config.loadMesh = [meshOptions](const std::string& spec, double sizeMm) {
-        return prepareMesh(spec, sizeMm, meshOptions);
+    // The start-up mesh's file places the camera (as in tsis render); a mesh
+    // opened later keeps the view the user has, and the lights are the viewer's.
+    FileViewUse use = fileViewUseFromArgs(args);
+    use.lights = false;
+    const MaterialOverrides overrides = materialOverridesFromArgs(args);
+    const ProfileModel profile = profileModelFromArgs(args);
+    config.loadMesh = [meshOptions, scene, use, overrides, profile](const std::string& spec,
+                                                                    double sizeMm) {
+        return loadViewMesh(spec, sizeMm, scene, meshOptions, use, overrides, profile);
     };
     if (auto path = args.value("script")) config.script = readScript(*path);
     OutputSet outputs;

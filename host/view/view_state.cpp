@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "mesh/media.h"
 #include "render/method.h"
 #include "render/render_params.h"
 #include "util/error.h"
@@ -66,9 +67,34 @@ Scene sceneOf(const ViewState& state, const std::shared_ptr<const Mesh>& mesh) {
     Scene scene;
     if (mesh) scene.mesh = *mesh;
     scene.material = state.material;
+    if (state.objectMaterials) scene.objectMaterials = *state.objectMaterials;
     scene.lights = state.lights;
     scene.camera = state.camera;
     return scene;
+}
+
+std::string objectsSummary(const Mesh& mesh, const ViewState& state) {
+    const Media media = findMedia(mesh);
+    // Each material once, in the order of the objects, with how many use it.
+    std::vector<std::pair<std::string, int>> names;
+    for (uint32_t id : media.materialOf) {
+        std::string name = state.material.name.empty() ? "custom" : state.material.name;
+        if (state.objectMaterials && id < state.objectMaterials->size()) {
+            const ObjectMaterial& o = (*state.objectMaterials)[id];
+            name = o.medium.name + (o.texture ? " (textured)" : "");
+        }
+        auto it = std::find_if(names.begin(), names.end(),
+                               [&](const auto& n) { return n.first == name; });
+        if (it == names.end())
+            names.emplace_back(name, 1);
+        else
+            ++it->second;
+    }
+    std::string line = concat(media.count, media.count == 1 ? " object: " : " objects: ");
+    for (size_t i = 0; i < names.size(); ++i)
+        line += concat(i ? ", " : "", names[i].first,
+                       names[i].second > 1 ? concat(" ×", names[i].second) : std::string());
+    return line;
 }
 
 bool drawsSamples(const std::string& method) {

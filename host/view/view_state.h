@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ struct ViewState {
     // The mesh prepared (normals, atlas) at meshSizeMm; the frame's mesh is
     // it scaled to sizeMm (scaledMesh).
     std::shared_ptr<const Mesh> mesh;
+    // The mesh file's materials (Scene::objectMaterials), loaded with it.
+    std::shared_ptr<const std::vector<ObjectMaterial>> objectMaterials;
     double meshSizeMm = 10;
     double sizeMm = 10;  // bounding-box diagonal now
     Material material;
@@ -27,6 +30,18 @@ struct ViewState {
     bool progressive = true;  // average frames while nothing changes (sampling methods)
     int maxFrames = 64;       // ... up to this many
 };
+
+// What loading a mesh gives the viewer: the mesh prepared (normals, atlas),
+// its file's materials and, when the file places one, its camera.
+struct ViewMesh {
+    Mesh mesh;
+    std::vector<ObjectMaterial> materials;
+    std::optional<Camera> camera;
+};
+
+// The panel's line for the objects: their count and materials ("2 objects:
+// tile (textured), jade").
+std::string objectsSummary(const Mesh& mesh, const ViewState& state);
 
 // The sizes the size slider spans, mm.
 constexpr double kMinSizeMm = 1, kMaxSizeMm = 100;

@@ -109,12 +109,12 @@ class Viewer {
     std::optional<std::string> aovPending_;
 
     // Background work.
-    std::unique_ptr<BackgroundTask<Mesh>> meshTask_;
+    std::unique_ptr<BackgroundTask<ViewMesh>> meshTask_;
     std::string meshTaskSpec_;
     double meshTaskSize_ = 0;
     std::string meshError_;
-    const Mesh* mediaOf_ = nullptr;  // the mesh media_ counts (once a mesh, for the panel)
-    uint32_t media_ = 0;
+    const Mesh* objectsOf_ = nullptr;  // the mesh objects_ describes (once a mesh, for the panel)
+    std::string objects_, objectsMaterial_;
     std::unique_ptr<BackgroundTask<FrameResult>> referenceTask_;
     ViewState referenceTaskState_;
     Clock::time_point referenceStart_;
@@ -167,15 +167,19 @@ void Viewer::openMesh(const std::string& spec) {
     meshTaskSize_ = state_.sizeMm;
     auto load = config_.loadMesh;
     const double size = state_.sizeMm;
-    meshTask_ = std::make_unique<BackgroundTask<Mesh>>(
+    meshTask_ = std::make_unique<BackgroundTask<ViewMesh>>(
         [load, spec, size] { return load(spec, size); }, GlWindow::wake);
 }
 
 void Viewer::onMesh() {
-    std::unique_ptr<BackgroundTask<Mesh>> task = std::move(meshTask_);
+    std::unique_ptr<BackgroundTask<ViewMesh>> task = std::move(meshTask_);
     try {
-        auto mesh = std::make_shared<Mesh>(task->take());
-        state_.mesh = std::move(mesh);
+        ViewMesh loaded = task->take();
+        // The file's camera at start-up (a mesh opened later keeps the view).
+        if (loaded.camera && !state_.mesh) state_.camera = state_.home = *loaded.camera;
+        state_.objectMaterials =
+            std::make_shared<const std::vector<ObjectMaterial>>(std::move(loaded.materials));
+        state_.mesh = std::make_shared<Mesh>(std::move(loaded.mesh));
         state_.meshSizeMm = meshTaskSize_;
         state_.meshSpec = meshTaskSpec_;
         meshError_.clear();
@@ -405,14 +409,14 @@ void Viewer::panel() {
     if (!panelShown_) return;
     PanelInfo info;
     if (state_.mesh) {
-        if (mediaOf_ != state_.mesh.get()) {
-            mediaOf_ = state_.mesh.get();
-            media_ = findMedia(*state_.mesh).count;
+        if (objectsOf_ != state_.mesh.get() || objectsMaterial_ != state_.material.name) {
+            objectsOf_ = state_.mesh.get();
+            objectsMaterial_ = state_.material.name;
+            objects_ = objectsSummary(*state_.mesh, state_);
         }
         // The objects: separate solids, light never crossing between them.
         info.mesh = concat(state_.meshSpec, "  (", state_.mesh->triangles.size(), " triangles; ",
-                           media_, media_ == 1 ? " object" : " objects", ", all ",
-                           state_.material.name.empty() ? "custom" : state_.material.name, ")");
+                           objects_, ")");
     } else
         info.mesh = "loading " + meshTaskSpec_;
     if (recentFrames_.size() > 1)

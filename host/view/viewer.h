@@ -17,8 +17,9 @@ namespace tsis {
 
 struct ViewerConfig {
     ViewState state;  // the start-up view; its mesh (state.meshSpec) is loaded by the viewer
-    // Loads, normalises to sizeMm and prepares (normals, atlas) the mesh a spec names.
-    std::function<Mesh(const std::string& spec, double sizeMm)> loadMesh;
+    // Loads, normalises to sizeMm and prepares (normals, atlas) the mesh a
+    // spec names, with its file's materials and camera.
+    std::function<ViewMesh(const std::string& spec, double sizeMm)> loadMesh;
     std::string clDevice;
     std::optional<std::vector<ScriptCommand>> script;  // played instead of the mouse and keys
 };
