@@ -71,13 +71,15 @@ FluxAtlasPass::FluxAtlasPass() : program_("fullscreen.vert", "flux_atlas.frag") 
 }
 
 void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-                        const ShadowMapArray& shadows, float eta) {
+                        const ShadowMapArray& shadows, float eta, GLuint envIrradiance) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
     target_->bindAndClear();
     program_.use();
     bindLights(program_, lights, eta, kShadowUnit, shadows);
     bindTexture(program_, "u_position", 0, geometry.color(0));
     bindTexture(program_, "u_normal", 1, geometry.color(1));
+    bindTexture(program_, "u_envIrradiance", 2, envIrradiance);
+    program_.set("u_hasEnv", envIrradiance != 0 ? 1 : 0);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);

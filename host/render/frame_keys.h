@@ -14,7 +14,7 @@ namespace tsis {
 // The mesh's geometry and UVs: decides when to re-upload it.
 uint64_t meshHash(const Mesh& mesh);
 
-// The lights field by field, and η (Fresnel at entry): what the irradiance
+// The lights field by field, the environment (map, intensity, rotation) and η (Fresnel at entry): what the irradiance
 // on the surface depends on besides the mesh.
 void hashIrradiance(Hasher& h, const Scene& scene);
 

@@ -9,6 +9,7 @@
 
 #include "mesh/media.h"
 #include "physics/fresnel.h"
+#include "render/env_light.h"
 #include "render/frame_keys.h"
 #include "render/ray_caster.h"
 #include "tsis_shared.h"
@@ -435,6 +436,7 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
                           static_cast<long long>(total));
         points_ = sampleSurface(scene.mesh, spacing, scene.lights, scene.material.eta, rays,
                                 kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress);
+        addEnvironmentIrradiance(points_, scene, kShadowOffset * diagonal);
     }
     key_ = key;
     valid_ = true;
