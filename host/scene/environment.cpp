@@ -181,6 +181,7 @@ Light Environment::sun() const {
     l.vec = glm::vec3(-(toWorld() * map->sunDirection));
     l.rgb = glm::vec3(map->sunIrradiance * intensity);
     l.environment = true;
+    l.shadows = map->sunIrradiance != glm::dvec3(0.0);  // no sun: no shadow rays for it
     return l;
 }
 
