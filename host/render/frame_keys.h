@@ -14,8 +14,8 @@ namespace tsis {
 // The mesh's geometry and UVs: decides when to re-upload it.
 uint64_t meshHash(const Mesh& mesh);
 
-// The lights field by field, the environment (map, intensity, rotation) and η (Fresnel at entry): what the irradiance
-// on the surface depends on besides the mesh.
+// The lights field by field, the environment (map, intensity, rotation) and η (Fresnel at entry):
+// what the irradiance on the surface depends on besides the mesh.
 void hashIrradiance(Hasher& h, const Scene& scene);
 
 // Everything the light maps and the flux atlas depend on: the mesh, the
