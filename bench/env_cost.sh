@@ -13,20 +13,20 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 . "$root/bench/common.sh"
 sky="$root/data/env/sky.hdr"
 out="$results/env_cost.md"
-frames=${ENV_BENCH_FRAMES:-12}
+frames=${ENV_BENCH_FRAMES:-16}
 {
     echo "# Environment light cost (\`--env\`)"
     echo
     echo "Made by \`bench/env_cost.sh\` on $(date -u +%Y-%m-%dT%H:%MZ); $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores."
-    echo "512², atlas 512², default method; steady = mean of the frames after the first."
+    echo "512², atlas 512², default method; lighting turns: the median render ms of the frames after the first; camera moves: the last of --frames. Load (1 min) at the start: $(cut -d' ' -f1 /proc/loadavg)."
     echo
     echo "The default scene's two lights in every column; \"+ sun\" adds the sky's sun as a plain directional light, \"+ env\" adds --env data/env/sky.hdr (its sun and its residual)."
     echo
     echo "| mesh | change | lights ms | + sun ms | + env ms | env cost ms | residual cost ms (env − sun) |"
     echo "|---|---|---|---|---|---|---|"
 } >"$out"
-steady() {  # mean ms of frames after the first in an animate stats file
-    python3 -c "import json,sys; f=json.load(open(sys.argv[1]))['per_frame']; v=[x['ms'] for x in f[1:]]; print('%.1f' % (sum(v)/len(v)))" "$1"
+steady() {  # median ms of the frames after the first in an animate stats file (robust to a busy machine)
+    python3 -c "import json,sys,statistics; f=json.load(open(sys.argv[1]))['per_frame']; print('%.1f' % statistics.median(x['render_ms'] for x in f[1:]))" "$1"
 }
 # The default scene's lights written out (so that --env adds to them instead
 # of replacing them) and the sky's sun as a plain light (make_sky.py: 30° up,

@@ -74,12 +74,13 @@ glm::dvec3 EnvironmentMap::radiance(const glm::dvec3& d) const {
 std::array<glm::dvec3, kEnvShCount> EnvironmentMap::project(const glm::dmat3& toWorld) const {
     std::array<glm::dvec3, kEnvShCount> c;
     c.fill(glm::dvec3(0.0));
-    for (int y = 0; y < height; ++y) {
-        const double dw = texelSolidAngle(y, width, height);
-        for (int x = 0; x < width; ++x) {
-            const float* p = &residual[(static_cast<size_t>(y) * width + x) * 3];
+    for (int y = 0; y < shHeight; ++y) {
+        const double dw = texelSolidAngle(y, shWidth, shHeight);
+        for (int x = 0; x < shWidth; ++x) {
+            const float* p = &shResidual[(static_cast<size_t>(y) * shWidth + x) * 3];
             if (p[0] == 0 && p[1] == 0 && p[2] == 0) continue;
-            const glm::dvec3 d = toWorld * latLongDirection((x + 0.5) / width, (y + 0.5) / height);
+            const glm::dvec3 d =
+                toWorld * latLongDirection((x + 0.5) / shWidth, (y + 0.5) / shHeight);
             const ShCoefficients b = shBasis(d);
             const glm::dvec3 l = glm::dvec3(p[0], p[1], p[2]) * dw;
             for (int k = 0; k < kEnvShCount; ++k) c[static_cast<size_t>(k)] += l * b[k];
@@ -142,6 +143,24 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
         map->sunIrradiance = sum;
         map->sunDirection = glm::normalize(dir);
     }
+    // The projection's copy: each texel's radiance × solid angle summed into
+    // the coarse texel holding its centre, over the solid angle summed there.
+    map->shWidth = std::min(width, kShMapWidth);
+    map->shHeight = map->shWidth / 2;
+    const size_t coarse = static_cast<size_t>(map->shWidth) * map->shHeight;
+    std::vector<double> sum(coarse * 3, 0.0), weight(coarse, 0.0);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t x = i % width, y = i / width;
+        const size_t j = y * map->shHeight / height * map->shWidth + x * map->shWidth / width;
+        const double dw = texelSolidAngle(static_cast<int>(y), width, height);
+        for (int c = 0; c < 3; ++c) sum[j * 3 + c] += map->residual[i * 3 + c] * dw;
+        weight[j] += dw;
+    }
+    map->shResidual.resize(coarse * 3);
+    for (size_t j = 0; j < coarse; ++j)
+        for (int c = 0; c < 3; ++c)
+            map->shResidual[j * 3 + c] =
+                weight[j] > 0 ? static_cast<float>(sum[j * 3 + c] / weight[j]) : 0.0f;
     map->hash = Hasher().addAll(map->residual).add(map->sunIrradiance).add(width).digest();
     return map;
 }

@@ -29,11 +29,18 @@ constexpr int kEnvShCount = kEnvShBands * kEnvShBands;
 using ShCoefficients = std::array<double, kEnvShCount>;
 ShCoefficients shBasis(const glm::dvec3& d);
 
+constexpr int kShMapWidth = 256;
+
 // A map as loaded, split: radiance in W/(mm²·sr) per texel, RGB, row 0 = top.
 struct EnvironmentMap {
     std::string path;
     int width = 0, height = 0;
     std::vector<float> residual;  // the map without its sun, 3 floats a texel
+    // The residual averaged (by solid angle) down to at most kShMapWidth ×
+    // kShMapWidth/2 for project(): band 3 needs no more, and a large HDRI
+    // then turns as fast as a small one.
+    int shWidth = 0, shHeight = 0;
+    std::vector<float> shResidual;
     // The sun: irradiance (W/mm² RGB, at normal incidence) and the unit
     // direction towards it, in the map's frame; zero when the map has none.
     glm::dvec3 sunIrradiance{0.0};

@@ -56,6 +56,27 @@ TEST(Environment, UniformMapHasNoSunAndProjectsToItsMean) {
     for (int k = 1; k < kEnvShCount; ++k) EXPECT_NEAR(c[k].y, 0.0, 2e-3) << k;
 }
 
+// A large map is projected from its averaged copy: the same harmonics as a
+// small map of the same sky (here L = 1 + y + x², bands 0–2 exactly).
+TEST(Environment, LargeMapProjectsAsItsAverage) {
+    auto sky = [](int w, int h) {
+        std::vector<float> px(static_cast<size_t>(w) * h * 3);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const glm::dvec3 d = latLongDirection((x + 0.5) / w, (y + 0.5) / h);
+                for (int c = 0; c < 3; ++c)
+                    px[(static_cast<size_t>(y) * w + x) * 3 + c] =
+                        static_cast<float>(1.0 + d.y + d.x * d.x);
+            }
+        return splitEnvironment("g.exr", w, h, 3, px);
+    };
+    const auto big = sky(2048, 1024), small = sky(256, 128);
+    EXPECT_EQ(big->shWidth, kShMapWidth);
+    const auto a = big->project(glm::dmat3(1.0)), b = small->project(glm::dmat3(1.0));
+    for (int k = 0; k < kEnvShCount; ++k) EXPECT_NEAR(a[k].x, b[k].x, 2e-3) << k;
+    EXPECT_NEAR(a[0].x, (1.0 + 1.0 / 3.0) * std::sqrt(4 * kPi), 5e-3);
+}
+
 // One bright texel on a dim sky: it becomes the sun, with its flux, its
 // direction, turned with the map, and leaves the residual.
 TEST(Environment, SunIsSplitOffTurnedAndScaled) {
