@@ -76,7 +76,8 @@ FluxAtlasPass::FluxAtlasPass() : program_("fullscreen.vert", "flux_atlas.frag") 
 }
 
 void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-                        const ShadowMapArray& shadows, const MaterialTables& media) {
+                        const ShadowMapArray& shadows, const MaterialTables& media,
+                        GLuint envIrradiance) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
     target_->bindAndClear();
     program_.use();
@@ -84,6 +85,8 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
     media.bind(program_, kMediaUnit);
     bindTexture(program_, "u_position", 0, geometry.color(0));
     bindTexture(program_, "u_normal", 1, geometry.color(1));
+    bindTexture(program_, "u_envIrradiance", 2, envIrradiance);
+    program_.set("u_hasEnv", envIrradiance != 0 ? 1 : 0);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -46,12 +46,14 @@ class GeometryAtlasPass {
 };
 
 // Pass A, part 2 (every frame): the flux atlas, flux per texel (attachment 0),
-// shaded over the geometry atlas.
+// shaded over the geometry atlas; `envIrradiance` (0: none) is a texture of
+// the environment's residual E per texel (render/env_light.h), added to the lights'.
 class FluxAtlasPass {
   public:
     FluxAtlasPass();
     void run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, const MaterialTables& media);
+             const ShadowMapArray& shadows, const MaterialTables& media,
+             GLuint envIrradiance = 0);
     const RenderTarget& target() const { return *target_; }
 
   private:

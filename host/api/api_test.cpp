@@ -91,6 +91,20 @@ TEST(ApiScene, SettersCheckAsTheCliAndKeepTheSceneOnError) {
     EXPECT_EQ(s.material().sigmaA[1], 0.5f);
 }
 
+// --env flows through the options as on the command line; its sun is the
+// map's, kept when the lights are set and not listed among them.
+TEST(ApiScene, EnvironmentIsAnOptionAndItsSunStaysWithNewLights) {
+    const std::string sky = std::string(TSIS_SOURCE_DIR) + "/data/env/sky.hdr";
+    Scene s(Options{{"mesh", "builtin:sphere"}, {"env", sky}, {"env-rotate", "45"}});
+    EXPECT_TRUE(s.lights().empty());
+    s.setLights({{true, {0, -1, 0}, {2, 2, 2}}});
+    ASSERT_EQ(s.lights().size(), 1u);
+    EXPECT_NE(errorOf([] {
+                  Scene(Options{{"env", "/nonexistent.exr"}});
+              }).find("no such file"),
+              std::string::npos);
+}
+
 TEST(ApiScene, FromArraysNormalisesAndRefusesBadIndices) {
     // A tetrahedron, counter-clockwise from outside.
     const std::vector<float> v = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};

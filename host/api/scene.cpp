@@ -98,7 +98,8 @@ void Scene::setMaterial(const Material& material) {
 std::vector<Light> Scene::lights() const {
     std::vector<Light> out;
     for (const tsis::Light& l : impl_->scene.lights)
-        out.push_back({l.type == tsis::Light::Type::Directional, toVec3(l.vec), toVec3(l.rgb)});
+        if (!l.environment)  // an --env map's sun is the map's, not a light to set
+            out.push_back({l.type == tsis::Light::Type::Directional, toVec3(l.vec), toVec3(l.rgb)});
     return out;
 }
 
@@ -112,6 +113,7 @@ void Scene::setLights(const std::vector<Light>& lights) {
         t.rgb = toGlm(l.rgb);
         next.lights.push_back(t);
     }
+    applyEnvironment(next);  // the --env map's sun stays
     checkScene(next, impl_->sizeMm);
     impl_->scene.lights = next.lights;
 }

@@ -43,7 +43,8 @@ std::vector<OptionSpec> animateSpecs() {
     specs.push_back(
         {"output|o", true, false, "DIR  folder for frame_NNNN.png (required; created)"});
     specs.push_back({"frames", true, false, "N  number of frames (default 30)"});
-    specs.push_back({"orbit", false, false, "the lights orbit the object (one turn)"});
+    specs.push_back(
+        {"orbit", false, false, "the lights (and the --env map) orbit the object (one turn)"});
     specs.push_back({"size-to", true, false, "S  size at the last frame, mm (from --size-mm)"});
     specs.push_back({"materials", true, false, "A,B,…  presets, one per frame in turn"});
     specs.push_back({"video", false, false, "also write DIR/animation.mp4 when ffmpeg exists"});
@@ -142,9 +143,13 @@ int runAnimate(const std::vector<std::string>& argv) {
                 glm::rotate(glm::mat4(1.0f), static_cast<float>(2.0 * M_PI * f / frames),
                             glm::vec3(0.0f, 1.0f, 0.0f));
             for (size_t i = 0; i < scene.lights.size(); ++i) {
+                if (scene.lights[i].environment) continue;  // turns with the map, below
                 const glm::vec3 v = size1 != size0 ? scene.lights[i].vec : base.lights[i].vec;
                 scene.lights[i].vec = glm::vec3(rot * glm::vec4(v, 0.0f));
             }
+            // --env: the map turns with the lights (the same angle about +y).
+            scene.env.rotateDegrees = base.env.rotateDegrees + 360.0 * f / frames;
+            applyEnvironment(scene);
         }
         FrameResult frame = renderer.render(scene, options);
         outputs.write(framePath(f), [&](const std::filesystem::path& file) {

@@ -54,6 +54,12 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
             {"light", true, true,
              "SPEC  point:X,Y,Z:R,G,B (intensity) or dir:X,Y,Z:R,G,B (direction of travel, "
              "irradiance); repeatable"},
+            {"env", true, false,
+             "FILE  environment light: a lat-long radiance map (.exr, .hdr), W/(mm²·sr); with "
+             "no --light it lights alone"},
+            {"env-intensity", true, false, "S  scale of the --env map's radiance (default 1)"},
+            {"env-rotate", true, false,
+             "DEG  turn the --env map about the up axis (+y), within ±3600 (default 0)"},
             {"eye", true, false, "X,Y,Z  camera position in mm (default: framed from the front)"},
             {"target", true, false, "X,Y,Z  camera target (default 0,0,0)"},
             {"up", true, false, "X,Y,Z  camera up (default 0,1,0)"},
@@ -239,7 +245,18 @@ Scene parseScene(const Args& args) {
     for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
-    if (scene.lights.empty()) scene.lights = defaultLights(size);
+    if (auto v = args.value("env")) {
+        scene.env.map = loadEnvironment(*v);
+        scene.env.intensity = args.getDouble("env-intensity", 1.0, 0.0, 1e12);
+        scene.env.rotateDegrees = args.getDouble("env-rotate", 0.0, -3600.0, 3600.0);
+    } else if (args.has("env-intensity") || args.has("env-rotate")) {
+        fail("--env-intensity and --env-rotate need --env FILE");
+    }
+    if (scene.lights.empty() && !scene.env) scene.lights = defaultLights(size);
+    applyEnvironment(scene);  // the map's sun: one more directional light
+    if (static_cast<int>(scene.lights.size()) > kMaxLights)
+        fail("too many lights: ", scene.lights.size() - 1, " and the environment's sun (at most ",
+             kMaxLights, " in all)");
     float fov = static_cast<float>(args.getDouble("fov", SceneDefaults().fovDegrees, 1.0, 170.0));
     scene.camera = defaultCamera(size, fov);
     if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
@@ -321,7 +338,7 @@ FileViewUse fileViewUseFromArgs(const Args& args) {
     use.camera = !args.has("eye") && !args.has("target") && !args.has("up");
     if (args.has("camera")) use.cameraIndex = args.getInt("camera", 0, 0, 1 << 20);
     use.fov = !args.has("fov");
-    use.lights = !args.has("light");
+    use.lights = !args.has("light") && !args.has("env");
     return use;
 }
 
@@ -384,9 +401,14 @@ std::vector<std::string> sceneArgs(const Scene& scene, const std::string& meshSp
     a.insert(a.end(), {"--sigma-s", exact3(m.sigmaSPrime), "--sigma-a", exact3(m.sigmaA), "--eta",
                        exactText(m.eta)});
     for (const Light& l : scene.lights)
+        if (!l.environment)
+            a.insert(a.end(),
+                     {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
+                                     exact3(l.vec) + ":" + exact3(l.rgb)});
+    if (scene.env)
         a.insert(a.end(),
-                 {"--light", std::string(l.type == Light::Type::Point ? "point:" : "dir:") +
-                                 exact3(l.vec) + ":" + exact3(l.rgb)});
+                 {"--env", scene.env.map->path, "--env-intensity", exactText(scene.env.intensity),
+                  "--env-rotate", exactText(scene.env.rotateDegrees)});
     const Camera& c = scene.camera;
     a.insert(a.end(), {"--eye", exact3(c.eye), "--target", exact3(c.target), "--up", exact3(c.up),
                        "--fov", exactText(c.fovYDegrees)});

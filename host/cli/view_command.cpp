@@ -60,7 +60,10 @@ int runView(const std::vector<std::string>& argv) {
     s.meshSpec = args.getString("mesh", "builtin:default");
     s.sizeMm = s.meshSizeMm = args.getDouble("size-mm", 10.0, kMinSizeMm, kMaxSizeMm);
     s.material = scene.material;
-    s.lights = scene.lights;
+    // The env's sun is not a light a drag moves: sceneOf adds it each frame.
+    for (const Light& l : scene.lights)
+        if (!l.environment) s.lights.push_back(l);
+    s.env = scene.env;
     s.camera = s.home = scene.camera;
     s.options = renderOptionsFromArgs(args);
     config.clDevice = args.getString("cl-device", "");

@@ -30,6 +30,7 @@ void hashIrradiance(Hasher& h, const Scene& scene) {
     for (const Light& l : scene.lights) h.add(l.type).add(l.vec).add(l.rgb).add(l.shadows);
     h.add(scene.material.eta);
     for (const ObjectMaterial& o : scene.objectMaterials) h.add(o.medium.eta);
+    if (scene.env) h.add(scene.env.map->hash).add(scene.env.intensity).add(scene.env.rotateDegrees);
 }
 
 namespace {

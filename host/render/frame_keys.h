@@ -17,9 +17,10 @@ uint64_t meshHash(const Mesh& mesh);
 // Every material: media (σs′, σa, η), albedos and textures.
 void hashMaterials(Hasher& h, const Scene& scene);
 
-// The lights field by field, and every material's η (Fresnel at entry): what
-// the irradiance on the surface depends on besides the mesh (the albedo
-// factor has its own key, render/albedo_atlas.h).
+// The lights field by field, the environment (map, intensity, rotation) and
+// every material's η (Fresnel at entry): what the irradiance on the surface
+// depends on besides the mesh (the albedo factor has its own key,
+// render/albedo_atlas.h).
 void hashIrradiance(Hasher& h, const Scene& scene);
 
 // Everything the light maps and the flux atlas depend on: the mesh, the

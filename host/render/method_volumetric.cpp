@@ -8,6 +8,7 @@
 
 #include "physics/fresnel.h"
 #include "render/frame_keys.h"
+#include "util/error.h"
 #include "util/parallel.h"
 #include "util/progress.h"
 #include "util/timer.h"
@@ -41,6 +42,9 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
         meshKey_ = key;
     }
     WalkScene walk{boundary_.get(), Medium(*ctx.material), scene.lights, glm::dvec3(0.0)};
+    // --env: its sun is among the lights; paths that leave read the rest.
+    if (scene.env)
+        walk.environment = [&scene](const glm::dvec3& d) { return scene.env.radiance(d); };
     const size_t count = static_cast<size_t>(points.count);
     const glm::dvec3 eye(ctx.eye);
 
@@ -73,6 +77,10 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     // covered pixels, in ranges whose connections are summed in range order
     // (the same bytes for any thread count).
     const bool photons = o.estimator == VolumetricEstimator::Light;
+    if (photons && scene.env)
+        fail(
+            "--env with --method volumetric needs --estimator camera (photons leave only the "
+            "point and directional lights)");
     const size_t perPass = std::max<size_t>(count, 1);
     std::vector<size_t> pixelOf(count);  // row 0 at the top, as the light tracer's
     for (size_t k = 0; k < count; ++k) {

@@ -7,6 +7,7 @@
 #include "physics/ggx.h"
 #include "tsis_shared.h"
 #include "util/hash.h"
+#include "util/timer.h"
 
 namespace tsis {
 
@@ -105,11 +106,12 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.read(h.lights);
             b.write(h.fluxAtlas);
         },
-        [this, lighting, h](FrameGraph::Resources& res) {
+        [this, &ctx, lighting, h](FrameGraph::Resources& res) {
             if (fluxKey_ != lighting) {
                 const GlLights& lights = res.read(h.lights);
-                fluxAtlasPass_.run(*res.read(h.geometryAtlas).target, *lights.views,
-                                   *lights.shadows, materials_);
+                const RenderTarget& geometry = *res.read(h.geometryAtlas).target;
+                fluxAtlasPass_.run(geometry, *lights.views, *lights.shadows, materials_,
+                                   environmentTexture(ctx, geometry, res.stats()));
                 glFinish();
                 fluxKey_ = lighting;
                 ++fluxVersion_;
@@ -173,6 +175,29 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             res.write(h.samples) = {&sampleGbufferPass_.target(), samplesVersion_};
         });
     return h;
+}
+
+GLuint RasterPasses::environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
+                                        FrameStats& stats) {
+    const Scene& scene = *ctx.scene;
+    if (!scene.env) return 0;
+    // The transfer: once per mesh, atlas resolution and η (rays per texel).
+    const uint64_t key =
+        Hasher(geometryKey_.first).add(geometryKey_.second).add(scene.material.eta).digest();
+    Timer t;
+    if (key != envTransfer_.key())
+        envTransfer_.update(key, scene.mesh, geometry.width(), scene.material.eta,
+                            geometry.readRGBA(0), geometry.readRGBA(1));
+    stats.set("env_transfer_ms", t.ms());
+    stats.set("env_transfer_texels", static_cast<double>(envTransfer_.tracedTexels()));
+    // Each frame whose lighting changed: the turned map's harmonics, one dot a texel.
+    Timer e;
+    const std::vector<float> irradiance = envTransfer_.irradiance(scene.env);
+    if (!envTexture_ || envTexture_->width() != geometry.width())
+        envTexture_ = std::make_unique<FloatTexture>(geometry.width(), geometry.height());
+    envTexture_->upload(irradiance.data());
+    stats.set("env_irradiance_ms", e.ms());
+    return envTexture_->id();
 }
 
 FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const FrameContext& ctx,

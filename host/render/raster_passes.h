@@ -11,6 +11,7 @@
 
 #include "gl/gpu_mesh.h"
 #include "gl/passes.h"
+#include "render/env_light.h"
 #include "render/frame_graph.h"
 #include "render/frame_resources.h"
 #include "render/method.h"
@@ -73,6 +74,9 @@ class RasterPasses {
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
+    // The environment residual's E per atlas texel as a texture (0 without --env).
+    GLuint environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
+                              FrameStats& stats);
 
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
@@ -81,6 +85,8 @@ class RasterPasses {
     CompositePass compositePass_;
     MaterialTables
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
+    EnvTransfer envTransfer_;
+    std::unique_ptr<FloatTexture> envTexture_;
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::vector<LightView> lights_;

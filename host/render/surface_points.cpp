@@ -10,6 +10,7 @@
 #include "mesh/media.h"
 #include "physics/fresnel.h"
 #include "render/albedo_atlas.h"
+#include "render/env_light.h"
 #include "render/frame_keys.h"
 #include "render/ray_caster.h"
 #include "tsis_shared.h"
@@ -465,6 +466,7 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
             eta.push_back(scene.materialOf(media.materialOf[m]).eta);
         points_ = sampleSurface(scene.mesh, spacing, scene.lights, eta, rays,
                                 kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress, albedo);
+        addEnvironmentIrradiance(points_, scene, kShadowOffset * diagonal);
     }
     key_ = key;
     valid_ = true;

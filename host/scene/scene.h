@@ -10,6 +10,7 @@
 #include "image/image_io.h"
 #include "mesh/mesh.h"
 #include "physics/material.h"
+#include "scene/environment.h"
 #include "tsis_shared.h"
 
 namespace tsis {
@@ -21,6 +22,8 @@ struct Light {
     glm::vec3 rgb{1.0f};  // point: intensity (W/sr); directional: irradiance (W/mm²)
     bool shadows =
         true;  // V from the shadow map; false: V = 1 (tests against unshadowed integrals)
+    // The sun of Scene::env (applyEnvironment makes it; not a --light of its own).
+    bool environment = false;
 };
 
 struct Camera {
@@ -60,6 +63,7 @@ struct Scene {
     }
     std::vector<Light> lights;
     Camera camera;
+    Environment env;  // --env: its residual; its sun is among the lights
 };
 
 // The largest number of lights a frame takes (GL uniform arrays and the mis

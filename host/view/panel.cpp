@@ -8,6 +8,7 @@
 
 #include "physics/material.h"
 #include "render/method.h"
+#include "util/error.h"
 
 namespace tsis {
 
@@ -168,6 +169,32 @@ void meshSection(const PanelInfo& info, PanelFields& fields, PanelActions& actio
     if (!info.meshError.empty()) errorText(info.meshError);
 }
 
+// --env: a map file (loaded at once: the transfer is kept per mesh, so only
+// the first frame on a mesh casts rays), its turn about +y and its scale.
+void environmentSection(ViewState& s, PanelFields& fields) {
+    const bool enter = ImGui::InputText("##env", fields.envPath, sizeof fields.envPath,
+                                        ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("open env") || enter) && fields.envPath[0] != '\0') {
+        try {
+            setParameter(s, "env", fields.envPath);
+            fields.envError.clear();
+        } catch (const Error& e) {
+            fields.envError = e.what();
+        }
+    }
+    if (!fields.envError.empty()) errorText(fields.envError);
+    if (!s.env) return;
+    float rotate = static_cast<float>(s.env.rotateDegrees);
+    if (ImGui::SliderFloat("env turn deg", &rotate, -180.0f, 180.0f, "%.0f"))
+        s.env.rotateDegrees = rotate;
+    float intensity = static_cast<float>(s.env.intensity);
+    if (ImGui::SliderFloat("env intensity", &intensity, 0.01f, 100.0f, "%.3g",
+                           ImGuiSliderFlags_Logarithmic))
+        s.env.intensity = intensity;
+    if (!s.lights.empty() && ImGui::Button("env alone (remove the lights)")) s.lights.clear();
+}
+
 }  // namespace
 
 PanelActions drawPanel(ViewState& state, PanelFields& fields, const PanelInfo& info, float x,
@@ -181,6 +208,8 @@ PanelActions drawPanel(ViewState& state, PanelFields& fields, const PanelInfo& i
     meshSection(info, fields, actions);
     ImGui::Separator();
     settings(state);
+    ImGui::Separator();
+    environmentSection(state, fields);
     ImGui::Separator();
     frameLine(info);
     ImGui::Separator();

@@ -1,5 +1,6 @@
 // The ImGui panel of `tsis view`: the settings (method, material, size, N,
-// resolutions, progressive accumulation, the light's auto-orbit), the last
+// resolutions, progressive accumulation, the light's auto-orbit), the
+// environment (map file, rotation, intensity), the last
 // frame's cost, the reference's error, files and opening a mesh.
 #pragma once
 
@@ -36,6 +37,8 @@ struct PanelInfo {
 // What the user types into the panel; kept between frames.
 struct PanelFields {
     char meshPath[512] = "";
+    char envPath[512] = "";
+    std::string envError;  // why the last map did not load
     char screenshotPath[512] = "tsis-view.png";
     char savePath[512] = "tsis-view-render.png";
     char aovDir[512] = "tsis-view-aov";

@@ -68,6 +68,7 @@ FrameDone RenderWorker::render(const FrameJob& job) {
         }
         scene_.material = job.scene.material;
         scene_.lights = job.scene.lights;
+        scene_.env = job.scene.env;
         scene_.camera = job.scene.camera;
         done.frame = renderer_->render(scene_, job.options);
     } catch (...) {

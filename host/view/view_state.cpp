@@ -70,6 +70,8 @@ Scene sceneOf(const ViewState& state, const std::shared_ptr<const Mesh>& mesh) {
     if (state.objectMaterials) scene.objectMaterials = *state.objectMaterials;
     scene.lights = state.lights;
     scene.camera = state.camera;
+    scene.env = state.env;
+    applyEnvironment(scene);
     return scene;
 }
 
@@ -103,8 +105,9 @@ bool drawsSamples(const std::string& method) {
 
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {
-        "material",  "sigma-s",   "sigma-a",     "eta",    "size-mm",    "method",    "samples",
-        "atlas-res", "light-res", "progressive", "frames", "auto-orbit", "roughness", "exposure"};
+        "material", "sigma-s",    "sigma-a",   "eta",           "size-mm",    "method",
+        "samples",  "atlas-res",  "light-res", "progressive",   "frames",     "auto-orbit",
+        "roughness", "exposure",  "env",       "env-intensity", "env-rotate"};
     return names;
 }
 
@@ -134,6 +137,20 @@ void setParameter(ViewState& state, const std::string& name, const std::string& 
         s.maxFrames = integerIn(name, value, 1, 100000);
     } else if (name == "auto-orbit") {
         s.autoOrbit = onOff(name, value);
+    } else if (name == "env") {
+        s.env.map = value == "none" ? nullptr : loadEnvironment(value);
+        const int lights = static_cast<int>(s.lights.size()) + (s.env ? 1 : 0);
+        if (lights == 0) fail("env none: the scene would have no light");
+        if (lights > kMaxLights) fail("env: ", s.lights.size(), " lights and a sun are too many");
+    } else if (name == "env-intensity") {
+        const double v = parseNumber(name, value);
+        if (!(v >= 0 && v <= 1e12)) fail("env-intensity ", value, " is out of range [0, 1e12]");
+        s.env.intensity = v;
+    } else if (name == "env-rotate") {
+        const double v = parseNumber(name, value);
+        if (!(v >= -3600 && v <= 3600))
+            fail("env-rotate ", value, " is out of range [-3600, 3600]");
+        s.env.rotateDegrees = v;
     } else {
         std::string list;
         for (const std::string& n : parameterNames()) list += (list.empty() ? "" : ", ") + n;
@@ -145,7 +162,9 @@ void setParameter(ViewState& state, const std::string& name, const std::string& 
 bool sameScene(const ViewState& a, const ViewState& b) {
     return a.mesh == b.mesh && a.sizeMm == b.sizeMm && sameMaterial(a.material, b.material) &&
            sameLights(a.lights, b.lights) && sameCamera(a.camera, b.camera) &&
-           a.options.width == b.options.width && a.options.height == b.options.height;
+           a.env.map == b.env.map && a.env.intensity == b.env.intensity &&
+           a.env.rotateDegrees == b.env.rotateDegrees && a.options.width == b.options.width &&
+           a.options.height == b.options.height;
 }
 
 bool sameFrame(const ViewState& a, const ViewState& b) {

@@ -22,7 +22,8 @@ struct ViewState {
     double meshSizeMm = 10;
     double sizeMm = 10;  // bounding-box diagonal now
     Material material;
-    std::vector<Light> lights;  // lights[0] is the one a drag moves
+    std::vector<Light> lights;  // lights[0] is the one a drag moves; not the env's sun
+    Environment env;            // --env; sceneOf adds its sun to the lights
     Camera camera;
     Camera home;  // the start-up camera at sizeMm (the "reset view" key)
     RenderOptions options;
@@ -62,7 +63,9 @@ bool drawsSamples(const std::string& method);
 
 // Sets a parameter by the name a script uses (`set NAME VALUE`): material,
 // sigma-s, sigma-a, eta, size-mm, method, samples, atlas-res, light-res,
-// progressive (on|off), frames, auto-orbit (on|off), roughness, exposure. Throws tsis::Error naming
+// progressive (on|off), frames, auto-orbit (on|off), roughness, exposure, env
+// (a map file; "none" removes it), env-intensity, env-rotate (degrees about
+// +y). Throws tsis::Error naming
 // the parameter when the name or the value is bad; the state is then unchanged.
 void setParameter(ViewState& state, const std::string& name, const std::string& value);
 

@@ -82,7 +82,10 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
         if (scene.environment) {
             glm::dvec3 out;
             refract(dir, -surface.normal, 1.0 / m.eta, out);
-            sky += scene.environment(out);
+            // Only where the object does not hide it (V, as the dipole methods' E has it).
+            SurfaceHit again;
+            if (!boundary.intersect(surface.position + surface.normal * eps, out, kInfinity, again))
+                sky += scene.environment(out);
         }
         radiance += w.value() * (m.eta * m.eta) * sky;
         break;

@@ -23,7 +23,8 @@ struct WalkScene {
     // scenes that Mitsuba renders too. Zero in tsis' scenes.
     glm::dvec3 sky{0.0};
     // Radiance arriving from direction d (unit, from the object outwards), on
-    // top of the sky, read by paths that leave the object; empty for none.
+    // top of the sky, read by paths that leave the object where the object
+    // does not hide it (the sky is not hidden); empty for none.
     std::function<glm::dvec3(const glm::dvec3& d)> environment;
     // Scattering orders summed: paths end after this many scatterings (after
     // the last one's next-event estimation); 1 = single scattering.
