@@ -138,6 +138,16 @@ const BadInput kBadInputs[] = {
      "--roughness 2 is out of range [0.05, 1]"},
     {"ExposureNanFirst", "render --exposure nan --mesh @DIR@/nope.off", "", "--exposure"},
     {"AaZeroFirst", "render --aa 0 --mesh @DIR@/nope.off", "", "--aa 0 is out of range"},
+    {"AlbedoOneFirst", "render --albedo 1,0.5,0.5 --mfp 1,1,1 --mesh @DIR@/nope.off", "",
+     "albedo 1,0.5,0.5: each channel must be in (0, 0.99]"},
+    {"AlbedoNanFirst", "render --albedo nan,0.5,0.5 --mfp 1,1,1 --mesh @DIR@/nope.off", "",
+     "--albedo"},
+    {"AlbedoWithoutMfpFirst", "render --albedo 0.5,0.5,0.5 --mesh @DIR@/nope.off", "",
+     "--albedo needs --mfp"},
+    {"AlbedoWithSigmaFirst",
+     "render --albedo 0.5,0.5,0.5 --mfp 1,1,1 --sigma-a 1,1,1 --mesh @DIR@/nope.off", "",
+     "not with --sigma-s or --sigma-a"},
+    {"MfpZeroFirst", "render --mfp 0,1,1 --mesh @DIR@/nope.off", "", "mean free path 0,1,1"},
     {"NineLightsFirst",
      "render --mesh @DIR@/nope.off" +
          [] {
