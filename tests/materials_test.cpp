@@ -9,30 +9,11 @@
 
 #include "atlas/atlas.h"
 #include "render/albedo_inversion.h"
+#include "support/boxes.h"
 #include "support/render.h"
 
 namespace tsis {
 namespace {
-
-// A box with its own vertices and normal per face, every triangle of file material `id`.
-void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi, uint32_t id) {
-    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {hi.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
-                            {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
-    const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
-                             {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-    for (const auto& f : faces) {
-        const auto base = static_cast<unsigned>(m.positions.size());
-        const glm::vec3 n = glm::normalize(glm::cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]));
-        for (int k = 0; k < 4; ++k) {
-            m.positions.push_back(c[f[k]]);
-            m.normals.push_back(n);
-        }
-        m.triangles.emplace_back(base, base + 1, base + 2);
-        m.triangles.emplace_back(base, base + 2, base + 3);
-        m.materialIds.insert(m.materialIds.end(), {id, id});
-    }
-}
 
 ObjectMaterial objectMaterial(const char* preset) {
     ObjectMaterial o;
@@ -46,8 +27,8 @@ ObjectMaterial objectMaterial(const char* preset) {
 Scene twoCubes(const char* left, const char* right) {
     Mesh m;
     m.name = "two cubes";
-    addBox(m, {-11, -5, -5}, {-1, 5, 5}, 0);
-    addBox(m, {1, -5, -5}, {11, 5, 5}, 1);
+    test::addBox(m, {-11, -5, -5}, {-1, 5, 5}, 0);
+    test::addBox(m, {1, -5, -5}, {11, 5, 5}, 1);
     AtlasOptions atlas;
     atlas.resolution = 512;
     atlas.useCache = false;

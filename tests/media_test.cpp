@@ -12,36 +12,17 @@
 #include <glm/geometric.hpp>
 
 #include "atlas/atlas.h"
+#include "support/boxes.h"
 #include "support/render.h"
 
 namespace tsis {
 namespace {
 
-// An axis-aligned box with its own vertices and normal per face (hard edges).
-void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
-    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {hi.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
-                            {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}};
-    // Corners of each face, counter-clockwise seen from outside.
-    const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
-                             {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-    for (const auto& f : faces) {
-        const auto base = static_cast<unsigned>(m.positions.size());
-        const glm::vec3 n = glm::normalize(glm::cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]));
-        for (int k = 0; k < 4; ++k) {
-            m.positions.push_back(c[f[k]]);
-            m.normals.push_back(n);
-        }
-        m.triangles.emplace_back(base, base + 1, base + 2);
-        m.triangles.emplace_back(base, base + 2, base + 3);
-    }
-}
-
 Scene twoCubes(glm::vec3 lightTravels = {0, -1, 0}) {
     Mesh m;
     m.name = "two cubes";
-    addBox(m, {-10, 0.25f, -10}, {10, 20.25f, 10});
-    addBox(m, {-8, -20.25f, -8}, {8, -0.25f, 8});
+    test::addBox(m, {-10, 0.25f, -10}, {10, 20.25f, 10});
+    test::addBox(m, {-8, -20.25f, -8}, {8, -0.25f, 8});
     AtlasOptions atlas;
     atlas.resolution = 512;
     atlas.useCache = false;

@@ -67,6 +67,7 @@ FrameDone RenderWorker::render(const FrameJob& job) {
             scene_.mesh = *mesh_;
         }
         scene_.material = job.scene.material;
+        scene_.objectMaterials = job.scene.objectMaterials;
         scene_.lights = job.scene.lights;
         scene_.env = job.scene.env;
         scene_.camera = job.scene.camera;

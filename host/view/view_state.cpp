@@ -105,8 +105,8 @@ bool drawsSamples(const std::string& method) {
 
 const std::vector<std::string>& parameterNames() {
     static const std::vector<std::string> names = {
-        "material", "sigma-s",    "sigma-a",   "eta",           "size-mm",    "method",
-        "samples",  "atlas-res",  "light-res", "progressive",   "frames",     "auto-orbit",
+        "material",  "sigma-s",   "sigma-a",   "eta",           "size-mm",   "method",
+        "samples",   "atlas-res", "light-res", "progressive",   "frames",    "auto-orbit",
         "roughness", "exposure",  "env",       "env-intensity", "env-rotate"};
     return names;
 }
@@ -160,11 +160,11 @@ void setParameter(ViewState& state, const std::string& name, const std::string& 
 }
 
 bool sameScene(const ViewState& a, const ViewState& b) {
-    return a.mesh == b.mesh && a.sizeMm == b.sizeMm && sameMaterial(a.material, b.material) &&
-           sameLights(a.lights, b.lights) && sameCamera(a.camera, b.camera) &&
-           a.env.map == b.env.map && a.env.intensity == b.env.intensity &&
-           a.env.rotateDegrees == b.env.rotateDegrees && a.options.width == b.options.width &&
-           a.options.height == b.options.height;
+    return a.mesh == b.mesh && a.objectMaterials == b.objectMaterials && a.sizeMm == b.sizeMm &&
+           sameMaterial(a.material, b.material) && sameLights(a.lights, b.lights) &&
+           sameCamera(a.camera, b.camera) && a.env.map == b.env.map &&
+           a.env.intensity == b.env.intensity && a.env.rotateDegrees == b.env.rotateDegrees &&
+           a.options.width == b.options.width && a.options.height == b.options.height;
 }
 
 bool sameFrame(const ViewState& a, const ViewState& b) {

@@ -127,3 +127,37 @@ TEST(ViewState, SameSceneAndSameFrame) {
 
 }  // namespace
 }  // namespace tsis
+
+namespace tsis {
+namespace {
+
+// The panel's objects line: each separate solid's material, textured ones
+// marked, repeated ones counted; triangles without a file material take the
+// scene's.
+TEST(ViewState, ObjectsSummaryNamesEachObjectsMaterial) {
+    Mesh mesh;
+    for (int k = 0; k < 4; ++k) {
+        Mesh sphere = builtinSphere();
+        const auto base = static_cast<uint32_t>(mesh.positions.size());
+        for (const glm::vec3& p : sphere.positions)
+            mesh.positions.push_back(p + glm::vec3(3.0f * k, 0, 0));
+        for (const glm::uvec3& t : sphere.triangles) {
+            mesh.triangles.push_back(t + glm::uvec3(base));
+            // Spheres 0 and 1 of material 0, 2 of 1, 3 of none.
+            mesh.materialIds.push_back(k < 2 ? 0u : k == 2 ? 1u : kNoFileMaterial);
+        }
+    }
+    ViewState state;
+    state.material.name = "skin1";
+    auto materials = std::make_shared<std::vector<ObjectMaterial>>(2);
+    (*materials)[0].medium.name = "jade";
+    (*materials)[1].medium.name = "tile";
+    (*materials)[1].texture = std::make_shared<AlbedoTexture>();
+    state.objectMaterials = materials;
+    EXPECT_EQ(objectsSummary(mesh, state), "4 objects: jade ×2, tile (textured), skin1");
+    state.objectMaterials = nullptr;
+    EXPECT_EQ(objectsSummary(mesh, state), "4 objects: skin1 ×4");
+}
+
+}  // namespace
+}  // namespace tsis
