@@ -114,7 +114,7 @@ TEST(Materials, ConstantAlbedoTextureEqualsTheConstantMaterial) {
     textured.mesh.materialIds.assign(textured.mesh.triangles.size(), 0);
     textured.mesh.texcoords = textured.mesh.uvs;
     const RenderOptions opt = test::smallOptions(64, 512);
-    for (const char* method : {"pyramid", "ltsm", "lss"}) {
+    for (const char* method : {"pyramid", "ltsm", "lss", "reference"}) {
         const FrameResult a = test::renderWith(plain, opt, method);
         const FrameResult b = test::renderWith(textured, opt, method);
         const double err = test::relativeRmse(b, a);

@@ -290,6 +290,17 @@ static glm::vec2 atlasUv(const Mesh& mesh, size_t t, const glm::vec3& x) {
                      glm::dvec2(mesh.uvs[tri[2]]) * r);
 }
 
+void scaleByAlbedo(std::vector<SurfacePoint>& points, const Mesh& mesh, double spacing,
+                   const AlbedoAtlas& albedo) {
+    if (albedo.empty()) return;
+    const std::vector<uint32_t> k = subdivisions(mesh, spacing);
+    size_t i = 0;
+    for (size_t t = 0; t < k.size(); ++t)
+        for (uint32_t n = 0; n < k[t] * k[t]; ++n, ++i)
+            points[i].irradiance *= albedo.at(atlasUv(mesh, t, points[i].position));
+    TSIS_CHECK_EQ(i, points.size());
+}
+
 uint64_t surfacePointCount(const Mesh& mesh, double spacing) {
     uint64_t total = 0;
     for (uint32_t kt : subdivisions(mesh, spacing)) total += uint64_t{kt} * kt;
@@ -327,7 +338,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
                                         const std::vector<Light>& lights,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress, const AlbedoAtlas* albedo) {
+                                        Progress* progress) {
     TSIS_CHECK(!etaOfMedium.empty());
     std::vector<IrradianceSampler> samplers;
     for (double eta : etaOfMedium) samplers.emplace_back(lights, eta, rays, offset, reach);
@@ -345,9 +356,6 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
             samplers[std::min<size_t>(medium, samplers.size() - 1)].sampleFacet(
                 facet(mesh, t, k[t]), &points[first[t]]);
             for (size_t i = first[t]; i < first[t + 1]; ++i) points[i].medium = medium;
-            if (albedo && !albedo->empty())
-                for (size_t i = first[t]; i < first[t + 1]; ++i)
-                    points[i].irradiance *= albedo->at(atlasUv(mesh, t, points[i].position));
         }
         const size_t d = done += first[end] - first[begin];
         // Progress is not thread-safe; whoever gets the lock draws.
@@ -465,8 +473,9 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
         for (uint32_t m = 0; m < media.count; ++m)
             eta.push_back(scene.materialOf(media.materialOf[m]).eta);
         points_ = sampleSurface(scene.mesh, spacing, scene.lights, eta, rays,
-                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress, albedo);
+                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress);
         addEnvironmentIrradiance(points_, scene, kShadowOffset * diagonal);
+        if (albedo) scaleByAlbedo(points_, scene.mesh, spacing, *albedo);
     }
     key_ = key;
     valid_ = true;

@@ -54,14 +54,16 @@ glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vec
 // order across shadow edges. Rays: one per light and lattice vertex or
 // centroid, a few dozen more per sub-triangle on a shadow edge.
 // etaOfMedium: η of each medium (mesh/media.h); one value serves them all.
-// With `albedo`, E is scaled by the albedo factor at each point (the light
-// that enters, render/albedo_atlas.h).
 std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
                                         const std::vector<Light>& lights,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress = nullptr,
-                                        const AlbedoAtlas* albedo = nullptr);
+                                        Progress* progress = nullptr);
+// E of sampleSurface's points (in its order, every light and the environment
+// added) times the albedo factor at each (the light that enters,
+// render/albedo_atlas.h).
+void scaleByAlbedo(std::vector<SurfacePoint>& points, const Mesh& mesh, double spacing,
+                   const AlbedoAtlas& albedo);
 
 // Poisson-disk thinning: greedily in order, a point becomes a seed when no
 // earlier seed with a normal less than 90° away lies closer than `radius`;
@@ -77,7 +79,7 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
 class SurfaceSampleCache {
   public:
     // Returns true when it (re)built the points; `label` names the progress line.
-    // With `albedo`, E carries its entry factor (sampleSurface).
+    // With `albedo`, E carries its entry factor (scaleByAlbedo).
     bool update(const Scene& scene, double spacing, const std::string& label,
                 const AlbedoAtlas* albedo = nullptr);
     // True when update() would keep the points it has.
