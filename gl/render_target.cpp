@@ -104,9 +104,7 @@ size_t RenderTarget::bytesPerTexel(int i) const {
             return 16;
         case GL_RGBA16F:
             return 8;
-        case GL_R32F:
-            return 4;
-        default:
+        default:  // GL_R32F, GL_RGBA8
             return 4;
     }
 }

@@ -341,6 +341,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
                                         Progress* progress) {
     TSIS_CHECK(!etaOfMedium.empty());
     std::vector<IrradianceSampler> samplers;
+    samplers.reserve(etaOfMedium.size());
     for (double eta : etaOfMedium) samplers.emplace_back(lights, eta, rays, offset, reach);
     const std::vector<uint32_t> k = subdivisions(mesh, spacing);
     std::vector<size_t> first(k.size() + 1, 0);  // first point of each triangle
