@@ -63,7 +63,7 @@ done
     echo "## Every method against the reference under data/env/sky.hdr"
     echo
     echo "builtin:default, skin1, 256², --env alone, radiosity; rel. RMSE over covered pixels (\`tsis compare --mask coverage\`)."
-    echo "ltsm, tsm, the hybrid's local part and lss read only the lights' maps (the sun): the residual does not reach them (design §10)."
+    echo "ltsm, tsm and the hybrid's local part read only the lights' maps (the sun): the residual does not reach them; lss reads it per atlas texel in its G-buffer (design §12)."
     echo "volumetric is the physical truth the dipole approximates: its difference is the dipole's, not the environment's (without --env, same scene: 122%)."
     echo
     echo "| method | rel. RMSE vs reference |"

@@ -7,8 +7,8 @@ namespace tsis {
 
 namespace {
 
-// Texture units: 0–3 and 5 for a pass's own inputs, 4 for the shadow map
-// array, 6 and 7 for the material tables.
+// Texture units: 0–3, 5, 8 and 9 for a pass's own inputs, 4 for the shadow
+// map array, 6 and 7 for the material tables.
 constexpr int kShadowUnit = 4;
 constexpr int kMediaUnit = 6;
 
@@ -95,7 +95,8 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
 
 void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
                       const ShadowMapArray& shadows, const MaterialTables& media,
-                      const glm::mat4& viewProj, int width, int height, bool irradiance) {
+                      const glm::mat4& viewProj, int width, int height, bool irradiance,
+                      GLuint envIrradiance) {
     current_ = irradiance ? 1 : 0;
     Variant& v = variants_[current_];
     if (!v.program)
@@ -109,6 +110,10 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
     bindLights(program, lights, kShadowUnit, shadows);
     media.bind(program, kMediaUnit);
     program.set("u_viewProj", viewProj);
+    if (irradiance) {
+        bindTexture(program, "u_envIrradiance", 0, envIrradiance);
+        program.set("u_hasEnv", envIrradiance != 0 ? 1 : 0);
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
@@ -128,8 +133,8 @@ CompositePass::CompositePass()
 void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
                              const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
-                             const glm::vec3& eye, const MaterialTables& materials,
-                             float alpha) {
+                             const glm::vec3& eye, const MaterialTables& materials, float alpha,
+                             const EnvReflectionTextures& env) {
     const int w = frameGbuffer.width(), h = frameGbuffer.height();
     TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
     TSIS_CHECK_EQ(sampleGbuffer.height(), h * aa);
@@ -147,6 +152,11 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         materials.bind(*p, kMediaUnit);
         p->set("u_eye", eye);
         p->set("u_alpha", alpha);
+        p->set("u_envReflect", env.prefiltered != 0 ? 1 : 0);
+        p->set("u_worldToMap", env.worldToMap);
+        p->set("u_envScale", env.scale);
+        bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
+        bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
     centreProgram_.use();
     centreProgram_.set("u_findEdges", aa > 1 ? 1 : 0);

@@ -52,8 +52,7 @@ class FluxAtlasPass {
   public:
     FluxAtlasPass();
     void run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, const MaterialTables& media,
-             GLuint envIrradiance = 0);
+             const ShadowMapArray& shadows, const MaterialTables& media, GLuint envIrradiance = 0);
     const RenderTarget& target() const { return *target_; }
 
   private:
@@ -64,12 +63,14 @@ class FluxAtlasPass {
 
 // Pass C: camera G-buffer: position (w = coverage), normal and, with
 // `irradiance` (for the camera-view methods), E at each pixel's surface point
-// (attachments 0, 1, 2). Each variant is compiled on first use.
+// (attachments 0, 1, 2), to which `envIrradiance` (0: none; FluxAtlasPass's)
+// adds the environment's residual at each pixel's atlas texel. Each variant
+// is compiled on first use.
 class GBufferPass {
   public:
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
-             int width, int height, bool irradiance);
+             int width, int height, bool irradiance, GLuint envIrradiance = 0);
     const RenderTarget& target() const { return *variants_[current_].target; }
 
   private:
@@ -79,6 +80,15 @@ class GBufferPass {
     };
     Variant variants_[2];  // without, with irradiance
     int current_ = 0;
+};
+
+// The environment's reflection for the composite (render/env_reflection.h):
+// the prefiltered residual (lat-long, map frame; 0: none) and the albedo table
+// per medium, the rotation world → map and the map's intensity.
+struct EnvReflectionTextures {
+    GLuint prefiltered = 0, albedo = 0;
+    glm::mat3 worldToMap{1.0f};
+    float scale = 0;
 };
 
 // Composite (docs/design.md "The composite"): radiance L = Ft/π·B (× the
@@ -92,12 +102,14 @@ class CompositePass {
     // radiosity: B at the frame's pixels, RGBA floats, GL row order.
     // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
     // `materials`: η and the exit term's factor over Ft/π (render_options.h
-    // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe. Read
-    // frameRadiance() after it, then call toneMap().
+    // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe;
+    // `env`: the environment's reflection. Read frameRadiance() after it,
+    // then call toneMap().
     void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
                   const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
                   const ShadowMapArray& shadows, const glm::vec3& eye,
-                  const MaterialTables& materials, float alpha);
+                  const MaterialTables& materials, float alpha,
+                  const EnvReflectionTextures& env = {});
     // The radiance at the frame's pixels (RGBA, GL order): the centre's, or
     // in a supersampled pixel the mean over its covered samples (alpha their
     // fraction).

@@ -78,6 +78,10 @@ void ShaderProgram::set(const char* name, const glm::vec2& v) const {
 void ShaderProgram::set(const char* name, const glm::vec3& v) const {
     glProgramUniform3fv(id_, location(name), 1, glm::value_ptr(v));
 }
+void ShaderProgram::set(const char* name, const glm::mat3& m) const {
+    glProgramUniformMatrix3fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(m));
+}
+
 void ShaderProgram::set(const char* name, const glm::mat4& m) const {
     glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(m));
 }

@@ -3,6 +3,7 @@
 // so the Fresnel and shadow helpers exist once.
 #pragma once
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -28,6 +29,7 @@ class ShaderProgram {
     void set(const char* name, float v) const;
     void set(const char* name, const glm::vec2& v) const;
     void set(const char* name, const glm::vec3& v) const;
+    void set(const char* name, const glm::mat3& m) const;
     void set(const char* name, const glm::mat4& m) const;
 
   private:

@@ -1,8 +1,8 @@
 // Radiance (docs/design.md "The composite"): the subsurface term
 // Ft(η, cos θo)/π · B (§2; × the exit scale: 1, Jensen's exit term, or 1/c,
 // pbrt's normalised one, --exit) plus the GGX lobe's reflection of the
-// lights (design "Surface reflection"); η and the exit scale those of the
-// point's medium (mediumOf, by the position's w).
+// lights and of the environment's residual (design "Surface reflection"); η
+// and the exit scale those of the point's medium (mediumOf, by the position's w).
 //
 // Two variants. The frame's: one sample at each pixel's centre, from the
 // frame's G-buffer, and (u_findEdges) the pixels to supersample. With
@@ -14,7 +14,27 @@ uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = cover
 uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
 uniform float u_alpha;  // GGX α = R²; 0: no lobe (--no-specular)
+// The environment's reflection (render/env_reflection.h), when u_envReflect:
+// the residual prefiltered by the lobe (lat-long, the map's frame, row 0 =
+// up) about the mirror direction × the lobe's albedo per medium (x: √cos θo,
+// y: medium), × the map's intensity.
+uniform int u_envReflect;
+uniform sampler2D u_envPrefiltered;
+uniform sampler2D u_envAlbedo;
+uniform mat3 u_worldToMap;
+uniform float u_envScale;
 layout(location = 0) out vec4 o_radiance;
+
+vec3 envReflection(vec3 n, vec3 v, float tag) {
+    vec3 r = normalize(u_worldToMap * reflect(-v, n));
+    vec2 uv = vec2(atan(r.x, -r.z) / (2.0 * PI) + 0.5, acos(clamp(r.y, -1.0, 1.0)) / PI);
+    vec3 l = textureLod(u_envPrefiltered, uv, 0.0).rgb;
+    vec2 size = vec2(textureSize(u_envAlbedo, 0));
+    float m = float(max(int(tag + 0.5) - 1, 0));
+    float s = sqrt(clamp(dot(n, v), 0.0, 1.0));
+    float a = textureLod(u_envAlbedo, (vec2(s * (size.x - 1.0), m) + 0.5) / size, 0.0).r;
+    return u_envScale * a * l;
+}
 
 vec3 shade(vec4 p, ivec2 px, vec3 b) {
     vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
@@ -24,6 +44,7 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
     if (u_alpha > 0.0) l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
+    if (u_alpha > 0.0 && u_envReflect != 0) l += envReflection(n, v, p.w);
     return l;
 }
 

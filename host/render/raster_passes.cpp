@@ -5,6 +5,7 @@
 
 #include "image/image_io.h"
 #include "physics/ggx.h"
+#include "render/env_reflection.h"
 #include "tsis_shared.h"
 #include "util/hash.h"
 #include "util/timer.h"
@@ -26,6 +27,19 @@ float logAverageLuminance(const std::vector<float>& rgba) {
 float exposureScale(const RenderOptions& o, float lavg) {
     return o.autoExposure ? o.key / std::max(lavg, 1e-30f) : std::exp2(o.exposure);
 }
+
+namespace {
+
+// Bilinear lookups (the reflection's tables), wrapping in s where `wrapS`
+// (a lat-long map's longitude).
+void filterLinear(const FloatTexture& t, bool wrapS) {
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrapS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
 
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
     if (gpuMesh_ && hash == meshHash_) return;
@@ -123,6 +137,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         [&](FrameGraph::Builder& b) {
             b.read(h.mesh);
             b.read(h.lights);
+            // The environment's residual per atlas texel, for the irradiance.
+            if (ctx.scene->env) b.read(h.geometryAtlas);
             b.write(h.gbuffer);
         },
         [this, &graph, &ctx, eta, gbufferCl, lighting, h](FrameGraph::Resources& res) {
@@ -136,8 +152,12 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             if (irradiance) key.add(lighting).add(eta);
             if (key.digest() != gbufferKey_) {
                 const GlLights& lights = res.read(h.lights);
+                const GLuint env =
+                    irradiance && ctx.scene->env
+                        ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
+                        : 0;
                 gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, materials_,
-                                 ctx.viewProj, ctx.width, ctx.height, irradiance);
+                                 ctx.viewProj, ctx.width, ctx.height, irradiance, env);
                 glFinish();
                 gbufferKey_ = key.digest();
                 ++gbufferVersion_;
@@ -190,7 +210,15 @@ GLuint RasterPasses::environmentTexture(const FrameContext& ctx, const RenderTar
                             geometry.readRGBA(0), geometry.readRGBA(1));
     stats.set("env_transfer_ms", t.ms());
     stats.set("env_transfer_texels", static_cast<double>(envTransfer_.tracedTexels()));
-    // Each frame whose lighting changed: the turned map's harmonics, one dot a texel.
+    // Each frame whose lighting changed: the turned map's harmonics, one dot
+    // a texel (once a lighting, though the flux atlas and the G-buffer read it).
+    const uint64_t lighting = Hasher(key)
+                                  .add(scene.env.map->hash)
+                                  .add(scene.env.intensity)
+                                  .add(scene.env.rotateDegrees)
+                                  .digest();
+    if (envTexture_ && lighting == envTextureKey_) return envTexture_->id();
+    envTextureKey_ = lighting;
     Timer e;
     const std::vector<float> irradiance = envTransfer_.irradiance(scene.env);
     if (!envTexture_ || envTexture_->width() != geometry.width())
@@ -198,6 +226,40 @@ GLuint RasterPasses::environmentTexture(const FrameContext& ctx, const RenderTar
     envTexture_->upload(irradiance.data());
     stats.set("env_irradiance_ms", e.ms());
     return envTexture_->id();
+}
+
+EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ctx,
+                                                          FrameStats& stats) {
+    const Environment& env = ctx.scene->env;
+    const RenderOptions& o = *ctx.options;
+    if (!env || !o.specular) return {};
+    Timer t;
+    const uint64_t mapKey = Hasher(env.map->hash).add(o.roughness).digest();
+    if (!envPrefiltered_ || mapKey != envPrefilteredKey_) {
+        const int w = kReflectionMapWidth;
+        if (!envPrefiltered_) {
+            envPrefiltered_ = std::make_unique<FloatTexture>(w, w / 2);
+            filterLinear(*envPrefiltered_, true);
+        }
+        envPrefiltered_->upload(prefilterReflection(*env.map, o.roughness, w).data());
+        envPrefilteredKey_ = mapKey;
+    }
+    const std::vector<float>& etas = ctx.media->etaOfMedium;
+    Hasher albedoKey;
+    albedoKey.add(o.roughness);
+    for (float eta : etas) albedoKey.add(eta);
+    if (!envAlbedo_ || albedoKey.digest() != envAlbedoKey_) {
+        const int rows = static_cast<int>(etas.size());
+        if (!envAlbedo_ || envAlbedo_->height() != rows) {
+            envAlbedo_ = std::make_unique<FloatTexture>(kReflectionAlbedoEntries, rows);
+            filterLinear(*envAlbedo_, false);
+        }
+        envAlbedo_->upload(reflectionAlbedoTable(etas, o.roughness).data());
+        envAlbedoKey_ = albedoKey.digest();
+    }
+    stats.set("env_reflection_ms", t.ms());
+    return {envPrefiltered_->id(), envAlbedo_->id(), glm::transpose(glm::mat3(env.toWorld())),
+            static_cast<float>(env.intensity)};
 }
 
 FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const FrameContext& ctx,
@@ -220,7 +282,8 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             const float alpha = o.specular ? static_cast<float>(ggxAlpha(o.roughness)) : 0.0f;
             compositePass_.radiance(res.read(radiosity).rgba.data(), *res.read(gl.gbuffer).target,
                                     *res.read(gl.samples).target, o.aa, *lights.views,
-                                    *lights.shadows, ctx.eye, materials_, alpha);
+                                    *lights.shadows, ctx.eye, materials_, alpha,
+                                    environmentReflection(ctx, res.stats()));
             out.radiance = compositePass_.frameRadiance();
             out.lavg = logAverageLuminance(out.radiance);
             out.exposureScale = exposureScale(o, out.lavg);

@@ -70,13 +70,17 @@ class RasterPasses {
     // Whether the light views of the last frame were drawn for `lightingKey`.
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
-    void invalidateLighting() { lightViewKey_ = fluxKey_ = 0; }
+    void invalidateLighting() { lightViewKey_ = fluxKey_ = envTextureKey_ = 0; }
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
     // The environment residual's E per atlas texel as a texture (0 without --env).
     GLuint environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
                               FrameStats& stats);
+    // The environment's reflection (render/env_reflection.h) for the
+    // composite: none without --env or with --no-specular; re-filtered only
+    // when the map or the roughness changed, the albedo table when an η did.
+    EnvReflectionTextures environmentReflection(const FrameContext& ctx, FrameStats& stats);
 
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
@@ -87,6 +91,9 @@ class RasterPasses {
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
     EnvTransfer envTransfer_;
     std::unique_ptr<FloatTexture> envTexture_;
+    uint64_t envTextureKey_ = 0;  // transfer and lighting the texture holds
+    std::unique_ptr<FloatTexture> envPrefiltered_, envAlbedo_;
+    uint64_t envPrefilteredKey_ = 0, envAlbedoKey_ = 0;
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::vector<LightView> lights_;
