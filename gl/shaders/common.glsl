@@ -76,6 +76,14 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     return 0.25 * sum;
 }
 
+// Light i seen from p with normal n: its direction l, c = n·l and falloff;
+// false when it lights the other side.
+bool facing(int i, vec3 p, vec3 n, out vec3 l, out float c, out float falloff) {
+    l = toLight(i, p, falloff);
+    c = dot(n, l);
+    return c > 0.0;
+}
+
 // E(x) of docs/design.md §2, summed over the lights, into a medium of index eta.
 vec3 irradiance(vec3 p, vec3 n, float eta) {
     vec3 e = vec3(0.0);
@@ -83,10 +91,9 @@ vec3 irradiance(vec3 p, vec3 n, float eta) {
     // constant indices: llvmpipe gathers dynamically indexed ones per lane).
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= u_lightCount) break;
-        float falloff;
-        vec3 l = toLight(i, p, falloff);
-        float c = dot(n, l);
-        if (c <= 0.0) continue;
+        vec3 l;
+        float c, falloff;
+        if (!facing(i, p, n, l, c, falloff)) continue;
         e += u_lightRgb[i] * (fresnelT(eta, c) * c * falloff * visibility(i, p, n, l));
     }
     return e;
@@ -119,10 +126,9 @@ vec3 specularRadiance(vec3 p, vec3 n, vec3 v, float alpha, float eta) {
     // A constant trip count, as in irradiance().
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= u_lightCount) break;
-        float falloff;
-        vec3 l = toLight(i, p, falloff);
-        float c = dot(n, l);
-        if (c <= 0.0) continue;
+        vec3 l;
+        float c, falloff;
+        if (!facing(i, p, n, l, c, falloff)) continue;
         vec3 e = u_lightRgb[i] * (c * falloff);
         float f = ggxBrdf(eta, alpha, n, v, l);
         // Below 1e-4 of a white Lambertian surface's (1/π) the lobe is under

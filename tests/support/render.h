@@ -111,6 +111,20 @@ inline size_t coveredPixels(const FrameResult& f) {
     return n;
 }
 
+// fn(x, y, position, unit normal) for each covered pixel of f's AOVs.
+template <typename F>
+void forEachSurfacePixel(const FrameResult& f, F&& fn) {
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            if (f.coverage.at(x, y, 0) == 0) continue;
+            const glm::dvec3 p(f.position.at(x, y, 0), f.position.at(x, y, 1),
+                               f.position.at(x, y, 2));
+            fn(x, y, p,
+               glm::normalize(
+                   glm::dvec3(f.normal.at(x, y, 0), f.normal.at(x, y, 1), f.normal.at(x, y, 2))));
+        }
+}
+
 // Mean of an AOV of `f` (radiosity, radiance) over covered pixels.
 inline glm::dvec3 meanCovered(const FrameResult& f, const ImageF& aov) {
     glm::dvec3 sum(0);
