@@ -2,6 +2,7 @@
 #include "volumetric/mc_profile.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 
 #include "physics/material.h"
 #include "util/cache_dir.h"
+#include "util/error.h"
 #include "util/hash.h"
 #include "util/input_file.h"
 #include "util/output_file.h"
@@ -61,8 +63,11 @@ McProfileInput mcProfileInput(const glm::dvec3& sigmaSPrime, const glm::dvec3& s
     in.eta = eta;
     if (const char* v = std::getenv("TSIS_MC_PROFILE_PATHS")) {
         char* end = nullptr;
+        errno = 0;
         const long long n = std::strtoll(v, &end, 10);
-        if (end && *end == '\0' && n >= 1000) in.paths = n;
+        if (end == v || *end != '\0' || errno != 0 || n < 1000 || n > (1LL << 40))
+            fail("TSIS_MC_PROFILE_PATHS '", v, "': must be a whole number in [1000, 2^40]");
+        in.paths = n;
     }
     return in;
 }

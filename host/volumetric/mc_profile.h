@@ -73,7 +73,8 @@ struct McProfile {
 };
 
 // The input per channel of σs′, σa, η (the path count from
-// TSIS_MC_PROFILE_PATHS, else kMcProfilePaths).
+// TSIS_MC_PROFILE_PATHS, else kMcProfilePaths; a value that is not a whole
+// number in [1000, 2^40] throws Error).
 McProfileInput mcProfileInput(const glm::dvec3& sigmaSPrime, const glm::dvec3& sigmaA, double eta);
 // ν with α′·atanh(ν)/ν = 1 (0 at α′ = 1, → 1 as α′ → 0).
 double asymptoticDecay(double albedo);
