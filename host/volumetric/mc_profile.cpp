@@ -109,6 +109,8 @@ void McProfile::derive() {
     const size_t bins = binFlux.size();
     lnCentre.assign(bins, 0.0);
     lnDensity.assign(bins, glm::dvec3(0.0));
+    core = 0;
+    while (core + 1 < bins && edges[core] < kMcCoreMfp * (1 - 1e-9)) ++core;
     for (size_t b = 0; b < bins; ++b) {
         lnCentre[b] = 0.5 * (std::log(edges[b]) + std::log(edges[b + 1]));
         const double area = M_PI * (edges[b + 1] * edges[b + 1] - edges[b] * edges[b]);
@@ -151,12 +153,14 @@ void McProfile::derive() {
         const double slope = det > 1e-12 * sw * sxx ? (sw * sxy - sx * sy) / det : -2.0;
         power[c] = std::clamp(-slope, 0.0, 4.0);
         lnA[c] = (sy + power[c] * sx) / sw;
-        // The flux inside the first edge (single scattering's ρ ∝ 1/x near
-        // the entry point holds a few % of it): R minus the binned flux, the
-        // same walks' exits, spread over the disk.
-        double binned = 0;
-        for (const glm::dvec3& f : binFlux) binned += f[c];
-        inner[c] = std::max(0.0, reflectance[c] - binned) / (M_PI * edges[0] * edges[0]);
+        // The core disk, x < kMcCoreMfp: its flux (R minus the flux binned
+        // beyond, the same walks' exits) spread evenly. Single scattering's
+        // ρ ∝ 1/x there is integrable but, point-sampled by the methods at
+        // texels next to the pixel, speckles the image; the disk's mean keeps
+        // its energy with a bounded peak.
+        double outside = 0;
+        for (size_t b = core; b < bins; ++b) outside += binFlux[b][c];
+        inner[c] = std::max(0.0, reflectance[c] - outside) / (M_PI * edges[core] * edges[core]);
     }
 }
 
@@ -164,17 +168,12 @@ double McProfile::density(int c, double x) const {
     const int last = trusted[c] - 1;
     const double lx = std::log(std::max(x, 1e-300));
     const auto tail = [&] { return lnA[c] - nu[c] * x - power[c] * lx; };
+    if (x < edges[core]) return inner[c] > 0 ? inner[c] : std::exp(lnDensity[core][c]);
     if (lx >= lnCentre[last]) return std::exp(tail());
-    if (lx < lnCentre[0]) {
-        // The inner disk's mean at half its radius, joined to the first bin.
-        if (!(inner[c] > 0)) return std::exp(lnDensity[0][c]);
-        const double l0 = std::log(0.5 * edges[0]);
-        if (lx <= l0) return inner[c];
-        const double t = (lx - l0) / (lnCentre[0] - l0);
-        return std::exp((1 - t) * std::log(inner[c]) + t * lnDensity[0][c]);
-    }
+    if (lx < lnCentre[core]) return std::exp(lnDensity[core][c]);
     const size_t b = static_cast<size_t>(
-        std::upper_bound(lnCentre.begin(), lnCentre.begin() + last + 1, lx) - lnCentre.begin() - 1);
+        std::upper_bound(lnCentre.begin() + core, lnCentre.begin() + last + 1, lx) -
+        lnCentre.begin() - 1);
     const double t = (lx - lnCentre[b]) / (lnCentre[b + 1] - lnCentre[b]);
     const double in = (1 - t) * lnDensity[b][c] + t * lnDensity[b + 1][c];
     const int first = std::max(0, last - kFitBins + 1);

@@ -8,9 +8,10 @@
 // --size-mm, and it is cached on disk.
 //
 // ρ between bin centres: log-log interpolation of the annuli's area-normalised
-// flux, 10 per decade from 0.01 to 1000 free paths; inside the first edge, the
-// flux the walks left there (R minus the binned flux: single scattering's
-// ρ ∝ 1/x holds a few % of R) spread over the disk. Beyond the last bin past
+// flux, 10 per decade from 0.01 to 1000 free paths; inside kMcCoreMfp, the
+// flux the walks left there (R minus the flux binned beyond) spread evenly:
+// single scattering's ρ ∝ 1/x is integrable but, point-sampled at texels
+// beside the pixel, speckles the image. Beyond the last bin past
 // the flux's peak whose relative error is below kMcTrustedError, a tail
 // A·e^(−νx)/x^p, ν transport theory's asymptotic decay (α′·atanh(ν)/ν = 1;
 // Grosjean's σtr of the better dipole meets it as α′ → 1), A and p fitted to
@@ -34,6 +35,8 @@ namespace tsis {
 constexpr int kMcProfileVersion = 1;
 // Paths per simulation; TSIS_MC_PROFILE_PATHS overrides it (tests, benches).
 constexpr long long kMcProfilePaths = 1LL << 20;
+// Inside this radius (free paths) ρ is the disk's mean.
+constexpr double kMcCoreMfp = 0.1;
 // A bin is trusted while its relative standard error is below this.
 constexpr double kMcTrustedError = 0.03;
 // α′ is simulated at most this (σa = 0 would walk for ever in the half-space).
@@ -61,7 +64,8 @@ struct McProfile {
     std::vector<glm::dvec3> lnDensity;
     int trusted[3] = {0, 0, 0};
     glm::dvec3 nu{0.0}, power{0.0}, lnA{0.0};
-    glm::dvec3 inner{0.0};  // ρ over the disk inside the first edge
+    size_t core = 0;        // the first bin outside the core disk
+    glm::dvec3 inner{0.0};  // ρ over the core disk
 
     void derive();
     // ρ of `channel` at x free paths.
