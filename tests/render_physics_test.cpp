@@ -1,12 +1,16 @@
 // The whole frame against physics: the plane's closed form, the estimator's
 // convergence rate.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 
 #include "physics/better_dipole.h"
 #include "support/render.h"
+#include "volumetric/mc_profile.h"
 
 namespace tsis {
 namespace {
@@ -49,6 +53,29 @@ TEST(RenderPhysics, PlaneBetterDipoleNormalizedExit) {
     const glm::dvec3 l = test::meanCovered(f, f.radiance);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(l[c] / b[c] * M_PI / ft, normalizedExitScale(m.eta), 2e-3) << c;
+}
+
+// --profile mc through a whole frame: B of the plane is Ft·R of the Monte
+// Carlo's own walks (few paths and a private cache folder for the test).
+TEST(RenderPhysics, PlaneMonteCarloProfile) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("tsis_render_mc_" + std::to_string(::getpid()));
+    ::setenv("TSIS_CACHE_DIR", dir.c_str(), 1);
+    ::setenv("TSIS_MC_PROFILE_PATHS", "100000", 1);
+    const Scene scene = test::planeScene("skin1");
+    RenderOptions opt = test::smallOptions(48, 1024, 1 << 18);
+    opt.profile = ProfileModel::Mc;
+    const FrameResult f = test::renderWith(scene, opt, "tsis");
+    const Material& m = scene.material;
+    const McProfileInput in = mcProfileInput(m.sigmaSPrime, m.sigmaA, m.eta);
+    bool loaded = false;
+    const McProfile mc = mcProfileFromDisk(in, &loaded);
+    ::unsetenv("TSIS_MC_PROFILE_PATHS");
+    ::unsetenv("TSIS_CACHE_DIR");
+    std::filesystem::remove_all(dir);
+    EXPECT_TRUE(loaded);  // the frame stored it
+    test::expectNearClosedForm(test::meanRadiosity(f),
+                               fresnelTransmittance(m.eta, 1.0) * mc.reflectance, 0.03, "plane mc");
 }
 
 // RMSE against a high-N render falls as N^-1/2 (or faster: the low-discrepancy

@@ -46,12 +46,15 @@ Material materialFromAlbedo(const std::string& name, const glm::dvec3& albedo,
     if (const std::string p = meanFreePathProblem(mfp); !p.empty()) fail(p);
     // Bisection on α′ per channel (all three at once): the total reflectance
     // rises monotonically from 0 at α′ = 0 towards 1 at α′ = 1. The total does
-    // not depend on the scale, so it is found at ℓ = 1 mm.
+    // not depend on the scale, so it is found at ℓ = 1 mm. The Monte Carlo
+    // profile would simulate every step: mc inverts through the better dipole
+    // (its R is within 0.91–1.01 of transport's, physical_models.md).
+    const ProfileModel inverted = model == ProfileModel::Mc ? ProfileModel::BetterDipole : model;
     glm::dvec3 lo(0.0), hi(1.0 - 1e-9);
     for (int it = 0; it < 48; ++it) {
         const glm::dvec3 mid = 0.5 * (lo + hi);
         const glm::dvec3 total =
-            profileTotalReflectance(fromAlphaPrime(name, mid, glm::dvec3(1.0), eta), model);
+            profileTotalReflectance(fromAlphaPrime(name, mid, glm::dvec3(1.0), eta), inverted);
         for (int c = 0; c < 3; ++c) (total[c] < albedo[c] ? lo[c] : hi[c]) = mid[c];
     }
     Material m = fromAlphaPrime(name, 0.5 * (lo + hi), mfp, eta);

@@ -21,7 +21,8 @@ std::string meanFreePathProblem(const glm::dvec3& mfp);
 // The largest albedo taken: the total reflectance tends to 1 as σa → 0.
 constexpr double kMaxAlbedo = 0.99;
 
-// The material whose `model` profile reflects `albedo` in total, with mean free
+// The material whose `model` profile (mc: the better dipole, whose inversion
+// needs no simulation) reflects `albedo` in total, with mean free
 // path `mfp` (mm) and index eta. Throws Error (albedoProblem, meanFreePathProblem).
 Material materialFromAlbedo(const std::string& name, const glm::dvec3& albedo,
                             const glm::dvec3& mfp, double eta, ProfileModel model);

@@ -7,6 +7,7 @@
 #include "physics/dipole.h"
 #include "physics/split.h"
 #include "util/error.h"
+#include "volumetric/mc_profile.h"
 
 namespace tsis {
 
@@ -38,6 +39,15 @@ KeyedProfile radialProfile(const Material& m, ProfileModel model) {
         case ProfileModel::Pbd:
             p.f = [pbd = BeamDiffusion(m)](double r) { return pbd.Rd(r); };
             break;
+        case ProfileModel::Mc: {
+            // One simulation per (α′, η), scaled to this σt′ (mc_profile.h).
+            const McProfileInput in = mcProfileInput(m.sigmaSPrime, m.sigmaA, m.eta);
+            p.key = exactKey(p.key, {static_cast<double>(in.paths)});
+            p.f = [mc = &mcProfileCached(in), sigmaT = m.sigmaSPrime + m.sigmaA](double r) {
+                return mc->rd(r, sigmaT);
+            };
+            break;
+        }
         default:
             p.f = [dipole = Dipole(m)](double r) { return dipole.Rd(r); };
     }

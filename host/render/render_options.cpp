@@ -20,7 +20,8 @@ constexpr Choice<RdPart> kRdParts[] = {
     {RdPart::Full, "full"}, {RdPart::Local, "local"}, {RdPart::Global, "global"}};
 constexpr Choice<ProfileModel> kProfileModels[] = {{ProfileModel::Dipole, "dipole"},
                                                    {ProfileModel::BetterDipole, "better-dipole"},
-                                                   {ProfileModel::Pbd, "pbd"}};
+                                                   {ProfileModel::Pbd, "pbd"},
+                                                   {ProfileModel::Mc, "mc"}};
 constexpr Choice<ExitTerm> kExitTerms[] = {{ExitTerm::Jensen, "jensen"},
                                            {ExitTerm::Normalized, "normalized"}};
 constexpr Choice<EnergyTarget> kEnergyTargets[] = {{EnergyTarget::SemiInfinite, "semi-infinite"},

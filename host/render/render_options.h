@@ -14,8 +14,9 @@ const char* rdPartName(RdPart part);
 
 // The radial profile Rd every method integrates (render/profiles.h): the
 // classical dipole (Jensen et al. 2001), d'Eon's better dipole
-// (physics/better_dipole.h) or photon beam diffusion (physics/beam_diffusion.h).
-enum class ProfileModel { Dipole, BetterDipole, Pbd };
+// (physics/better_dipole.h), photon beam diffusion (physics/beam_diffusion.h)
+// or the slab's Monte Carlo, cached on disk (volumetric/mc_profile.h).
+enum class ProfileModel { Dipole, BetterDipole, Pbd, Mc };
 // "dipole", "better-dipole" or "pbd"; throws tsis::Error for anything else.
 ProfileModel parseProfileModel(const std::string& name);
 const char* profileModelName(ProfileModel model);

@@ -120,8 +120,9 @@ std::vector<RenderParam> makeParams() {
                 M{"tsis", "ltsm"}, kRadiosity},
                &O::rdPart, parseRdPart, rdPartName, RdPart::Local),
         choice({"profile",
-                "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's) or pbd (photon "
-                "beam diffusion); README \"Physical accuracy\"",
+                "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's), pbd (photon "
+                "beam diffusion) or mc (Monte Carlo, cached on disk); README \"Physical "
+                "accuracy\"",
                 kProfiled, kRadiosity},
                &O::profile, parseProfileModel, profileModelName, ProfileModel::Pbd),
         choice({"energy",

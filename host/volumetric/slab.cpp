@@ -1,11 +1,14 @@
 #include "volumetric/slab.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 
 #include "physics/fresnel.h"
 #include "util/parallel.h"
+#include "util/progress.h"
 #include "volumetric/boundary.h"
 #include "volumetric/dielectric.h"
 
@@ -46,6 +49,9 @@ SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
     const size_t chunks = static_cast<size_t>((o.photons + static_cast<long long>(chunk) - 1) /
                                               static_cast<long long>(chunk));
     std::vector<Tally> tallies(chunks);
+    std::optional<Progress> progress;
+    if (o.progressLabel) progress.emplace(o.progressLabel, static_cast<long long>(chunks));
+    std::atomic<long long> chunksDone{0};
     parallelFor(chunks, 1, [&](size_t begin, size_t end) {
         for (size_t c = begin; c < end; ++c) {
             Tally& t = tallies[c];
@@ -97,8 +103,10 @@ SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
                 t.cone += cone;
                 t.coneSq += cone * cone;
             }
+            if (progress) progress->update(++chunksDone);
         }
     });
+    if (progress) progress->finish();
     Tally total;
     total.bins.assign(static_cast<size_t>(bins), glm::dvec3(0.0));
     for (const Tally& t : tallies) {
@@ -121,6 +129,21 @@ SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
     result.normalRadianceError = stderrOf(total.cone, total.coneSq) / coneArea;
     result.meanEvents = static_cast<double>(total.events) / n;
     for (const glm::dvec3& b : total.bins) result.binFlux.push_back(b / n);
+    // Batch means: Var(mean) = Σ_c (s_c − n_c·mean)² / (N·N) · C/(C − 1), s_c
+    // a batch's sum over its n_c photons.
+    result.binFluxError.assign(result.binFlux.size(), glm::dvec3(0.0));
+    const double batches = static_cast<double>(tallies.size());
+    for (size_t c = 0; c < tallies.size(); ++c) {
+        const double nc =
+            static_cast<double>(std::min(o.photons, static_cast<long long>((c + 1) * chunk)) -
+                                static_cast<long long>(c * chunk));
+        for (size_t b = 0; b < result.binFlux.size(); ++b) {
+            const glm::dvec3 d = tallies[c].bins[b] - nc * result.binFlux[b];
+            result.binFluxError[b] += d * d;
+        }
+    }
+    for (glm::dvec3& e : result.binFluxError)
+        e = batches > 1 ? glm::sqrt(e * (batches / (batches - 1))) / n : glm::dvec3(0.0);
     return result;
 }
 

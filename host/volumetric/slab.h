@@ -22,12 +22,17 @@ struct SlabOptions {
     double minMfp = 0.01, maxMfp = 100;
     // Half-angle of the cone around the normal (outside) for normalRadiance.
     double coneDegrees = 10;
+    // When set, a progress line (util/progress.h) under this label.
+    const char* progressLabel = nullptr;
 };
 
 struct SlabResult {
     glm::dvec3 reflectance{0.0}, reflectanceError{0.0};  // mean and its standard error
     std::vector<double> edges;                           // bin edges, in mean free paths
     std::vector<glm::dvec3> binFlux;                     // flux fraction leaving per annulus
+    // binFlux's standard error, from the spread of the 4096-photon batches
+    // (batch means: the photons' weights vary, so counts alone would not do).
+    std::vector<glm::dvec3> binFluxError;
     // Radiance leaving within the cone per unit entered flux and unit irradiance
     // (flux in the cone / (π sin²θ)): the slab's normal-view radiance under a
     // normally incident directional light, per transmitted irradiance.
