@@ -125,9 +125,9 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
     const double peak = luminance(&map->residual[brightest * 3]);
     const double threshold = 20.0 * mean;
     if (peak > threshold && peak > 0) {
-        const glm::dvec3 centre =
-            latLongDirection((double(brightest % width) + 0.5) / double(width),
-                             (double(brightest / width) + 0.5) / double(height));
+        const size_t row = brightest / width, column = brightest % width;
+        const glm::dvec3 centre = latLongDirection((double(column) + 0.5) / double(width),
+                                                   (double(row) + 0.5) / double(height));
         const double cosCone = std::cos(10.0 * kPi / 180.0);
         glm::dvec3 sum(0.0), dir(0.0);
         for (size_t i = 0; i < n; ++i) {

@@ -56,7 +56,7 @@ SlabResult traceSlab(const Medium& m, const SlabOptions& o) {
         for (size_t c = begin; c < end; ++c) {
             Tally& t = tallies[c];
             t.bins.assign(static_cast<size_t>(bins), glm::dvec3(0.0));
-            const long long first = static_cast<long long>(c * chunk);
+            const auto first = static_cast<long long>(c) * static_cast<long long>(chunk);
             const long long last = std::min(o.photons, first + static_cast<long long>(chunk));
             for (long long p = first; p < last; ++p) {
                 Rng rng(o.seed, static_cast<uint64_t>(p));

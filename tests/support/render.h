@@ -154,6 +154,7 @@ inline std::vector<double> errorsAgainstReference(const Scene& scene, const Rend
                                                   const std::vector<std::string>& methods) {
     const FrameResult ref = renderWith(scene, opt, "reference");
     std::vector<double> errors;
+    errors.reserve(methods.size());
     for (const std::string& m : methods)
         errors.push_back(relativeRmse(renderWith(scene, opt, m), ref));
     return errors;
