@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <utility>
 
 #include "physics/ggx.h"
 #include "scene/environment.h"
@@ -18,6 +19,14 @@ Scene frontLitSphere(glm::vec3 travel) {
                              {Light::Type::Directional, glm::normalize(travel), glm::vec3(1.0f)});
 }
 
+// The frame with the GGX lobe and without it (--no-specular), else alike.
+std::pair<FrameResult, FrameResult> withAndWithoutLobe(const Scene& scene, RenderOptions opt) {
+    opt.specular = true;
+    FrameResult with = test::renderWith(scene, opt, "pyramid");
+    opt.specular = false;
+    return {std::move(with), test::renderWith(scene, opt, "pyramid")};
+}
+
 // The shader's GGX lobe (gl/shaders/common.glsl) on rendered pixels against
 // the double-precision one (physics/ggx.h): the frame with the lobe minus the
 // frame without it is f·E·cosθi at each pixel's position and normal (the
@@ -30,10 +39,9 @@ TEST(Composite, GlslLobeMatchesTheHostLobeOnRenderedPixels) {
     for (float roughness : {0.2f, 0.3f, 0.6f, 1.0f}) {
         SCOPED_TRACE(roughness);
         opt.roughness = roughness;
-        opt.specular = true;
-        const FrameResult with = test::renderWith(scene, opt, "pyramid");
-        opt.specular = false;
-        const FrameResult without = test::renderWith(scene, opt, "pyramid");
+        // Named references, not a structured binding: the pixel lambdas capture them.
+        const std::pair<FrameResult, FrameResult> frames = withAndWithoutLobe(scene, opt);
+        const FrameResult &with = frames.first, &without = frames.second;
         ASSERT_EQ(with.radiosity.pixels, without.radiosity.pixels);
         const glm::dvec3 l = -glm::dvec3(scene.lights[0].vec);
         const glm::dvec3 eye(scene.camera.eye);
@@ -87,10 +95,9 @@ TEST(Composite, UniformEnvironmentReflectsTheLobesDirectionalAlbedo) {
     for (float roughness : {0.3f, 0.7f}) {
         SCOPED_TRACE(roughness);
         opt.roughness = roughness;
-        opt.specular = true;
-        const FrameResult with = test::renderWith(scene, opt, "pyramid");
-        opt.specular = false;
-        const FrameResult without = test::renderWith(scene, opt, "pyramid");
+        // Named references, not a structured binding: the pixel lambdas capture them.
+        const std::pair<FrameResult, FrameResult> frames = withAndWithoutLobe(scene, opt);
+        const FrameResult &with = frames.first, &without = frames.second;
         const glm::dvec3 eye(scene.camera.eye);
         double worst = 0, minCos = 1;
         int checked = 0;

@@ -112,11 +112,15 @@ const AlbedoAtlas& Renderer::albedoAtlas(const Scene& scene, const SceneMedia& m
 }
 
 const SceneMedia& Renderer::media(const Scene& scene, uint64_t meshKey) {
-    if (!media_ || meshKey != mediaOf_) {
-        mediaFound_ = findMedia(scene.mesh);
-        mediaOf_ = meshKey;
+    // The weld once per mesh; the slots again only when a material changed
+    // (not every frame: SceneMedia holds a per-vertex table).
+    Hasher h(meshKey);
+    hashMaterials(h, scene);
+    const uint64_t key = h.digest();
+    if (!media_ || key != mediaOf_) {
+        media_ = std::make_unique<SceneMedia>(sceneMedia(scene, findMedia(scene.mesh)));
+        mediaOf_ = key;
     }
-    media_ = std::make_unique<SceneMedia>(sceneMedia(scene, mediaFound_));
     return *media_;
 }
 

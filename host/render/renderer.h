@@ -47,7 +47,8 @@ class Renderer {
 
   private:
     Method& method(const std::string& name, size_t slot);
-    // The scene's media (found once per mesh) and their materials.
+    // The scene's media and their materials (made again when the mesh or a
+    // material changed).
     const SceneMedia& media(const Scene& scene, uint64_t meshKey);
     // The albedo factors (baked again when the mesh, a material or the atlas changed).
     const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
@@ -59,8 +60,7 @@ class Renderer {
     GlClStaging staging_;
     RadiosityAccumulator accumulator_;
     std::map<std::string, std::unique_ptr<Method>> methods_;
-    Media mediaFound_;
-    uint64_t mediaOf_ = 0;
+    uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;
     AlbedoAtlas albedo_;
     uint64_t albedoOf_ = 0;

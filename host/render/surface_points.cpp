@@ -335,7 +335,7 @@ glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vec
 }
 
 std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
-                                        const std::vector<Light>& lights,
+                                        const std::vector<Light>& lights, const Media& media,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
                                         Progress* progress) {
@@ -348,7 +348,6 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
     for (size_t t = 0; t < k.size(); ++t)
         first[t + 1] = first[t] + static_cast<size_t>(k[t]) * k[t];
     std::vector<SurfacePoint> points(first.back());
-    const Media media = findMedia(mesh);
     std::atomic<size_t> done{0};
     std::mutex progressMutex;
     parallelFor(k.size(), 64, [&](size_t begin, size_t end) {
@@ -473,7 +472,7 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
         std::vector<double> eta;
         for (uint32_t m = 0; m < media.count; ++m)
             eta.push_back(scene.materialOf(media.materialOf[m]).eta);
-        points_ = sampleSurface(scene.mesh, spacing, scene.lights, eta, rays,
+        points_ = sampleSurface(scene.mesh, spacing, scene.lights, media, eta, rays,
                                 kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress);
         addEnvironmentIrradiance(points_, scene, kShadowOffset * diagonal);
         if (albedo) scaleByAlbedo(points_, scene.mesh, spacing, *albedo);

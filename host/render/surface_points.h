@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/media.h"
 #include "mesh/mesh.h"
 #include "physics/material.h"
 #include "scene/scene.h"
@@ -53,9 +54,10 @@ glm::dvec3 irradianceAt(const glm::dvec3& x, const glm::dvec3& n, const std::vec
 // triangle: the first moment of the flux is kept, so the sum stays second
 // order across shadow edges. Rays: one per light and lattice vertex or
 // centroid, a few dozen more per sub-triangle on a shadow edge.
-// etaOfMedium: η of each medium (mesh/media.h); one value serves them all.
+// media: findMedia(mesh); etaOfMedium: η of each medium (one value serves
+// them all).
 std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
-                                        const std::vector<Light>& lights,
+                                        const std::vector<Light>& lights, const Media& media,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
                                         Progress* progress = nullptr);

@@ -140,7 +140,7 @@ TEST(SurfacePoints, ShadowEdgesAreIntegratedAdaptively) {
     const glm::dvec3 exact = e0 * glm::dvec3(12.0, -4.0 * 0.37, -4.0 * 0.13);
     const double spacing = 0.3;
     const glm::dvec3 adaptive =
-        groundFlux(sampleSurface(m, spacing, sun, {1.3}, rays, 1e-4, 100.0), false);
+        groundFlux(sampleSurface(m, spacing, sun, findMedia(m), {1.3}, rays, 1e-4, 100.0), false);
     const glm::dvec3 centroids = groundFlux(placeSurfacePoints(m, spacing), true);
     std::printf("lit flux: exact %.5f, adaptive %.5f, centroid rule %.5f\n", exact.x, adaptive.x,
                 centroids.x);
