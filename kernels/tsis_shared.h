@@ -79,6 +79,19 @@ TSIS_CHECK_OFFSET(TsisFluxNode, py, 20);
 TSIS_CHECK_OFFSET(TsisFluxNode, pz, 24);
 TSIS_CHECK_OFFSET(TsisFluxNode, radius, 28);
 
+/* A pixel the pyramid interpolates (render/sparse_pixels.h): its packed
+ * index and its grid cell's four corners' (x0 y0, x1 y0, x0 y1, x1 y1),
+ * which are evaluated, with their bilinear weights. */
+typedef struct {
+    int point;
+    int corners[4];
+    float weights[4];
+} TsisInterpolatedPixel;
+TSIS_CHECK_SIZE(TsisInterpolatedPixel, 36);
+TSIS_CHECK_OFFSET(TsisInterpolatedPixel, point, 0);
+TSIS_CHECK_OFFSET(TsisInterpolatedPixel, corners, 4);
+TSIS_CHECK_OFFSET(TsisInterpolatedPixel, weights, 20);
+
 /* Depth of the flux tree below its root, at most (21 bits of Morton code an
  * axis in steps of 3, plus the splits of texels that share a code, plus the
  * splits by medium: 8 levels for up to 8^8 media): bounds the descent's

@@ -11,7 +11,7 @@
 
 namespace tsis {
 
-PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl) {}
+PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl), interpolation_(cl) {}
 
 namespace {
 
@@ -105,16 +105,10 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
                                        CL_FALSE, 0, order.size() * sizeof(int), order.data());
     tree_.gather(points.xyz, order_.buffer, static_cast<int>(order.size()), o.pyramidEpsilon,
                  static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info, radiosity);
+    // The rest from the grid, in the same buffer (no trip through the host).
+    interpolation_.run(plan, radiosity);
     const double ms = tree_.lastGatherMs();
-    if (!plan.interpolate.empty()) {
-        Timer t;
-        std::vector<float> rgba(static_cast<size_t>(points.count) * 4);
-        const size_t bytes = rgba.size() * sizeof(float);
-        cl_.queue().enqueueReadBuffer(radiosity, CL_TRUE, 0, bytes, rgba.data());
-        interpolateSparsePixels(plan, rgba);
-        cl_.queue().enqueueWriteBuffer(radiosity, CL_TRUE, 0, bytes, rgba.data());
-        stats.addStage("pyramid_interpolate", t.ms());
-    }
+    if (!plan.interpolate.empty()) stats.addStage("pyramid_interpolate", interpolation_.lastMs());
     stats.set("pyramid_epsilon", o.pyramidEpsilon);
     stats.set("pyramid_stride", stride);
     stats.set("pyramid_evaluated_pixels", static_cast<double>(order.size()));

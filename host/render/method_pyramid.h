@@ -26,6 +26,7 @@
 #include "cl/flux_tree.h"
 #include "render/method.h"
 #include "render/profile_table_cache.h"
+#include "render/sparse_pixels.h"
 
 namespace tsis {
 
@@ -55,6 +56,7 @@ class PyramidMethod : public Method {
     uint64_t leavesVersion_ = 0;  // the position atlas' version of the leaf order (0: none)
     // What the node sums were made from (the flux atlas' version, leavesVersion_).
     uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0;
+    SparseInterpolation interpolation_;
     GrowingBuffer order_;  // the covered pixels in tiles (FluxTree::tileOrder)
 };
 

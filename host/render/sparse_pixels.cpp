@@ -4,6 +4,7 @@
 #include <glm/vec3.hpp>
 
 #include "cl/flux_tree.h"
+#include "cl/launch.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -50,7 +51,7 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
             continue;
         }
         const float fx = float(x - x0) / stride, fy = float(y - y0) / stride;
-        const std::array<float, 4> w = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
         // The corners' positions interpolated must land near the pixel's own:
         // the cell is close to flat, so B's interpolation follows the surface.
         glm::vec3 p(0.0f);
@@ -60,7 +61,7 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
             restPixels.push_back(pixels[k]);
             continue;
         }
-        plan.interpolate.push_back({int(k), c, w});
+        plan.interpolate.push_back({int(k), {c[0], c[1], c[2], c[3]}, {w[0], w[1], w[2], w[3]}});
     }
     for (int i : FluxTree::tileOrder(gridCells, (width + stride - 1) / stride))
         plan.evaluate.push_back(grid[static_cast<size_t>(i)]);
@@ -70,13 +71,35 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
 }
 
 void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba) {
-    for (const SparsePixels::Interpolated& p : plan.interpolate)
+    for (const TsisInterpolatedPixel& p : plan.interpolate)
         for (int c = 0; c < 4; ++c) {
             float v = 0;
             for (int j = 0; j < 4; ++j)
-                v += p.weights[size_t(j)] * rgba[static_cast<size_t>(p.corners[size_t(j)]) * 4 + c];
+                v += p.weights[j] * rgba[static_cast<size_t>(p.corners[j]) * 4 + c];
             rgba[static_cast<size_t>(p.point) * 4 + c] = v;
         }
+}
+
+SparseInterpolation::SparseInterpolation(ClRuntime& cl)
+    : cl_(cl), kernel_(cl.kernel("sparse_pixels.cl", "tsis_interpolate_sparse")) {}
+
+void SparseInterpolation::run(const SparsePixels& plan, cl::Buffer& rgba) {
+    events_.clear();
+    const std::vector<TsisInterpolatedPixel>& p = plan.interpolate;
+    if (p.empty()) return;
+    const size_t bytes = p.size() * sizeof(TsisInterpolatedPixel);
+    cl::CommandQueue& q = cl_.queue();
+    cl::Buffer& pixels = pixels_.reserve(cl_.context(), bytes);
+    // Blocking: the plan is the caller's, and may be gone before the queue runs.
+    events_.emplace_back();
+    q.enqueueWriteBuffer(pixels, CL_TRUE, 0, bytes, p.data(), nullptr, &events_.back());
+    setKernelArgs(kernel_, pixels, static_cast<int>(p.size()), rgba);
+    events_.emplace_back();
+    enqueue1D(q, kernel_, p.size(), kLocalSize, &events_.back());
+}
+
+double SparseInterpolation::lastMs() const {
+    return eventMilliseconds(events_);
 }
 
 }  // namespace tsis

@@ -9,8 +9,11 @@
 // evaluated itself.
 #pragma once
 
-#include <array>
 #include <vector>
+
+#include "cl/cl_runtime.h"
+#include "render/frame_resources.h"
+#include "tsis_shared.h"
 
 namespace tsis {
 
@@ -18,12 +21,8 @@ struct SparsePixels {
     // Indices into the packed covered points to evaluate, grouped so runs of
     // 8 are neighbours on screen: the grid's points first, then the rest.
     std::vector<int> evaluate;
-    struct Interpolated {
-        int point;                   // packed index
-        std::array<int, 4> corners;  // packed indices of the cell's corners
-        std::array<float, 4> weights;
-    };
-    std::vector<Interpolated> interpolate;
+    // Packed indices of the point and of its cell's corners, and the weights.
+    std::vector<TsisInterpolatedPixel> interpolate;
 };
 
 // pixels: the GL pixel index (y·width + x) of each packed point, ascending;
@@ -33,6 +32,23 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
                               int width, int height, int stride, float maxCornerMm);
 
 // rgba: 4 floats per packed point, the evaluated ones filled; fills the rest.
+// The reference for SparseInterpolation.
 void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba);
+
+// The same on the device (kernels/sparse_pixels.cl), in place in the CL
+// buffer the method wrote B to: B does not cross to the host and back.
+class SparseInterpolation {
+  public:
+    explicit SparseInterpolation(ClRuntime& cl);
+    // rgba: float4 per packed point. Enqueues without waiting; lastMs() waits.
+    void run(const SparsePixels& plan, cl::Buffer& rgba);
+    double lastMs() const;  // CL profiling: the upload and the kernel
+
+  private:
+    ClRuntime& cl_;
+    cl::Kernel kernel_;
+    GrowingBuffer pixels_;
+    std::vector<cl::Event> events_;
+};
 
 }  // namespace tsis

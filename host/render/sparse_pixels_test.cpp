@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+
+#include "support/cl_fixture.h"
 
 namespace tsis {
 namespace {
@@ -64,9 +67,33 @@ TEST(SparsePixels, DepthJumpsAndHolesAreEvaluated) {
     // Cells at x0 = 4 span the jump (x = 6); cells at x0 = 8 have the hole as a
     // corner; cells at x0 = 12 reach past the image. Only x0 = 0 is interpolated.
     ASSERT_FALSE(plan.interpolate.empty());
-    for (const SparsePixels::Interpolated& p : plan.interpolate)
+    for (const TsisInterpolatedPixel& p : plan.interpolate)
         EXPECT_LT(img.pixels[size_t(p.point)] % w, 4) << "pixel " << img.pixels[size_t(p.point)];
     EXPECT_EQ(plan.evaluate.size() + plan.interpolate.size(), img.pixels.size());
+}
+
+// The device's interpolation gives the host reference's values bit for bit
+// (the same sums in the same order, no contraction), in place, leaving the
+// evaluated points as they were.
+class SparseInterpolationTest : public test::ClTest {};
+
+TEST_F(SparseInterpolationTest, DeviceEqualsHost) {
+    const int w = 37, h = 29, stride = 4;
+    const Image img(w, h, [](int x, int y) { return 0.01f * float(x * x) + 0.02f * float(y); });
+    const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 3.0f);
+    ASSERT_GT(plan.interpolate.size(), size_t(w * h) / 2);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 10.0f);
+    std::vector<float> host(size_t(w * h) * 4, -1.0f);
+    for (int k : plan.evaluate)
+        for (int c = 0; c < 4; ++c) host[size_t(k) * 4 + c] = u(rng);
+    cl::Buffer device = upload(host);
+    interpolateSparsePixels(plan, host);
+    SparseInterpolation interpolation(rt);
+    interpolation.run(plan, device);
+    EXPECT_GE(interpolation.lastMs(), 0.0);
+    const std::vector<float> got = download<float>(device, host.size());
+    for (size_t i = 0; i < host.size(); ++i) ASSERT_EQ(got[i], host[i]) << "float " << i;
 }
 
 }  // namespace
