@@ -7,26 +7,34 @@ namespace tsis {
 
 LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
     LightView lv;
+    updateLightView(lv, light, radius, resolution, maps);
+    return lv;
+}
+
+void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps) {
     lv.light = light;
     const LightProjection lp = lightProjection(light, radius, resolution);
     lv.viewProj = lp.viewProj;
     lv.tanHalf = lp.tanHalf;
     lv.texelAreaMm = lp.texelAreaMm;
     lv.texelMm = lp.texelMm;
-    lv.target = std::make_unique<RenderTarget>(
-        resolution, resolution,
-        maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);
-    return lv;
+    const int colours = maps ? 2 : 0;
+    if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != colours)
+        lv.target = std::make_unique<RenderTarget>(
+            resolution, resolution,
+            maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);
 }
 
 ShadowMapArray::~ShadowMapArray() {
     if (id_) glDeleteTextures(1, &id_);
 }
 
-void ShadowMapArray::update(const std::vector<LightView>& lights) {
+void ShadowMapArray::update(const std::vector<LightView>& lights,
+                            const std::vector<size_t>& changed) {
     if (lights.empty()) return;
     int res = lights[0].target->width();
     int layers = static_cast<int>(lights.size());
+    bool all = false;
     if (!id_ || res != resolution_ || layers != layers_) {
         if (id_) glDeleteTextures(1, &id_);
         glGenTextures(1, &id_);
@@ -35,10 +43,16 @@ void ShadowMapArray::update(const std::vector<LightView>& lights) {
         setShadowSampling(GL_TEXTURE_2D_ARRAY);
         resolution_ = res;
         layers_ = layers;
+        all = true;
     }
-    for (int i = 0; i < layers; ++i)
-        glCopyImageSubData(lights[static_cast<size_t>(i)].target->depth(), GL_TEXTURE_2D, 0, 0, 0,
-                           0, id_, GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, res, res, 1);
+    auto copy = [&](size_t i) {
+        glCopyImageSubData(lights[i].target->depth(), GL_TEXTURE_2D, 0, 0, 0, 0, id_,
+                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<int>(i), res, res, 1);
+    };
+    if (all)
+        for (size_t i = 0; i < lights.size(); ++i) copy(i);
+    else
+        for (size_t i : changed) copy(i);
 }
 
 void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, int unit,

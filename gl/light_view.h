@@ -26,6 +26,10 @@ struct LightView {
 // methods read them); without, it is depth only. Throws tsis::Error for a
 // point light inside that sphere or a zero direction.
 LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true);
+// The same in place: `view` for `light`, its target kept when it has the size
+// and the maps asked for (a light that moved needs no new target).
+void updateLightView(LightView& view, const Light& light, float boundingRadius, int resolution,
+                     bool maps);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
 // form the shaders sample.
@@ -35,8 +39,9 @@ class ShadowMapArray {
     ~ShadowMapArray();
     ShadowMapArray(const ShadowMapArray&) = delete;
     ShadowMapArray& operator=(const ShadowMapArray&) = delete;
-    // Copies each light's depth into its layer (re-allocating on a size change).
-    void update(const std::vector<LightView>& lights);
+    // Copies the depth of the lights `changed` (indices) into their layers;
+    // all of them when the array is made again (a new size or light count).
+    void update(const std::vector<LightView>& lights, const std::vector<size_t>& changed);
     GLuint id() const { return id_; }
 
   private:

@@ -32,13 +32,20 @@ LightViewPass::LightViewPass()
 
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                         const MaterialTables& media) {
+    std::vector<size_t> all(lights.size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+    run(mesh, lights, media, all);
+}
+
+void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
+                        const MaterialTables& media, const std::vector<size_t>& changed) {
     program_.use();
     bindLights(program_, lights, kShadowUnit, shadows_);
     media.bind(program_, kMediaUnit);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    for (size_t i = 0; i < lights.size(); ++i) {
+    for (size_t i : changed) {
         RenderTarget& t = *lights[i].target;
         t.bindAndClear();
         const bool maps = t.colorCount() > 0;
@@ -54,7 +61,7 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
         mesh.draw();
     }
     glDisable(GL_DEPTH_TEST);
-    shadows_.update(lights);
+    shadows_.update(lights, changed);
     checkGl("LightViewPass");
 }
 

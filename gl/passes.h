@@ -24,6 +24,9 @@ class LightViewPass {
   public:
     LightViewPass();
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
+    // Only the views `changed` (indices into lights), the others' kept.
+    void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media,
+             const std::vector<size_t>& changed);
     // The shadow maps of the last run, for the passes that light.
     const ShadowMapArray& shadows() const { return shadows_; }
 

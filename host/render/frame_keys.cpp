@@ -50,6 +50,14 @@ uint64_t lightingKey(const Scene& scene, const RenderOptions& o, uint64_t meshHa
     return h.digest();
 }
 
+uint64_t lightViewKey(const Light& light, uint64_t meshHash, int resolution, bool maps,
+                      uint64_t shading) {
+    Hasher h(meshHash);
+    h.add(light.type).add(light.vec).add(light.rgb).add(light.shadows).add(resolution).add(maps);
+    if (maps) h.add(shading);
+    return h.digest();
+}
+
 uint64_t accumulationKey(const Scene& scene, const RenderOptions& o, uint64_t lighting) {
     Hasher h(lighting);
     hashMaterials(h, scene);

@@ -27,6 +27,13 @@ void hashIrradiance(Hasher& h, const Scene& scene);
 // lights, η and the parameters whose effect is Lighting (render/render_params.h).
 uint64_t lightingKey(const Scene& scene, const RenderOptions& options, uint64_t meshHash);
 
+// One light's view (its shadow map, and flux and position maps when `maps`):
+// the light field by field, the mesh, the map resolution and, for the maps,
+// `shading` (what the flux map reads of the materials: η per medium, the
+// albedo atlas' key). A frame redraws only the views whose key changed.
+uint64_t lightViewKey(const Light& light, uint64_t meshHash, int resolution, bool maps,
+                      uint64_t shading);
+
 // Everything that changes the radiosity a frame computes, except the sample
 // set: frames with equal keys may be averaged. The parameters come from their
 // table (effect Radiosity, read by the method), so a new one is covered.

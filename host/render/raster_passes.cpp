@@ -6,6 +6,7 @@
 #include "image/image_io.h"
 #include "physics/ggx.h"
 #include "render/env_reflection.h"
+#include "render/frame_keys.h"
 #include "tsis_shared.h"
 #include "util/hash.h"
 #include "util/timer.h"
@@ -81,20 +82,32 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.read(h.mesh);
             b.write(h.lights);
         },
-        [this, &graph, &ctx, lighting, lightMapsCl, h](FrameGraph::Resources& res) {
+        [this, &graph, &ctx, lighting, lightMapsCl, eta, h](FrameGraph::Resources& res) {
             // Flux and position maps only when a light-view method reads them.
             const bool maps = graph.isRead(lightMapsCl);
-            if (lightViewKey_ != lighting || (maps && !lightMapsMade_)) {
-                lights_.clear();
-                for (const Light& l : ctx.scene->lights)
-                    lights_.push_back(
-                        makeLightView(l, ctx.boundingRadius, ctx.lightResolution, maps));
-                lightMapsMade_ = maps;
-                lightPass_.run(*res.read(h.mesh), lights_, materials_);
+            // Each view is redrawn only when its own key changed: a frame that
+            // moves one light of several redraws that one.
+            const std::vector<Light>& lights = ctx.scene->lights;
+            const uint64_t shading = Hasher(eta).add(ctx.albedo->key).digest();
+            lights_.resize(lights.size());
+            viewKeys_.resize(lights.size(), 0);
+            std::vector<size_t> changed;
+            for (size_t i = 0; i < lights.size(); ++i) {
+                const uint64_t key =
+                    lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading);
+                if (key == viewKeys_[i]) continue;
+                updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
+                                maps);
+                viewKeys_[i] = key;
+                changed.push_back(i);
+            }
+            if (!changed.empty()) {
+                lightPass_.run(*res.read(h.mesh), lights_, materials_, changed);
                 glFinish();
-                lightViewKey_ = lighting;
                 ++lightsVersion_;
             }
+            lightViewKey_ = lighting;
+            res.stats().set("light_views_drawn", static_cast<double>(changed.size()));
             res.write(h.lights) = {&lights_, &lightPass_.shadows(), lightsVersion_};
         });
     // The geometry atlas depends on the mesh and resolution only: made once.

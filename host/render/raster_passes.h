@@ -70,7 +70,10 @@ class RasterPasses {
     // Whether the light views of the last frame were drawn for `lightingKey`.
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
-    void invalidateLighting() { lightViewKey_ = fluxKey_ = envTextureKey_ = 0; }
+    void invalidateLighting() {
+        lightViewKey_ = fluxKey_ = envTextureKey_ = 0;
+        viewKeys_.clear();
+    }
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
@@ -97,7 +100,7 @@ class RasterPasses {
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::vector<LightView> lights_;
-    bool lightMapsMade_ = false;  // the light views have flux and position maps
+    std::vector<uint64_t> viewKeys_;  // per light view: what it was drawn for (frame_keys.h)
     // What the targets hold: lighting keys (0 = nothing) and versions.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)

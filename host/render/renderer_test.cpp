@@ -45,6 +45,32 @@ TEST(Renderer, ReusedLightingGivesTheSameFrameAsFreshLighting) {
     }
 }
 
+// Two lights, one moved: only its view is drawn again (the other's shadow
+// map, and for the light-view methods its flux and position maps, are kept),
+// and the frame equals one whose every view was drawn afresh.
+TEST(Renderer, MovingOneLightRedrawsOnlyItsView) {
+    Scene a =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    a.lights.push_back({Light::Type::Directional, glm::vec3(0.3f, -1, -0.5f), glm::vec3(0.5f)});
+    Scene moved = a;
+    moved.lights[0].vec = glm::vec3(8, 10, 6);
+    const RenderOptions opt = test::smallOptions(48, 256, 256);
+    RenderOptions fresh = opt;
+    fresh.reuseLighting = false;
+    for (const char* method : {"pyramid", "ltsm"}) {
+        SCOPED_TRACE(method);
+        // (The shared renderer may hold a view of a's first light already.)
+        EXPECT_EQ(test::renderWith(a, fresh, method).stats.number("light_views_drawn"), 2);
+        const FrameResult kept = test::renderWith(moved, opt, method);
+        EXPECT_EQ(kept.stats.number("light_views_drawn"), 1);
+        EXPECT_EQ(test::renderWith(moved, opt, method).stats.number("light_views_drawn"), 0);
+        const FrameResult scratch = test::renderWith(moved, fresh, method);
+        EXPECT_EQ(scratch.stats.number("light_views_drawn"), 2);
+        EXPECT_EQ(scratch.radiosity.pixels, kept.radiosity.pixels);
+        EXPECT_EQ(scratch.rgb8, kept.rgb8);
+    }
+}
+
 // Light maps of 2048² only for objects many diffusion lengths across, where
 // the shadow edges stay sharp in B; the frame reports the one it used.
 TEST(Renderer, LightResolutionFollowsTheObjectsSizeInDiffusionLengths) {
