@@ -1,5 +1,7 @@
 #include "gl/passes.h"
 
+#include <cmath>
+
 #include "gl/gl_context.h"
 #include "util/error.h"
 
@@ -133,7 +135,8 @@ CompositePass::CompositePass()
     : centreProgram_("fullscreen.vert", "radiance.frag"),
       sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
-      toneMapProgram_("fullscreen.vert", "tonemap.frag") {
+      toneMapProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_TONE_MAP 1\n"),
+      reduceProgram_("fullscreen.vert", "reduce.frag") {
     glGenVertexArrays(1, &emptyVao_);
 }
 
@@ -185,37 +188,64 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         glEnable(GL_PROGRAM_POINT_SIZE);
         glDrawArrays(GL_POINTS, 0, w * h);
         glDisable(GL_PROGRAM_POINT_SIZE);
-        ensureTarget(frameTarget_, w, h, {GL_RGBA32F}, false);
-        frameTarget_->bindAndClear();
-        resolveProgram_.use();
-        resolveProgram_.set("u_aa", aa);
-        bindTexture(resolveProgram_, "u_centre", 0, centreTarget_->color(0));
-        bindTexture(resolveProgram_, "u_samples", 1, sampleTarget_->color(0));
-        bindTexture(resolveProgram_, "u_edges", 2, centreTarget_->color(1));
-        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     checkGl("CompositePass::radiance");
 }
 
+void CompositePass::resolveInto(const ShaderProgram& program, std::unique_ptr<RenderTarget>& target,
+                                std::vector<GLenum> formats) {
+    const int w = centreTarget_->width(), h = centreTarget_->height();
+    ensureTarget(target, w, h, std::move(formats), false);
+    target->bindAndClear();
+    program.use();
+    program.set("u_aa", aa_);
+    bindTexture(program, "u_centre", 0, centreTarget_->color(0));
+    // At 1× no pixel is marked and the samples are never read.
+    bindTexture(program, "u_samples", 1, (aa_ > 1 ? *sampleTarget_ : *centreTarget_).color(0));
+    bindTexture(program, "u_edges", 2, centreTarget_->color(1));
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    logLuminance_ = target.get();
+}
+
+void CompositePass::resolve() {
+    resolveInto(resolveProgram_, frameTarget_, {GL_RGBA32F, GL_RGBA32F});
+    checkGl("CompositePass::resolve");
+}
+
 std::vector<float> CompositePass::frameRadiance() const {
-    return (aa_ > 1 ? *frameTarget_ : *centreTarget_).readRGBA(0);
+    TSIS_CHECK(frameTarget_ != nullptr);
+    return frameTarget_->readRGBA(0);
 }
 
 void CompositePass::toneMap(float scale) {
-    const int w = centreTarget_->width(), h = centreTarget_->height();
-    ensureTarget(colorTarget_, w, h, {GL_RGBA8}, false);
-    colorTarget_->bindAndClear();
     toneMapProgram_.use();
     toneMapProgram_.set("u_scale", scale);
-    toneMapProgram_.set("u_aa", aa_);
-    bindTexture(toneMapProgram_, "u_centre", 0, centreTarget_->color(0));
-    // At 1× no pixel is marked and the samples are never read.
-    bindTexture(toneMapProgram_, "u_samples", 1,
-                (aa_ > 1 ? *sampleTarget_ : *centreTarget_).color(0));
-    bindTexture(toneMapProgram_, "u_edges", 2, centreTarget_->color(1));
+    resolveInto(toneMapProgram_, colorTarget_, {GL_RGBA8, GL_RGBA32F});
+    checkGl("CompositePass::toneMap");
+}
+
+float CompositePass::logAverageLuminance() {
+    TSIS_CHECK(logLuminance_ != nullptr);
+    // Blocks of 16² pixels: a 512² frame leaves 32² sums (16 KiB) to read.
+    constexpr int kBlock = 16;
+    const int w = logLuminance_->width(), h = logLuminance_->height();
+    ensureTarget(sumTarget_, (w + kBlock - 1) / kBlock, (h + kBlock - 1) / kBlock, {GL_RGBA32F},
+                 false);
+    sumTarget_->bindAndClear();
+    reduceProgram_.use();
+    reduceProgram_.set("u_block", kBlock);
+    bindTexture(reduceProgram_, "u_logLuminance", 0, logLuminance_->color(1));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    checkGl("CompositePass::toneMap");
+    checkGl("CompositePass::logAverageLuminance");
+    const std::vector<float> sums = sumTarget_->readRGBA(0);
+    double sum = 0, count = 0;
+    for (size_t i = 0; i + 1 < sums.size(); i += 4) {
+        sum += sums[i];
+        count += sums[i + 1];
+    }
+    return count > 0 ? static_cast<float>(std::exp(sum / count)) : 1.0f;
 }
 
 }  // namespace tsis

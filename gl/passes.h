@@ -97,8 +97,10 @@ struct EnvReflectionTextures {
 // Composite (docs/design.md "The composite"): radiance L = Ft/π·B (× the
 // exit term's scale) + the GGX lobe at each pixel's centre; where a silhouette
 // or depth jump passes (aa > 1), at aa × aa samples from the composite's own
-// G-buffer as well; the frame's radiance from them; then exposure, tone
-// curve, the samples' box filter and sRGB.
+// G-buffer as well; then exposure, tone curve, the samples' box filter and
+// sRGB in one full-screen pass, which also leaves each pixel's log luminance
+// for the log-average, summed on the GPU side. The frame's radiance as floats
+// only when asked (resolve()).
 class CompositePass {
   public:
     CompositePass();
@@ -106,26 +108,39 @@ class CompositePass {
     // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
     // `materials`: η and the exit term's factor over Ft/π (render_options.h
     // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe;
-    // `env`: the environment's reflection. Read frameRadiance() after it,
-    // then call toneMap().
+    // `env`: the environment's reflection. Then toneMap(), or resolve()
+    // first where the log-average or the radiance is needed before it.
     void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
                   const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
                   const ShadowMapArray& shadows, const glm::vec3& eye,
                   const MaterialTables& materials, float alpha,
                   const EnvReflectionTextures& env = {});
+    // The frame's radiance (frameRadiance()) and log luminance, without the
+    // display image.
+    void resolve();
     // The radiance at the frame's pixels (RGBA, GL order): the centre's, or
     // in a supersampled pixel the mean over its covered samples (alpha their
-    // fraction).
+    // fraction). Needs resolve().
     std::vector<float> frameRadiance() const;
     // Ls = scale·L, Reinhard's curve, the mean over a pixel's samples, sRGB.
     void toneMap(float scale);
+    // Reinhard's L_avg = exp(mean log(1e-12 + Y)) over the pixels with
+    // alpha > 0, of the last resolve() or toneMap(); 1 when none is covered.
+    // Summed in blocks on the GPU, the blocks' sums on the host.
+    float logAverageLuminance();
     const RenderTarget& colorTarget() const { return *colorTarget_; }
 
   private:
-    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, toneMapProgram_;
+    // resolve.frag into `target` (its attachment 1: the log luminance).
+    void resolveInto(const ShaderProgram& program, std::unique_ptr<RenderTarget>& target,
+                     std::vector<GLenum> formats);
+
+    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, toneMapProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1)
-    std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_;
+    std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_,
+        sumTarget_;
+    const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     int aa_ = 1;
     GLuint emptyVao_ = 0;
 };

@@ -26,9 +26,15 @@ void requireStatus(GLuint object, GLenum status, GetIv getIv, GetLog getLog,
     checkFailed(__FILE__, __LINE__, concat(what, " failed:\n", log.data()));
 }
 
+#define TSIS_TEXT(x) #x
+#define TSIS_LITERAL(x) TSIS_TEXT(x)
+
 GLuint compile(GLenum stage, const std::string& file, const std::string& defines) {
     std::string src = "#version 450 core\n";
     src += "#define MAX_LIGHTS " + std::to_string(TSIS_MAX_LIGHTS) + "\n";
+    // The luminance weights as the host's (float literals, 'f' and all).
+    src += "#define LUMA vec3(" TSIS_LITERAL(TSIS_LUMA_R) ", " TSIS_LITERAL(
+        TSIS_LUMA_G) ", " TSIS_LITERAL(TSIS_LUMA_B) ")\n";
     src += defines;
     src += embeddedText(embeddedShaders(), "common.glsl");
     src += "\n#line 1 1\n";  // messages: source string 1 = the stage's own file

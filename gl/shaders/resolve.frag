@@ -1,25 +1,73 @@
-// The radiance at the frame's pixels: the centre's sample, or in a
+// The frame's pixels from the composite's samples (docs/design.md "The
+// composite"). A pixel's radiance is its centre's sample, or in a
 // supersampled pixel the mean over its u_aa × u_aa samples that show the
-// object; alpha = the fraction that do (0: none).
-uniform sampler2D u_centre;
-uniform sampler2D u_samples;
+// object, alpha the fraction that do (0: none); location 1 holds its log
+// luminance for the log-average, (log(1e-12 + Y), 1) where alpha > 0, else 0
+// (reduce.frag sums it).
+//
+// Location 0: that radiance; with TSIS_TONE_MAP, the display colour instead:
+// each sample exposed, Ls = u_scale · L (2^EV, or key/L_avg with
+// --auto-exposure), through Reinhard's curve Ls/(1 + Ls), in a supersampled
+// pixel the samples averaged (a box filter; after the curve, so that a
+// highlight does not flood its silhouette pixel), then sRGB.
+uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
+uniform sampler2D u_samples;  // u_aa × the size; read where u_edges is set
 uniform sampler2D u_edges;
 uniform int u_aa;
-layout(location = 0) out vec4 o_radiance;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_logLuminance;
+
+#ifdef TSIS_TONE_MAP
+uniform float u_scale;
+
+vec3 srgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+
+// Background: a dark vertical gradient.
+vec3 exposed(vec4 l, vec3 background) {
+    vec3 ls = u_scale * l.rgb;
+    return l.a > 0.0 ? ls / (1.0 + ls) : background;
+}
+#endif
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
+#ifdef TSIS_TONE_MAP
+    vec3 background = vec3(mix(0.004, 0.03, gl_FragCoord.y / float(textureSize(u_centre, 0).y)));
+    vec3 display = vec3(0.0);
+#endif
+    vec4 radiance;
     if (texelFetch(u_edges, px, 0).r == 0.0) {
-        o_radiance = texelFetch(u_centre, px, 0);
-        return;
+        radiance = texelFetch(u_centre, px, 0);
+#ifdef TSIS_TONE_MAP
+        display = exposed(radiance, background);
+#endif
+    } else {
+        vec3 sum = vec3(0.0);
+        float covered = 0.0;
+        for (int j = 0; j < u_aa; ++j)
+            for (int i = 0; i < u_aa; ++i) {
+                vec4 l = texelFetch(u_samples, px * u_aa + ivec2(i, j), 0);
+                sum += l.rgb * l.a;
+                covered += l.a;
+#ifdef TSIS_TONE_MAP
+                display += exposed(l, background);
+#endif
+            }
+        radiance =
+            covered > 0.0 ? vec4(sum / covered, covered / float(u_aa * u_aa)) : vec4(0.0);
+#ifdef TSIS_TONE_MAP
+        display /= float(u_aa * u_aa);
+#endif
     }
-    vec3 sum = vec3(0.0);
-    float covered = 0.0;
-    for (int j = 0; j < u_aa; ++j)
-        for (int i = 0; i < u_aa; ++i) {
-            vec4 l = texelFetch(u_samples, px * u_aa + ivec2(i, j), 0);
-            sum += l.rgb * l.a;
-            covered += l.a;
-        }
-    o_radiance = covered > 0.0 ? vec4(sum / covered, covered / float(u_aa * u_aa)) : vec4(0.0);
+    o_logLuminance = radiance.a > 0.0
+                         ? vec4(log(1e-12 + max(0.0, dot(LUMA, radiance.rgb))), 1.0, 0.0, 0.0)
+                         : vec4(0.0);
+#ifdef TSIS_TONE_MAP
+    o_color = vec4(srgb(display), 1.0);
+#else
+    o_color = radiance;
+#endif
 }

@@ -297,10 +297,15 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
                                     *res.read(gl.samples).target, o.aa, *lights.views,
                                     *lights.shadows, ctx.eye, materials_, alpha,
                                     environmentReflection(ctx, res.stats()));
-            out.radiance = compositePass_.frameRadiance();
-            out.lavg = logAverageLuminance(out.radiance);
+            // The frame's radiance as floats only for the AOVs; the
+            // log-average from the GPU's sums, before the tone curve only
+            // where it sets the exposure.
+            if (o.keepAovs || o.autoExposure) compositePass_.resolve();
+            if (o.keepAovs) out.radiance = compositePass_.frameRadiance();
+            if (o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
             out.exposureScale = exposureScale(o, out.lavg);
             compositePass_.toneMap(out.exposureScale);
+            if (!o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
             out.rgb8 =
                 fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
         });

@@ -33,7 +33,7 @@ struct GlLights {
 // The tone-mapped frame and the radiance it was made from.
 struct FrameImage {
     std::vector<uint8_t> rgb8;    // sRGB, row 0 = top
-    std::vector<float> radiance;  // RGBA, GL row order
+    std::vector<float> radiance;  // RGBA, GL row order; only with RenderOptions::keepAovs
     float lavg = 1;               // log-average luminance of the radiance
     float exposureScale = 1;      // Ls = exposureScale·L before the tone curve
 };
@@ -47,7 +47,8 @@ struct RasterHandles {
     FrameGraphId<GlTarget> samples;
 };
 
-// The log-average luminance (Reinhard's L_avg) of RGBA pixels whose alpha > 0.
+// The log-average luminance (Reinhard's L_avg) of RGBA pixels whose alpha > 0:
+// the reference for the composite's, summed on the GPU side.
 float logAverageLuminance(const std::vector<float>& rgba);
 
 // The factor on radiance before the tone curve: 2^exposure, or with

@@ -140,6 +140,27 @@ TEST(Composite, FixedExposureShowsTheLightsStrength) {
     EXPECT_NEAR(autoBright, autoDim, 0.5);
 }
 
+// The log-average summed on the GPU side (resolve.frag, reduce.frag) equals
+// the host's over the frame's radiance, with the fixed exposure (where it is
+// only reported) and the auto one (where it sets the exposure). At 1× a
+// pixel's radiance has alpha > 0 exactly where it is covered.
+TEST(Composite, GpuLogAverageEqualsTheHostOne) {
+    const Scene scene = frontLitSphere({0.3f, -0.4f, -1.0f});
+    RenderOptions opt = test::smallOptions(48, 256);
+    opt.aa = 1;
+    for (bool autoExposure : {false, true}) {
+        SCOPED_TRACE(autoExposure);
+        opt.autoExposure = autoExposure;
+        const FrameResult f = test::renderWith(scene, opt, "pyramid");
+        std::vector<float> rgba;
+        for (size_t i = 0; i < f.coverage.pixels.size(); ++i)
+            rgba.insert(rgba.end(), {f.radiance.pixels[3 * i], f.radiance.pixels[3 * i + 1],
+                                     f.radiance.pixels[3 * i + 2], f.coverage.pixels[i]});
+        const float host = logAverageLuminance(rgba);
+        EXPECT_NEAR(f.lavg, host, 1e-3 * host);
+    }
+}
+
 TEST(Composite, ExposureScale) {
     RenderOptions o;
     o.exposure = 2.5f;
