@@ -133,6 +133,7 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
 
 CompositePass::CompositePass()
     : centreProgram_("fullscreen.vert", "radiance.frag"),
+      uncoveredProgram_("fullscreen.vert", "radiance.frag", "#define TSIS_COMPOSITE_UNCOVERED 1\n"),
       sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       toneMapProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_TONE_MAP 1\n"),
@@ -154,8 +155,17 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     radiosity_->upload(radiosityRGBA);
     glBindVertexArray(emptyVao_);
     // The pixels' centres, and which pixels to supersample.
-    ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, false);
+    ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, true);
     centreTarget_->bindAndClear();
+    // The G-buffer's depth (< 1 where covered) and every fragment at depth 1:
+    // the covered pixels pass GL_GREATER, the others GL_EQUAL. llvmpipe's
+    // shaders run both sides of a branch, so the shading costs every pixel
+    // unless the depth test drops the uncovered ones' blocks before it.
+    glCopyImageSubData(frameGbuffer.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, centreTarget_->depth(),
+                       GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDepthRange(1.0, 1.0);
     for (const ShaderProgram* p : {&centreProgram_, &sampleProgram_}) {
         p->use();
         bindLights(*p, lights, kShadowUnit, shadows);
@@ -173,7 +183,21 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     bindTexture(centreProgram_, "u_radiosity", 0, radiosity_->id());
     bindTexture(centreProgram_, "u_framePosition", 1, frameGbuffer.color(0));
     bindTexture(centreProgram_, "u_normal", 2, frameGbuffer.color(1));
+    glDepthFunc(GL_GREATER);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (aa > 1) {
+        // At 1× the cleared target is what they would get: no radiance, no edge.
+        uncoveredProgram_.use();
+        uncoveredProgram_.set("u_findEdges", 1);
+        uncoveredProgram_.set("u_eye", eye);
+        bindTexture(uncoveredProgram_, "u_framePosition", 1, frameGbuffer.color(0));
+        glDepthFunc(GL_EQUAL);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDepthRange(0.0, 1.0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
         ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);

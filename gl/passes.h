@@ -135,9 +135,11 @@ class CompositePass {
     void resolveInto(const ShaderProgram& program, std::unique_ptr<RenderTarget>& target,
                      std::vector<GLenum> formats);
 
-    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, toneMapProgram_, reduceProgram_;
+    ShaderProgram centreProgram_, uncoveredProgram_, sampleProgram_, resolveProgram_,
+        toneMapProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
-    // centre: radiance and the supersampled pixels' mask (attachment 1)
+    // centre: radiance and the supersampled pixels' mask (attachment 1); its
+    // depth the frame G-buffer's, so that only covered pixels are shaded
     std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_,
         sumTarget_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
