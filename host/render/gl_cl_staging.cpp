@@ -25,6 +25,7 @@ void upload(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float
 
 void GlClStaging::declare(FrameGraph& graph, FrameContext& ctx) {
     ctx.fluxAtlas = graph.create<AtlasCl>("flux_atlas_cl");
+    ctx.residualFluxAtlas = graph.create<AtlasCl>("residual_flux_atlas_cl");
     ctx.positionAtlas = graph.create<AtlasCl>("position_atlas_cl");
     ctx.normalAtlas = graph.create<AtlasCl>("normal_atlas_cl");
     ctx.points = graph.create<SurfacePoints>("points_cl");
@@ -63,6 +64,9 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
     // (position; normal, w = texel area) only with the mesh or resolution.
     addAtlasUpload(graph, ctx, "gl_to_cl_flux_atlas", gl.fluxAtlas, 0, fluxAtlas_, fluxUploaded_,
                    ctx.fluxAtlas);
+    if (ctx.scene->env)
+        addAtlasUpload(graph, ctx, "gl_to_cl_residual_flux_atlas", gl.residualFluxAtlas, 0,
+                       residualFluxAtlas_, residualUploaded_, ctx.residualFluxAtlas);
     addAtlasUpload(graph, ctx, "gl_to_cl_position_atlas", gl.geometryAtlas, 0, positionAtlas_,
                    positionUploaded_, ctx.positionAtlas);
     addAtlasUpload(graph, ctx, "gl_to_cl_normal_atlas", gl.geometryAtlas, 1, normalAtlas_,
@@ -162,7 +166,9 @@ FrameGraphId<RadiosityCl> GlClStaging::declareRadiosity(FrameGraph& graph, size_
 }
 
 FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph,
-                                                      const std::vector<FrameContext>& runs) {
+                                                      const std::vector<FrameContext>& runs,
+                                                      const std::vector<FrameContext>& residual) {
+    TSIS_CHECK(residual.empty() || residual.size() == runs.size());
     const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
     const FrameContext& ctx = runs.front();
     graph.addPass(
@@ -170,21 +176,30 @@ FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph,
         [&](FrameGraph::Builder& b) {
             b.read(ctx.points);
             for (const FrameContext& run : runs) b.read(run.radiosity);
+            for (const FrameContext& run : residual) b.read(run.radiosity);
             b.write(image);
         },
-        [&runs, image](FrameGraph::Resources& res) {
+        [&runs, &residual, image](FrameGraph::Resources& res) {
             const FrameContext& ctx = runs.front();
             const SurfacePoints& points = res.read(ctx.points);
             const size_t count = static_cast<size_t>(points.count);
-            // Each run's B of every point; a point keeps its medium's run.
+            // Each run's B of every point (plus the residual's); a point keeps
+            // its medium's run.
+            auto read = [&](const FrameContext& run) {
+                std::vector<float> b(count * 4);
+                if (count > 0)
+                    ctx.cl->queue().enqueueReadBuffer(res.read(run.radiosity).storage->buffer,
+                                                      CL_TRUE, 0, count * 4 * sizeof(float),
+                                                      b.data());
+                res.addBytes(bytesOf(b));
+                return b;
+            };
             std::vector<std::vector<float>> packed(runs.size());
             for (size_t k = 0; k < runs.size(); ++k) {
-                packed[k].resize(count * 4);
-                if (count > 0)
-                    ctx.cl->queue().enqueueReadBuffer(res.read(runs[k].radiosity).storage->buffer,
-                                                      CL_TRUE, 0, count * 4 * sizeof(float),
-                                                      packed[k].data());
-                res.addBytes(bytesOf(packed[k]));
+                packed[k] = read(runs[k]);
+                if (residual.empty()) continue;
+                const std::vector<float> r = read(residual[k]);
+                for (size_t i = 0; i < r.size(); ++i) packed[k][i] += r[i];
             }
             std::vector<float>& rgba = res.write(image).rgba;
             rgba.assign(static_cast<size_t>(ctx.width) * ctx.height * 4, 0.0f);

@@ -42,6 +42,8 @@ struct RasterHandles {
     FrameGraphId<const GpuMesh*> mesh;
     FrameGraphId<GlLights> lights;
     FrameGraphId<GlTarget> geometryAtlas, fluxAtlas, gbuffer;
+    // The flux atlas of the environment's residual alone (none without --env).
+    FrameGraphId<GlTarget> residualFluxAtlas;
     // The composite's geometry: positions and normals at --aa × the frame's
     // size (the G-buffer itself at 1×).
     FrameGraphId<GlTarget> samples;
@@ -70,7 +72,7 @@ class RasterPasses {
     // Whether the light views of the last frame were drawn for `lightingKey`.
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
-    void invalidateLighting() { lightViewKey_ = fluxKey_ = envTextureKey_ = 0; }
+    void invalidateLighting() { lightViewKey_ = fluxKey_ = residualKey_ = envTextureKey_ = 0; }
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
@@ -84,7 +86,7 @@ class RasterPasses {
 
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
-    FluxAtlasPass fluxAtlasPass_;
+    FluxAtlasPass fluxAtlasPass_, residualFluxPass_;
     GBufferPass gbufferPass_, sampleGbufferPass_;
     CompositePass compositePass_;
     MaterialTables
@@ -99,12 +101,12 @@ class RasterPasses {
     std::vector<LightView> lights_;
     bool lightMapsMade_ = false;  // the light views have flux and position maps
     // What the targets hold: lighting keys (0 = nothing) and versions.
-    uint64_t lightViewKey_ = 0, fluxKey_ = 0;
+    uint64_t lightViewKey_ = 0, fluxKey_ = 0, residualKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
     uint64_t gbufferKey_ = 0;  // mesh, camera, size (and the lighting, with irradiance)
     uint64_t samplesKey_ = 0;  // mesh, camera, size, --aa
-    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0,
-             samplesVersion_ = 0;
+    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, residualVersion_ = 0,
+             gbufferVersion_ = 0, samplesVersion_ = 0;
 };
 
 }  // namespace tsis

@@ -91,9 +91,10 @@ Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
 
 Renderer::~Renderer() = default;
 
-Method& Renderer::method(const std::string& name, size_t slot) {
-    // One instance per material slot: each keeps the tables of its own profile.
-    const std::string key = slot == 0 ? name : concat(name, "#", slot);
+Method& Renderer::method(const std::string& name, size_t slot, const char* role) {
+    // One instance per material slot and role: each keeps the tables of its
+    // own profile.
+    const std::string key = concat(name, role, "#", slot);
     auto it = methods_.find(key);
     if (it == methods_.end()) it = methods_.emplace(key, makeMethod(name, cl_)).first;
     return *it->second;
@@ -182,14 +183,26 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     staging_.addUploads(graph, ctx, gl);
     // The method, once per material (docs/design.md §2 "Materials"); the
     // passes hold their context by reference until the graph has run.
-    std::vector<FrameContext> runs;
+    // A method that reads only the lights' views gets the environment's
+    // residual from a texture-space run (pyramid) over the residual's flux
+    // alone, through the part of Rd it misses (docs/design.md §12).
+    std::vector<FrameContext> runs, residual;
     runs.reserve(sm.slots());
+    const std::optional<RdPart> missed =
+        scene.env ? method(opt.method, 0).missesResidual(opt) : std::nullopt;
+    if (missed) residual.reserve(sm.slots());
     for (size_t k = 0; k < sm.slots(); ++k) {
         runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
         if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
         method(opt.method, k).addPasses(graph, runs[k]);
+        if (!missed) continue;
+        residual.push_back(runs[k]);
+        residual[k].fluxAtlas = ctx.residualFluxAtlas;
+        residual[k].rdPart = *missed;
+        residual[k].radiosity = staging_.declareRadiosity(graph, sm.slots() + k);
+        method("pyramid", k, "residual").addPasses(graph, residual[k]);
     }
-    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs);
+    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs, residual);
     if (opt.progressive)
         graph.addPass(
             "accumulate",

@@ -46,7 +46,9 @@ class Renderer {
     std::string glRenderer() const { return gl_.renderer(); }
 
   private:
-    Method& method(const std::string& name, size_t slot);
+    // The instance of method `name` for material slot `slot` in `role` ("":
+    // the frame's method; "residual": the environment's run, render()).
+    Method& method(const std::string& name, size_t slot, const char* role = "");
     // The scene's media and their materials (made again when the mesh or a
     // material changed).
     const SceneMedia& media(const Scene& scene, uint64_t meshKey);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/environment.h"
 #include "support/render.h"
 
 namespace tsis {
@@ -42,6 +43,25 @@ TEST(Renderer, ReusedLightingGivesTheSameFrameAsFreshLighting) {
         const FrameResult forced = test::renderWith(a, again, method);
         EXPECT_EQ(forced.stats.number("lighting_reused"), 0);
         EXPECT_EQ(forced.rgb8, first.rgb8);
+    }
+}
+
+// Under a sky without a sun and a dark light, what ltsm and tsm give is the
+// texture-space run over the residual's flux alone (design §12): the
+// default method's B, to the bit, also right after a lit frame.
+TEST(Renderer, LightViewMethodsUnderASunlessSkyAreTheResidualsRun) {
+    const Scene lit =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    Scene sky = lit;
+    sky.lights[0].rgb = glm::vec3(0.0f);  // a frame needs a light: a dark one
+    sky.env.map = splitEnvironment("white", 32, 16, 3, std::vector<float>(32 * 16 * 3, 0.3f));
+    const RenderOptions opt = test::smallOptions(48, 256, 256);
+    const FrameResult pyramid = test::renderWith(sky, opt, "pyramid");
+    for (const char* method : {"ltsm", "tsm"}) {
+        SCOPED_TRACE(method);
+        test::renderWith(lit, opt, method);
+        const FrameResult b = test::renderWith(sky, opt, method);
+        EXPECT_EQ(b.radiosity.pixels, pyramid.radiosity.pixels);
     }
 }
 
