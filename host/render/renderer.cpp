@@ -188,11 +188,13 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     // alone, through the part of Rd it misses (docs/design.md §12).
     std::vector<FrameContext> runs, residual;
     runs.reserve(sm.slots());
+    const std::vector<FrameGraphId<SurfacePoints>> points = staging_.addSlotPoints(graph, ctx);
     const std::optional<RdPart> missed =
         scene.env ? method(opt.method, 0).missesResidual(opt) : std::nullopt;
     if (missed) residual.reserve(sm.slots());
     for (size_t k = 0; k < sm.slots(); ++k) {
         runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
+        runs[k].points = points[k];
         if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
         method(opt.method, k).addPasses(graph, runs[k]);
         if (!missed) continue;
