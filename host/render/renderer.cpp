@@ -87,7 +87,8 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
 
 }  // namespace
 
-Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
+Renderer::Renderer(const std::string& clDevice, const std::string& gl)
+    : gl_(parseGlChoice(gl)), cl_(clDevice) {}
 
 Renderer::~Renderer() = default;
 
@@ -214,6 +215,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.addStage("total", total.ms(), -1, totalCpu.ms());
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());
+    stats.set("gl_platform", gl_.platform());
     recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);
     return result;
 }

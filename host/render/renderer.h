@@ -34,8 +34,9 @@ struct FrameResult {
 
 class Renderer {
   public:
-    // clDevice: see ClRuntime. Throws tsis::Error when GL or OpenCL is missing.
-    explicit Renderer(const std::string& clDevice = "");
+    // clDevice: see ClRuntime; gl: "auto", "osmesa" or "egl" ("": $TSIS_GL,
+    // else auto; gl_context.h). Throws tsis::Error when GL or OpenCL is missing.
+    explicit Renderer(const std::string& clDevice = "", const std::string& gl = "");
     ~Renderer();
 
     FrameResult render(const Scene& scene, const RenderOptions& options);
@@ -44,6 +45,7 @@ class Renderer {
 
     ClRuntime& cl() { return cl_; }
     std::string glRenderer() const { return gl_.renderer(); }
+    std::string glPlatform() const { return gl_.platform(); }
 
   private:
     Method& method(const std::string& name, size_t slot);
