@@ -88,7 +88,10 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
 }  // namespace
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
-    : gl_(parseGlChoice(gl)), cl_(clDevice) {}
+    : gl_(parseGlChoice(gl)),
+      cl_(clDevice),
+      sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
+                                 clSharingSide(cl_.device()))) {}
 
 Renderer::~Renderer() = default;
 
@@ -216,6 +219,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());
     stats.set("gl_platform", gl_.platform());
+    stats.set("gl_cl_sharing", sharing_.reason);
     recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);
     return result;
 }

@@ -14,6 +14,7 @@
 #include "image/image_io.h"
 #include "render/accumulator.h"
 #include "render/frame_stats.h"
+#include "render/gl_cl_sharing.h"
 #include "render/gl_cl_staging.h"
 #include "render/method.h"
 #include "render/raster_passes.h"
@@ -60,6 +61,7 @@ class Renderer {
     ClRuntime cl_;
     RasterPasses raster_;
     GlClStaging staging_;
+    GlClSharing sharing_;  // decided, not yet used: staging_ copies (gl_cl_sharing.h)
     RadiosityAccumulator accumulator_;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
