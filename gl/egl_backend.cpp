@@ -72,8 +72,8 @@ std::vector<Candidate> candidates(const std::string& want, std::string& why) {
             EGLDisplay d = getDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
             if (d == EGL_NO_DISPLAY) continue;
             (isSoftware ? software : hardware)
-                .push_back({d, "egl-device",
-                            concat("device ", i, isSoftware ? " (software)" : "")});
+                .push_back(
+                    {d, "egl-device", concat("device ", i, isSoftware ? " (software)" : "")});
         }
         if (n == 0) why += "no EGL device; ";
     }
@@ -98,7 +98,8 @@ class EglBackend final : public GlBackend {
             if (reason.empty()) return;
             why += c.what + ": " + reason + "; ";
         }
-        if (why.size() >= 2 && why.compare(why.size() - 2, 2, "; ") == 0) why.resize(why.size() - 2);
+        if (why.size() >= 2 && why.compare(why.size() - 2, 2, "; ") == 0)
+            why.resize(why.size() - 2);
         fail("EGL: ", why);
     }
     ~EglBackend() override {

@@ -98,9 +98,13 @@ std::string GlContext::renderer() const {
     return glString(GL_RENDERER) + " / " + glString(GL_VERSION);
 }
 
-std::string GlContext::vendor() const { return glString(GL_VENDOR); }
+std::string GlContext::vendor() const {
+    return glString(GL_VENDOR);
+}
 
-std::string GlContext::platform() const { return backend_->platform(); }
+std::string GlContext::platform() const {
+    return backend_->platform();
+}
 
 int GlContext::maxTextureSize() const {
     GLint n = 0;

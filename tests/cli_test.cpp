@@ -257,10 +257,9 @@ TEST(Cli, RendersGltfAndGlbFiles) {
 TEST(Cli, HelpAndInfoCommands) {
     RunResult help = runTsis("render --help");
     EXPECT_EQ(help.exitCode, 0);
-    for (const char* opt :
-         {"--mesh", "--size-mm", "--material", "--sigma-s", "--light", "--samples", "--seed",
-          "--aov", "--stats", "--atlas-res", "--eye", "--fov", "--no-specular", "--cl-device",
-          "--gl"})
+    for (const char* opt : {"--mesh", "--size-mm", "--material", "--sigma-s", "--light",
+                            "--samples", "--seed", "--aov", "--stats", "--atlas-res", "--eye",
+                            "--fov", "--no-specular", "--cl-device", "--gl"})
         EXPECT_NE(help.out.find(opt), std::string::npos) << opt;
     RunResult mats = runTsis("materials");
     EXPECT_EQ(mats.exitCode, 0);

@@ -23,10 +23,10 @@
 
 #include "cli/args.h"
 #include "cli/scene_options.h"
+#include "gl/gl_context.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "render/frame_memory.h"
-#include "gl/gl_context.h"
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/memory.h"

@@ -11,9 +11,9 @@ const GlSharingSide kRadeonGl{"egl-device", "AMD",
                               "AMD Radeon RX 6800 (navi21, LLVM 15.0.6, DRM 3.49, 6.1.0)"};
 const GlSharingSide kLlvmpipeGl{"egl-device", "Mesa",
                                 "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa"};
-const ClSharingSide kNvidiaCl{"NVIDIA CUDA", "NVIDIA Corporation", "NVIDIA H200",
-                              "cl_khr_global_int32_base_atomics cl_khr_gl_sharing cl_nv_pragma_unroll",
-                              true};
+const ClSharingSide kNvidiaCl{
+    "NVIDIA CUDA", "NVIDIA Corporation", "NVIDIA H200",
+    "cl_khr_global_int32_base_atomics cl_khr_gl_sharing cl_nv_pragma_unroll", true};
 const ClSharingSide kRocmCl{"AMD Accelerated Parallel Processing", "Advanced Micro Devices, Inc.",
                             "gfx1030", "cl_khr_fp64 cl_khr_gl_sharing cl_amd_media_ops", true};
 const ClSharingSide kPoclCl{"Portable Computing Language", "The pocl project",
@@ -56,7 +56,8 @@ TEST(GlClSharing, ACpuDeviceDoesNotShareEvenOfTheGlVendor) {
 
 TEST(GlClSharing, WithoutTheExtensionNoSharing) {
     ClSharingSide cl = kNvidiaCl;
-    cl.extensions = "cl_khr_global_int32_base_atomics cl_khr_gl_sharing_ext";  // a word, not a prefix
+    cl.extensions =
+        "cl_khr_global_int32_base_atomics cl_khr_gl_sharing_ext";  // a word, not a prefix
     const GlClSharing s = chooseGlClSharing(kNvidiaGl, cl);
     EXPECT_FALSE(s.share);
     EXPECT_NE(s.reason.find("cl_khr_gl_sharing"), std::string::npos) << s.reason;
