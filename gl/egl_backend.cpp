@@ -103,6 +103,7 @@ class EglBackend final : public GlBackend {
         fail("EGL: ", why);
     }
     ~EglBackend() override {
+        eglBindAPI(EGL_OPENGL_API);  // eglGetCurrentContext answers for the bound API
         if (eglGetCurrentContext() == ctx_)
             eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, ctx_);
@@ -112,8 +113,14 @@ class EglBackend final : public GlBackend {
     EglBackend& operator=(const EglBackend&) = delete;
 
     void makeCurrent() override {
+        // The API is bound per thread: another thread may make this current.
+        eglBindAPI(EGL_OPENGL_API);
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_))
             fail("eglMakeCurrent failed (", eglErrorText(), ")");
+    }
+    void release() override {
+        eglBindAPI(EGL_OPENGL_API);
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     }
     GlProc proc(const char* name) const override { return eglGetProcAddress(name); }
     std::string platform() const override { return platform_; }

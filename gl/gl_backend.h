@@ -15,6 +15,10 @@ class GlBackend {
     virtual ~GlBackend() = default;
     // Throws tsis::Error with the reason when the platform refuses.
     virtual void makeCurrent() = 0;
+    // Leaves the thread with no context of this platform current. EGL and
+    // OSMesa each think theirs still current after the other's MakeCurrent,
+    // and EGL then skips re-binding it; so a switch releases the old first.
+    virtual void release() = 0;
     virtual GlProc proc(const char* name) const = 0;
     // "osmesa", "egl-device" or "egl-surfaceless".
     virtual std::string platform() const = 0;

@@ -14,6 +14,15 @@ GlProc loadFrom(const char* name, void* backend) {
     return static_cast<const GlBackend*>(backend)->proc(name);
 }
 
+// The backend whose context is current on this thread (GlBackend::release).
+thread_local GlBackend* tCurrentBackend = nullptr;
+
+void releaseCurrent() {
+    if (tCurrentBackend) tCurrentBackend->release();
+    tCurrentBackend = nullptr;
+    tCurrentGl = nullptr;
+}
+
 }  // namespace
 
 GlChoice parseGlChoice(const std::string& text) {
@@ -42,6 +51,7 @@ GlContext::GlContext(GlChoice choice) {
     if (const char* env = std::getenv("TSIS_NO_GL"); env && *env && *env != '0')
         fail("no GL context: disabled by TSIS_NO_GL");
     const std::string eglOnly = eglPlatformFromEnv();
+    releaseCurrent();  // the new context becomes current
     try {
         switch (choice) {
             case GlChoice::OsMesa:
@@ -69,19 +79,22 @@ GlContext::GlContext(GlChoice choice) {
     }
     if (const char* missing = loadGlFunctions(gl_, loadFrom, backend_.get()))
         fail("no GL context: ", backend_->platform(), " has no ", missing);
+    tCurrentBackend = backend_.get();
     tCurrentGl = &gl_;
 }
 
 GlContext::~GlContext() {
-    if (tCurrentGl == &gl_) tCurrentGl = nullptr;
+    if (tCurrentBackend == backend_.get()) releaseCurrent();
 }
 
 void GlContext::makeCurrent() {
+    if (tCurrentBackend != backend_.get()) releaseCurrent();
     try {
         backend_->makeCurrent();
     } catch (const Error& e) {
         fail("no GL context: ", e.what());
     }
+    tCurrentBackend = backend_.get();
     tCurrentGl = &gl_;
 }
 

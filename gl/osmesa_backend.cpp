@@ -38,6 +38,7 @@ class OsMesaBackend final : public GlBackend {
         if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
             fail("OSMesaMakeCurrent failed");
     }
+    void release() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
     GlProc proc(const char* name) const override { return OSMesaGetProcAddress(name); }
     std::string platform() const override { return "osmesa"; }
 

@@ -93,7 +93,14 @@ Renderer::Renderer(const std::string& clDevice, const std::string& gl)
       sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
                                  clSharingSide(cl_.device()))) {}
 
-Renderer::~Renderer() = default;
+// The passes free their GL objects in this renderer's context, whichever
+// renderer of the thread drew last.
+Renderer::~Renderer() {
+    try {
+        gl_.makeCurrent();
+    } catch (const Error&) {  // a lost context: nothing to free it in
+    }
+}
 
 Method& Renderer::method(const std::string& name, size_t slot) {
     // One instance per material slot: each keeps the tables of its own profile.
@@ -151,6 +158,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
+    gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
