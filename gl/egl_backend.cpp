@@ -15,6 +15,7 @@
 
 #include "gl/gl_backend.h"
 #include "util/error.h"
+#include "util/loaded_libraries.h"
 
 namespace tsis {
 
@@ -172,6 +173,10 @@ class EglBackend final : public GlBackend {
             return e;
         }
         ctx_ = ctx;
+        // GLVND unloads its vendors at exit: keep them mapped, so what Mesa
+        // keeps for the process stays reachable (util/loaded_libraries.h).
+        static std::once_flag once;
+        std::call_once(once, keepLoadedLibrariesMapped);
         return "";
     }
 
