@@ -196,7 +196,7 @@ class EglBackend final : public GlBackend {
 
 std::string eglPlatformFromEnv() {
     const char* env = std::getenv("TSIS_EGL_PLATFORM");
-    const std::string v = env ? env : "";
+    std::string v = env ? env : "";
     if (!v.empty() && v != "device" && v != "surfaceless")
         fail("TSIS_EGL_PLATFORM=", v, ": expected device or surfaceless");
     return v;
