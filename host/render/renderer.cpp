@@ -87,9 +87,20 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
 
 }  // namespace
 
-Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
+Renderer::Renderer(const std::string& clDevice, const std::string& gl)
+    : gl_(parseGlChoice(gl)),
+      cl_(clDevice),
+      sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
+                                 clSharingSide(cl_.device()))) {}
 
-Renderer::~Renderer() = default;
+// The passes free their GL objects in this renderer's context, whichever
+// renderer of the thread drew last.
+Renderer::~Renderer() {
+    try {
+        gl_.makeCurrent();
+    } catch (const Error&) {  // a lost context: nothing to free it in
+    }
+}
 
 Method& Renderer::method(const std::string& name, size_t slot, const char* role) {
     // One instance per material slot and role: each keeps the tables of its
@@ -148,6 +159,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
+    gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
@@ -229,6 +241,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.addStage("total", total.ms(), -1, totalCpu.ms());
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());
+    stats.set("gl_platform", gl_.platform());
+    stats.set("gl_cl_sharing", sharing_.reason);
     recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);
     return result;
 }

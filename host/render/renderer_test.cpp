@@ -65,6 +65,24 @@ TEST(Renderer, LightViewMethodsUnderASunlessSkyAreTheResidualsRun) {
     }
 }
 
+// Renderers of both GL platforms on one thread take turns (each frame makes
+// its own context current) and one going away leaves the other drawing.
+TEST(Renderer, RenderersOnOneThreadTakeTurns) {
+    const Scene scene =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    RenderOptions opt = test::smallOptions(48, 256, 256);
+    opt.method = "pyramid";
+    Renderer a("", "egl");
+    const FrameResult first = a.render(scene, opt);
+    {
+        Renderer b("", "osmesa");
+        EXPECT_EQ(b.render(scene, opt).rgb8, first.rgb8);
+        EXPECT_EQ(a.render(scene, opt).rgb8, first.rgb8);
+        EXPECT_EQ(b.render(scene, opt).rgb8, first.rgb8);
+    }
+    EXPECT_EQ(a.render(scene, opt).rgb8, first.rgb8);
+}
+
 // Light maps of 2048² only for objects many diffusion lengths across, where
 // the shadow edges stay sharp in B; the frame reports the one it used.
 TEST(Renderer, LightResolutionFollowsTheObjectsSizeInDiffusionLengths) {
