@@ -19,7 +19,7 @@ cd "$(dirname "$0")"
 PACKAGES=(
   build-essential cmake pkg-config ca-certificates
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
-  libosmesa6-dev libglm-dev libopenimageio-dev openimageio-tools
+  libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev libopenimageio-dev openimageio-tools
   libcgal-dev libeigen3-dev libcgal-demo libtinygltf-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   libglfw3-dev libimgui-dev xvfb xauth

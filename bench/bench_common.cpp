@@ -88,7 +88,8 @@ std::string machineLine(Renderer& renderer) {
         }
     std::ostringstream s;
     s << model << ", " << std::thread::hardware_concurrency() << " cores; OpenCL "
-      << renderer.cl().deviceName() << "; GL " << renderer.glRenderer();
+      << renderer.cl().deviceName() << "; GL " << renderer.glRenderer() << " ("
+      << renderer.glPlatform() << ")";
     return s.str();
 }
 

@@ -1,9 +1,67 @@
-// The one place that includes the OpenGL headers. OSMesa's library exports the
-// core-profile entry points directly, so no loader is needed.
+// The one place that includes the OpenGL headers: the core-profile types and
+// enums (GL/glcorearb.h, no prototypes) and every glName tsis calls as the
+// entry of the current context's table (gl/gl_functions.h). One list of names
+// is there; this file maps each (a macro cannot be made from the X-list).
 #pragma once
 
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES
-#endif
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "gl/gl_functions.h"
+
+#define glActiveTexture (::tsis::tCurrentGl->ActiveTexture)
+#define glAttachShader (::tsis::tCurrentGl->AttachShader)
+#define glBindBuffer (::tsis::tCurrentGl->BindBuffer)
+#define glBindFramebuffer (::tsis::tCurrentGl->BindFramebuffer)
+#define glBindTexture (::tsis::tCurrentGl->BindTexture)
+#define glBindVertexArray (::tsis::tCurrentGl->BindVertexArray)
+#define glBufferData (::tsis::tCurrentGl->BufferData)
+#define glCheckFramebufferStatus (::tsis::tCurrentGl->CheckFramebufferStatus)
+#define glClearBufferfv (::tsis::tCurrentGl->ClearBufferfv)
+#define glCompileShader (::tsis::tCurrentGl->CompileShader)
+#define glCopyImageSubData (::tsis::tCurrentGl->CopyImageSubData)
+#define glCreateProgram (::tsis::tCurrentGl->CreateProgram)
+#define glCreateShader (::tsis::tCurrentGl->CreateShader)
+#define glDeleteBuffers (::tsis::tCurrentGl->DeleteBuffers)
+#define glDeleteFramebuffers (::tsis::tCurrentGl->DeleteFramebuffers)
+#define glDeleteProgram (::tsis::tCurrentGl->DeleteProgram)
+#define glDeleteShader (::tsis::tCurrentGl->DeleteShader)
+#define glDeleteTextures (::tsis::tCurrentGl->DeleteTextures)
+#define glDeleteVertexArrays (::tsis::tCurrentGl->DeleteVertexArrays)
+#define glDepthFunc (::tsis::tCurrentGl->DepthFunc)
+#define glDisable (::tsis::tCurrentGl->Disable)
+#define glDrawArrays (::tsis::tCurrentGl->DrawArrays)
+#define glDrawBuffer (::tsis::tCurrentGl->DrawBuffer)
+#define glDrawBuffers (::tsis::tCurrentGl->DrawBuffers)
+#define glDrawElements (::tsis::tCurrentGl->DrawElements)
+#define glEnable (::tsis::tCurrentGl->Enable)
+#define glEnableVertexAttribArray (::tsis::tCurrentGl->EnableVertexAttribArray)
+#define glFinish (::tsis::tCurrentGl->Finish)
+#define glFramebufferTexture2D (::tsis::tCurrentGl->FramebufferTexture2D)
+#define glGenBuffers (::tsis::tCurrentGl->GenBuffers)
+#define glGenFramebuffers (::tsis::tCurrentGl->GenFramebuffers)
+#define glGenTextures (::tsis::tCurrentGl->GenTextures)
+#define glGenVertexArrays (::tsis::tCurrentGl->GenVertexArrays)
+#define glGetError (::tsis::tCurrentGl->GetError)
+#define glGetIntegerv (::tsis::tCurrentGl->GetIntegerv)
+#define glGetProgramInfoLog (::tsis::tCurrentGl->GetProgramInfoLog)
+#define glGetProgramiv (::tsis::tCurrentGl->GetProgramiv)
+#define glGetShaderInfoLog (::tsis::tCurrentGl->GetShaderInfoLog)
+#define glGetShaderiv (::tsis::tCurrentGl->GetShaderiv)
+#define glGetString (::tsis::tCurrentGl->GetString)
+#define glGetUniformLocation (::tsis::tCurrentGl->GetUniformLocation)
+#define glLinkProgram (::tsis::tCurrentGl->LinkProgram)
+#define glPixelStorei (::tsis::tCurrentGl->PixelStorei)
+#define glProgramUniform1f (::tsis::tCurrentGl->ProgramUniform1f)
+#define glProgramUniform1i (::tsis::tCurrentGl->ProgramUniform1i)
+#define glProgramUniform2fv (::tsis::tCurrentGl->ProgramUniform2fv)
+#define glProgramUniform3fv (::tsis::tCurrentGl->ProgramUniform3fv)
+#define glProgramUniformMatrix3fv (::tsis::tCurrentGl->ProgramUniformMatrix3fv)
+#define glProgramUniformMatrix4fv (::tsis::tCurrentGl->ProgramUniformMatrix4fv)
+#define glReadBuffer (::tsis::tCurrentGl->ReadBuffer)
+#define glReadPixels (::tsis::tCurrentGl->ReadPixels)
+#define glShaderSource (::tsis::tCurrentGl->ShaderSource)
+#define glTexParameteri (::tsis::tCurrentGl->TexParameteri)
+#define glTexStorage2D (::tsis::tCurrentGl->TexStorage2D)
+#define glTexStorage3D (::tsis::tCurrentGl->TexStorage3D)
+#define glTexSubImage2D (::tsis::tCurrentGl->TexSubImage2D)
+#define glUseProgram (::tsis::tCurrentGl->UseProgram)
+#define glVertexAttribPointer (::tsis::tCurrentGl->VertexAttribPointer)
+#define glViewport (::tsis::tCurrentGl->Viewport)

@@ -1,49 +1,122 @@
 #include "gl/gl_context.h"
 
-#include <GL/osmesa.h>
-
 #include <cstdlib>
 
 #include "gl/gl.h"
+#include "gl/gl_backend.h"
 #include "util/error.h"
 
 namespace tsis {
 
-GlContext::GlContext() : dummy_(4) {
+namespace {
+
+GlProc loadFrom(const char* name, void* backend) {
+    return static_cast<const GlBackend*>(backend)->proc(name);
+}
+
+// The backend whose context is current on this thread (GlBackend::release).
+thread_local GlBackend* tCurrentBackend = nullptr;
+
+void releaseCurrent() {
+    if (tCurrentBackend) tCurrentBackend->release();
+    tCurrentBackend = nullptr;
+    tCurrentGl = nullptr;
+}
+
+}  // namespace
+
+GlChoice parseGlChoice(const std::string& text) {
+    const char* env = std::getenv("TSIS_GL");
+    const bool fromEnv = text.empty() && env && *env;
+    const std::string v = fromEnv ? env : text;
+    if (v.empty() || v == "auto") return GlChoice::Auto;
+    if (v == "osmesa") return GlChoice::OsMesa;
+    if (v == "egl") return GlChoice::Egl;
+    fail(fromEnv ? "TSIS_GL=" : "--gl ", v, ": expected auto, osmesa or egl");
+}
+
+const char* glChoiceName(GlChoice c) {
+    switch (c) {
+        case GlChoice::OsMesa:
+            return "osmesa";
+        case GlChoice::Egl:
+            return "egl";
+        case GlChoice::Auto:
+            break;
+    }
+    return "auto";
+}
+
+GlContext::GlContext(GlChoice choice) {
     if (const char* env = std::getenv("TSIS_NO_GL"); env && *env && *env != '0')
         fail("no GL context: disabled by TSIS_NO_GL");
-    const int attribs[] = {OSMESA_FORMAT,
-                           OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS,
-                           0,
-                           OSMESA_PROFILE,
-                           OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION,
-                           4,
-                           OSMESA_CONTEXT_MINOR_VERSION,
-                           5,
-                           0};
-    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-    if (!ctx) fail("no GL context: OSMesa could not create an OpenGL 4.5 core context");
-    ctx_ = ctx;
-    makeCurrent();
+    const std::string eglOnly = eglPlatformFromEnv();
+    releaseCurrent();  // the new context becomes current
+    try {
+        switch (choice) {
+            case GlChoice::OsMesa:
+                backend_ = makeOsMesaBackend();
+                break;
+            case GlChoice::Egl:
+                backend_ = makeEglBackend(eglOnly);
+                break;
+            case GlChoice::Auto:
+                // EGL first (a GPU where there is one); OSMesa when EGL gives
+                // no context, with both reasons when neither does.
+                try {
+                    backend_ = makeEglBackend(eglOnly);
+                } catch (const Error& egl) {
+                    try {
+                        backend_ = makeOsMesaBackend();
+                    } catch (const Error& osmesa) {
+                        fail(egl.what(), "; OSMesa: ", osmesa.what());
+                    }
+                }
+                break;
+        }
+    } catch (const Error& e) {
+        fail("no GL context: ", e.what());
+    }
+    if (const char* missing = loadGlFunctions(gl_, loadFrom, backend_.get()))
+        fail("no GL context: ", backend_->platform(), " has no ", missing);
+    tCurrentBackend = backend_.get();
+    tCurrentGl = &gl_;
 }
 
 GlContext::~GlContext() {
-    if (ctx_) OSMesaDestroyContext(static_cast<OSMesaContext>(ctx_));
+    if (tCurrentBackend == backend_.get()) releaseCurrent();
 }
 
 void GlContext::makeCurrent() {
-    if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), dummy_.data(), GL_UNSIGNED_BYTE, 1, 1))
-        fail("no GL context: OSMesaMakeCurrent failed");
+    if (tCurrentBackend != backend_.get()) releaseCurrent();
+    try {
+        backend_->makeCurrent();
+    } catch (const Error& e) {
+        fail("no GL context: ", e.what());
+    }
+    tCurrentBackend = backend_.get();
+    tCurrentGl = &gl_;
 }
 
+namespace {
+
+std::string glString(GLenum e) {
+    const GLubyte* s = glGetString(e);
+    return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+}
+
+}  // namespace
+
 std::string GlContext::renderer() const {
-    auto str = [](GLenum e) {
-        const GLubyte* s = glGetString(e);
-        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
-    };
-    return str(GL_RENDERER) + " / " + str(GL_VERSION);
+    return glString(GL_RENDERER) + " / " + glString(GL_VERSION);
+}
+
+std::string GlContext::vendor() const {
+    return glString(GL_VENDOR);
+}
+
+std::string GlContext::platform() const {
+    return backend_->platform();
 }
 
 int GlContext::maxTextureSize() const {

@@ -174,7 +174,8 @@ PYBIND11_MODULE(tsis, m) {
         .def_property_readonly("triangle_count", &Scene::triangleCount);
 
     py::class_<Renderer>(m, "Renderer")
-        .def(py::init<const std::string&>(), py::arg("cl_device") = "")
+        .def(py::init<const std::string&, const std::string&>(), py::arg("cl_device") = "",
+             py::arg("gl") = "")
         .def("render", &renderFrame, py::arg("scene"),
              "a frame: image (H×W×3 uint8), radiance, radiosity, position, normal, coverage, "
              "flux_atlas (float32, row 0 = top), lavg, stats (dict); options as `tsis render`");

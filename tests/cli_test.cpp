@@ -117,6 +117,10 @@ const BadInput kBadInputs[] = {
     {"UnknownOption", "render --sampels 10", "", "--sampels"},
     {"UnknownMethod", "render --method magic", "", "magic"},
     {"NoGlContext", "render " + kFast, "TSIS_NO_GL=1", "no GL context"},
+    {"BadGl", "render --gl vulkan", "", "--gl vulkan: expected auto, osmesa or egl"},
+    // GLVND's libEGL with no vendor: EGL forced has nothing to fall back to.
+    {"NoEglVendor", "render --gl egl " + kFast, "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json",
+     "no GL context: EGL: "},
     {"NoOpenClDevice", "render " + kFast,
      "OCL_ICD_VENDORS=/nonexistent OCL_ICD_FILENAMES=", "no OpenCL device"},
     {"NoSuchClDevice", "render " + kFast + "--cl-device no-such-gpu", "", "no-such-gpu"},
@@ -253,9 +257,9 @@ TEST(Cli, RendersGltfAndGlbFiles) {
 TEST(Cli, HelpAndInfoCommands) {
     RunResult help = runTsis("render --help");
     EXPECT_EQ(help.exitCode, 0);
-    for (const char* opt :
-         {"--mesh", "--size-mm", "--material", "--sigma-s", "--light", "--samples", "--seed",
-          "--aov", "--stats", "--atlas-res", "--eye", "--fov", "--no-specular", "--cl-device"})
+    for (const char* opt : {"--mesh", "--size-mm", "--material", "--sigma-s", "--light",
+                            "--samples", "--seed", "--aov", "--stats", "--atlas-res", "--eye",
+                            "--fov", "--no-specular", "--cl-device", "--gl"})
         EXPECT_NE(help.out.find(opt), std::string::npos) << opt;
     RunResult mats = runTsis("materials");
     EXPECT_EQ(mats.exitCode, 0);

@@ -83,6 +83,10 @@ TEST(Materials, EachObjectScattersWithItsOwnMaterialInEveryMethod) {
         // fluxes differ (η): their noise moves — by no more than it moves
         // with the seed.
         double left = 1e-4, right = 1e-4;
+        // pyramid: each run's sparse grid is planned over its own points, so
+        // beside the other cube it evaluates pixels the one-material frame
+        // interpolates (measured 8.0e-4).
+        if (method == "pyramid") left = right = 2e-3;
         if (method == "tsis" || method == "hybrid" || method == "mis") {
             RenderOptions other = opt;
             other.seed = opt.seed + 1;

@@ -22,12 +22,12 @@ Image fromInternal(ImageF&& image) {
 }  // namespace
 
 struct Renderer::Impl {
-    explicit Impl(const std::string& clDevice) : renderer(clDevice) {}
+    Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {}
     tsis::Renderer renderer;
 };
 
-Renderer::Renderer(const std::string& clDevice)
-    : impl_(guarded([&] { return std::make_unique<Impl>(clDevice); })) {}
+Renderer::Renderer(const std::string& clDevice, const std::string& gl)
+    : impl_(guarded([&] { return std::make_unique<Impl>(clDevice, gl); })) {}
 
 Renderer::~Renderer() = default;
 

@@ -113,7 +113,12 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     // One progress line for the whole build: segmentation (CGAL, no progress of
     // its own) to 40%, charts to 90%, packing and the output mesh to 100%.
     Progress progress("atlas", 1000);
-    std::vector<int> labels = segmentVSA(mesh, adj.usable, proxies);
+    // Segmentation and flattening see the smoothed copy of a noisy scan
+    // (smooth.cpp); the output keeps the mesh's own positions.
+    int smoothing = 0;
+    const Mesh shape = chartingShape(mesh, adj, &smoothing);
+    if (debug) std::fprintf(stderr, "atlas smoothing: %d λ|μ steps\n", smoothing);
+    std::vector<int> labels = segmentVSA(shape, adj.usable, proxies);
     stage("segmented");
     progress.update(400);
     if (labels.empty()) labels = patchLabels(adj, facesPerProxy);
@@ -125,16 +130,18 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
         const double finer = double(facesPerProxy) / std::max(1, opt.trianglesPerProxy);
         borderRadius = std::clamp(int(std::lround(std::sqrt(finer))), 1, kMaxBorderRadius);
     }
-    smoothLabels(mesh, adj, labels, std::max(1, facesPerProxy / 10), borderRadius);
+    smoothLabels(shape, adj, labels, std::max(1, facesPerProxy / 10), borderRadius);
     stage("labels smoothed");
 
     ChartOptions copt;
     copt.maxDistortion = opt.maxChartDistortion;
     copt.threads = opt.threads;
     copt.onProgress = [&](double f) { progress.update(400 + (long long)(500 * f)); };
-    std::vector<Chart> charts = makeCharts(mesh, adj, labels, copt);
+    std::vector<Chart> charts = makeCharts(shape, adj, labels, copt);
     stage("charts parameterised");
+    if (debug) std::fprintf(stderr, "atlas charts: %zu\n", charts.size());
     splitElongatedCharts(charts, kMaxChartAspect);
+    if (debug) std::fprintf(stderr, "atlas charts after elongation splits: %zu\n", charts.size());
 
     std::vector<PackChart> packIn;
     packIn.reserve(charts.size());

@@ -2,6 +2,9 @@
 // integral over the surface becomes an integral over texture space (docs/design.md §1).
 //
 // Pipeline of buildAtlas (host/atlas/atlas.cpp):
+//   shape     a noisy scan (median angle between neighbouring faces > 20°) is
+//             segmented and flattened as a smoothed copy (Taubin λ|μ, same
+//             connectivity; chart.h, smooth.cpp); the output keeps its positions;
 //   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200)
 //             up to a cap (AtlasOptions); labels smoothed (edge and vertex-ring
 //             majority filters; under the cap also a strict majority over up to

@@ -45,6 +45,17 @@ struct ChartMesh {
 // `proxies` connected components (VSA would cost components × faces).
 std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, int proxies);
 
+// smooth.cpp — the shape charts are made of. A mesh whose median angle
+// between neighbouring faces exceeds kRoughDihedralDegrees (a noisy scan;
+// the data meshes: 3–12°) is charted on a copy smoothed by Taubin's λ|μ steps
+// (same connectivity) until that median is at most kSmoothDihedralDegrees;
+// other meshes as they are. `iterations`: the λ|μ pairs applied.
+constexpr double kRoughDihedralDegrees = 20;
+constexpr double kSmoothDihedralDegrees = 10;
+constexpr int kMaxSmoothingIterations = 64;
+double medianDihedralDegrees(const Mesh& mesh, const Adjacency& adj);
+Mesh chartingShape(const Mesh& mesh, const Adjacency& adj, int* iterations = nullptr);
+
 // parameterize.cpp — ARAP (λ = 1000) of a disk. Returns false (with a reason)
 // when CGAL reports an error; the result is not validated here.
 bool parameterizeARAP(const ChartMesh& chart, std::vector<glm::dvec2>& uv, std::string* why);

@@ -23,6 +23,7 @@
 
 #include "cli/args.h"
 #include "cli/scene_options.h"
+#include "gl/gl_context.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "render/frame_memory.h"
@@ -107,6 +108,8 @@ int runAnimate(const std::vector<std::string>& argv) {
     }
     Scene base = parseScene(args);
     const RenderOptions options = renderOptionsFromArgs(args);
+    const std::string gl = args.getString("gl", "");
+    parseGlChoice(gl);
     requireFrameMemory(options);
     const auto statsPath = args.value("stats");
 
@@ -129,7 +132,7 @@ int runAnimate(const std::vector<std::string>& argv) {
 
     loadSceneMesh(base, args);
     Scene scene = base;
-    Renderer renderer(args.getString("cl-device", ""));
+    Renderer renderer(args.getString("cl-device", ""), gl);
     Progress progress("animate", frames);
     Json perFrame = Json::array();
     std::vector<double> ms;

@@ -12,6 +12,7 @@
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
 #include "cli/view_command.h"
+#include "gl/gl_context.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "physics/report.h"
@@ -86,6 +87,8 @@ int runRender(const std::vector<std::string>& argv) {
     // (slow) mesh, GL and CL: a mistake costs no waiting.
     Scene scene = parseScene(args);
     RenderOptions options = renderOptionsFromArgs(args);
+    const std::string gl = args.getString("gl", "");
+    parseGlChoice(gl);
     const auto aovDir = args.value("aov");
     options.keepAovs = aovDir.has_value();
     options.progressive = args.flag("progressive");
@@ -100,7 +103,7 @@ int runRender(const std::vector<std::string>& argv) {
     if (statsPath) outputs.add(*statsPath, ".json");
 
     loadSceneMesh(scene, args);
-    Renderer renderer(args.getString("cl-device", ""));
+    Renderer renderer(args.getString("cl-device", ""), gl);
     FrameResult frame = renderer.render(scene, options);
     for (int i = 1; i < frames; ++i) frame = renderer.render(scene, options);
 

@@ -82,6 +82,10 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
                  byDefault(sd.atlasMode)},
             {"cl-device", true, false,
              "SUBSTR  OpenCL device (default: $TSIS_CL_DEVICE, else PoCL)"},
+            {"gl", true, false,
+             "API  OpenGL through egl (headless: a GPU, or Mesa's software device), osmesa, "
+             "or auto: egl when it gives a context, else osmesa (default: $TSIS_GL, else "
+             "auto)"},
         };
         std::string methods;
         for (const std::string& m : methodNames()) methods += (methods.empty() ? "" : ", ") + m;

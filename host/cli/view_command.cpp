@@ -12,6 +12,7 @@
 
 #include "cli/args.h"
 #include "cli/scene_options.h"
+#include "gl/gl_context.h"
 #include "util/error.h"
 #include "util/output_set.h"
 #include "view/viewer.h"
@@ -67,6 +68,8 @@ int runView(const std::vector<std::string>& argv) {
     s.camera = s.home = scene.camera;
     s.options = renderOptionsFromArgs(args);
     config.clDevice = args.getString("cl-device", "");
+    config.gl = args.getString("gl", "");
+    parseGlChoice(config.gl);  // a bad --gl fails before the window opens
     // Every mesh the window opens is turned, its normals and its atlas made alike.
     const MeshOptions meshOptions = meshOptionsFromArgs(args);
     // The start-up mesh's file places the camera (as in tsis render); a mesh

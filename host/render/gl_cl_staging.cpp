@@ -25,6 +25,7 @@ void upload(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float
 
 void GlClStaging::declare(FrameGraph& graph, FrameContext& ctx) {
     ctx.fluxAtlas = graph.create<AtlasCl>("flux_atlas_cl");
+    ctx.residualFluxAtlas = graph.create<AtlasCl>("residual_flux_atlas_cl");
     ctx.positionAtlas = graph.create<AtlasCl>("position_atlas_cl");
     ctx.normalAtlas = graph.create<AtlasCl>("normal_atlas_cl");
     ctx.points = graph.create<SurfacePoints>("points_cl");
@@ -63,6 +64,9 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
     // (position; normal, w = texel area) only with the mesh or resolution.
     addAtlasUpload(graph, ctx, "gl_to_cl_flux_atlas", gl.fluxAtlas, 0, fluxAtlas_, fluxUploaded_,
                    ctx.fluxAtlas);
+    if (ctx.scene->env)
+        addAtlasUpload(graph, ctx, "gl_to_cl_residual_flux_atlas", gl.residualFluxAtlas, 0,
+                       residualFluxAtlas_, residualUploaded_, ctx.residualFluxAtlas);
     addAtlasUpload(graph, ctx, "gl_to_cl_position_atlas", gl.geometryAtlas, 0, positionAtlas_,
                    positionUploaded_, ctx.positionAtlas);
     addAtlasUpload(graph, ctx, "gl_to_cl_normal_atlas", gl.geometryAtlas, 1, normalAtlas_,
@@ -161,41 +165,98 @@ FrameGraphId<RadiosityCl> GlClStaging::declareRadiosity(FrameGraph& graph, size_
                                      RadiosityCl{slotRadiosity_[slot - 1].get()});
 }
 
+std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& graph,
+                                                                    const FrameContext& ctx) {
+    const size_t slots = ctx.media->slots();
+    if (slots == 1) return {ctx.points};
+    std::vector<FrameGraphId<SurfacePoints>> out;
+    for (size_t k = 0; k < slots; ++k)
+        out.push_back(graph.create<SurfacePoints>(concat("points_cl_", k)));
+    while (slotXyz_.size() < slots) slotXyz_.push_back(std::make_unique<GrowingBuffer>());
+    graph.addPass(
+        "split_points",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.points);
+            for (const auto& h : out) b.write(h);
+        },
+        [this, &ctx, out, slots](FrameGraph::Resources& res) {
+            const SurfacePoints& all = res.read(ctx.points);
+            // Split again only for a new G-buffer (the points' version) or
+            // another assignment of media to slots.
+            if (slotPointsOf_ != pointsOf_ || slotOfMedium_ != ctx.media->slotOfMedium ||
+                slotPoints_.size() != slots) {
+                slotPoints_.assign(slots, SurfacePoints());
+                for (size_t i = 0; i < static_cast<size_t>(all.count); ++i) {
+                    SurfacePoints& p = slotPoints_[ctx.media->slotOfTag(all.host[i * 4 + 3])];
+                    p.pixel.push_back(all.pixel[i]);
+                    p.host.insert(p.host.end(), all.host.begin() + static_cast<long>(i * 4),
+                                  all.host.begin() + static_cast<long>(i * 4 + 4));
+                    if (!all.exitAlbedo.empty())
+                        p.exitAlbedo.insert(p.exitAlbedo.end(),
+                                            all.exitAlbedo.begin() + static_cast<long>(i * 3),
+                                            all.exitAlbedo.begin() + static_cast<long>(i * 3 + 3));
+                }
+                long long bytes = 0;
+                for (size_t k = 0; k < slots; ++k) {
+                    SurfacePoints& p = slotPoints_[k];
+                    p.count = static_cast<int>(p.pixel.size());
+                    p.xyz = slotXyz_[k]->reserve(
+                        ctx.cl->context(), std::max<size_t>(p.host.size(), 4) * sizeof(float));
+                    upload(ctx.cl->queue(), p.xyz, p.host);
+                    bytes += bytesOf(p.host);
+                }
+                res.addBytes(bytes);
+                slotPointsOf_ = pointsOf_;
+                slotOfMedium_ = ctx.media->slotOfMedium;
+            }
+            for (size_t k = 0; k < slots; ++k) res.write(out[k]) = slotPoints_[k];
+        });
+    return out;
+}
+
 FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph,
-                                                      const std::vector<FrameContext>& runs) {
+                                                      const std::vector<FrameContext>& runs,
+                                                      const std::vector<FrameContext>& residual) {
+    TSIS_CHECK(residual.empty() || residual.size() == runs.size());
     const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
-    const FrameContext& ctx = runs.front();
     graph.addPass(
         "read_radiosity",
         [&](FrameGraph::Builder& b) {
-            b.read(ctx.points);
+            for (const FrameContext& run : runs) b.read(run.points);
             for (const FrameContext& run : runs) b.read(run.radiosity);
+            for (const FrameContext& run : residual) b.read(run.radiosity);
             b.write(image);
         },
-        [&runs, image](FrameGraph::Resources& res) {
+        [&runs, &residual, image](FrameGraph::Resources& res) {
             const FrameContext& ctx = runs.front();
-            const SurfacePoints& points = res.read(ctx.points);
-            const size_t count = static_cast<size_t>(points.count);
-            // Each run's B of every point; a point keeps its medium's run.
-            std::vector<std::vector<float>> packed(runs.size());
-            for (size_t k = 0; k < runs.size(); ++k) {
-                packed[k].resize(count * 4);
-                if (count > 0)
-                    ctx.cl->queue().enqueueReadBuffer(res.read(runs[k].radiosity).storage->buffer,
-                                                      CL_TRUE, 0, count * 4 * sizeof(float),
-                                                      packed[k].data());
-                res.addBytes(bytesOf(packed[k]));
-            }
             std::vector<float>& rgba = res.write(image).rgba;
             rgba.assign(static_cast<size_t>(ctx.width) * ctx.height * 4, 0.0f);
-            for (size_t k = 0; k < count; ++k) {
-                const size_t slot =
-                    runs.size() == 1 ? 0 : ctx.media->slotOfTag(points.host[k * 4 + 3]);
-                const float* b = &packed[slot][k * 4];
-                float* out = &rgba[static_cast<size_t>(points.pixel[k]) * 4];
-                for (int c = 0; c < 3; ++c)
-                    out[c] = points.exitAlbedo.empty() ? b[c] : b[c] * points.exitAlbedo[k * 3 + c];
-                out[3] = 1.0f;
+            // Each run's B of its points (plus the residual's).
+            for (size_t k = 0; k < runs.size(); ++k) {
+                const SurfacePoints& points = res.read(runs[k].points);
+                const size_t count = static_cast<size_t>(points.count);
+                auto read = [&](const FrameContext& run) {
+                    std::vector<float> b(count * 4);
+                    if (count > 0)
+                        ctx.cl->queue().enqueueReadBuffer(res.read(run.radiosity).storage->buffer,
+                                                          CL_TRUE, 0, count * 4 * sizeof(float),
+                                                          b.data());
+                    res.addBytes(bytesOf(b));
+                    return b;
+                };
+                std::vector<float> b = read(runs[k]);
+                if (!residual.empty()) {
+                    const std::vector<float> r = read(residual[k]);
+                    for (size_t i = 0; i < r.size(); ++i) b[i] += r[i];
+                }
+                for (size_t i = 0; i < count; ++i) {
+                    float* out = &rgba[static_cast<size_t>(points.pixel[i]) * 4];
+                    for (int c = 0; c < 3; ++c)
+                        out[c] = points.exitAlbedo.empty()
+                                     ? b[i * 4 + c]
+                                     : b[i * 4 + c] * points.exitAlbedo[i * 3 + c];
+                    out[3] = 1.0f;
+                }
             }
         });
     return image;

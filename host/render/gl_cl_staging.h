@@ -25,11 +25,17 @@ class GlClStaging {
     // The radiosity of the method's run for material slot `slot` > 0 (slot 0
     // writes ctx.radiosity of declare).
     FrameGraphId<RadiosityCl> declareRadiosity(FrameGraph& graph, size_t slot);
-    // The methods' radiosity, back into a width×height image: each point's
-    // from the run of its medium's material (runs[slot], render/scene_media.h),
-    // times its albedo's exit factor.
+    // ctx.points split by material slot (render/scene_media.h), one handle a
+    // slot: each run of the method computes its own medium's points only.
+    // With one slot, ctx.points itself.
+    std::vector<FrameGraphId<SurfacePoints>> addSlotPoints(FrameGraph& graph,
+                                                           const FrameContext& ctx);
+    // The methods' radiosity, back into a width×height image: each run's
+    // points' (its slot's, addSlotPoints) times their albedo's exit factor. `residual`, empty or
+    // one per run: B that the environment's residual adds to each run (Renderer::render).
     FrameGraphId<RadiosityImage> addReadback(FrameGraph& graph,
-                                             const std::vector<FrameContext>& runs);
+                                             const std::vector<FrameContext>& runs,
+                                             const std::vector<FrameContext>& residual);
 
   private:
     // One attachment of a GL target into a CL buffer, when its version changed.
@@ -37,10 +43,17 @@ class GlClStaging {
                         FrameGraphId<GlTarget> source, int attachment, GrowingBuffer& buffer,
                         uint64_t& uploaded, FrameGraphId<AtlasCl> out);
 
-    GrowingBuffer fluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_, gbuffer_[3];
+    GrowingBuffer fluxAtlas_, residualFluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_,
+        gbuffer_[3];
     std::vector<std::unique_ptr<GrowingBuffer>> slotRadiosity_;  // slots 1, 2, …
+    // The points of each slot (addSlotPoints), of the G-buffer version slotPointsOf_.
+    std::vector<SurfacePoints> slotPoints_;
+    std::vector<std::unique_ptr<GrowingBuffer>> slotXyz_;
+    uint64_t slotPointsOf_ = 0;
+    std::vector<uint32_t> slotOfMedium_;
     std::vector<GrowingBuffer> lightMaps_;
-    uint64_t fluxUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0, lightsUploaded_ = 0;
+    uint64_t fluxUploaded_ = 0, residualUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0,
+             lightsUploaded_ = 0;
     // The covered pixels of the G-buffer version pointsOf_ (kept while the
     // camera stands still: a frame that only moves the light reuses them).
     SurfacePoints cachedPoints_;

@@ -28,7 +28,7 @@ TEST(GlClStagingDeathTest, AMethodThatForgetsTheRadiosityIsACheckNamingIt) {
                 },
                 [](FrameGraph::Resources&) {});
             const std::vector<FrameContext> runs{ctx};
-            const auto image = staging.addReadback(graph, runs);
+            const auto image = staging.addReadback(graph, runs, {});
             FrameStats stats;
             graph.execute(stats, image);
         },

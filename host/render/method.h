@@ -6,6 +6,7 @@
 
 #include <glm/mat4x4.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,10 @@ struct FrameContext {
     // this frame draws sample set `sampleSet` (0 when not accumulating).
     uint32_t sampleSet = 0;
 
-    FrameGraphId<AtlasCl> fluxAtlas;      // flux rgb per texel
+    FrameGraphId<AtlasCl> fluxAtlas;  // flux rgb per texel
+    // The environment residual's share of fluxAtlas alone (docs/design.md
+    // §12): the texture-space run that lights it for light-view methods reads it.
+    FrameGraphId<AtlasCl> residualFluxAtlas;
     FrameGraphId<AtlasCl> positionAtlas;  // xyz, w = 1 where covered
     FrameGraphId<AtlasCl> normalAtlas;    // normal, w = texel area mm²
     FrameGraphId<SurfacePoints> points;   // the covered camera pixels
@@ -64,11 +68,15 @@ struct FrameContext {
 
     // The longest distance between two surface points: profile tables reach it.
     double maxDistance() const { return maxSurfaceDistance(boundingRadius); }
+    // The part of Rd this run integrates where its method does not choose:
+    // all of it, but the part a light-view method misses of the residual.
+    RdPart rdPart = RdPart::Full;
     // The profile every method integrates: --profile's Rd (or one of the
     // hybrid's parts), scaled by --energy.
-    KeyedProfile profile(RdPart part = RdPart::Full) const {
+    KeyedProfile profile(RdPart part) const {
         return scaledProfile(radialProfile(*material, *options, part), profileScale);
     }
+    KeyedProfile profile() const { return profile(rdPart); }
     cl::Buffer& radiosityBuffer(const FrameGraph::Resources& res, int pointCount) const {
         return res.write(radiosity).storage->reserve(
             cl->context(), static_cast<size_t>(std::max(pointCount, 1)) * 16);
@@ -90,6 +98,13 @@ class Method {
     // Setup only declares: tables, buffers and kernels are made inside the
     // passes that need them.
     virtual void addPasses(FrameGraph& graph, const FrameContext& ctx) = 0;
+    // The part of Rd through which the method cannot see the environment's
+    // residual (it reads only the lights' views): the renderer adds that part
+    // by a texture-space run over the residual's flux alone (docs/design.md
+    // §12). None: the method sees the residual itself.
+    virtual std::optional<RdPart> missesResidual(const RenderOptions&) const {
+        return std::nullopt;
+    }
 };
 
 std::unique_ptr<Method> makeMethod(const std::string& name, ClRuntime& cl);

@@ -17,6 +17,11 @@ class HybridMethod : public Method {
     explicit HybridMethod(ClRuntime& cl);
     const char* name() const override { return "hybrid"; }
     void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
+    // The global half reads the flux atlas, residual and all; the local half
+    // only the lights' views.
+    std::optional<RdPart> missesResidual(const RenderOptions&) const override {
+        return RdPart::Local;
+    }
 
   private:
     TsisMethod global_;

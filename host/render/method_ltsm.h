@@ -23,6 +23,7 @@ class LtsmMethod : public Method {
     explicit LtsmMethod(ClRuntime& cl);
     const char* name() const override { return "ltsm"; }
     void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
+    std::optional<RdPart> missesResidual(const RenderOptions& o) const override { return o.rdPart; }
 
     // Adds the filter pass for `profile`: writes ctx.radiosity, or adds to
     // what it holds when `accumulate`. Stats: <prefix>ltsm (ms),

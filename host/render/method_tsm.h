@@ -21,6 +21,9 @@ class TsmMethod : public Method {
     explicit TsmMethod(ClRuntime& cl);
     const char* name() const override { return "tsm"; }
     void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
+    std::optional<RdPart> missesResidual(const RenderOptions&) const override {
+        return RdPart::Full;
+    }
 
     // The 21 taps (offsets and footprints in units of R; footprints sum to π).
     static std::vector<TsisTsmTap> pattern();

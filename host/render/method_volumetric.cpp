@@ -124,7 +124,9 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
                 WalkCounters c;
                 for (size_t k = begin; k < end; ++k) {
                     if (!seen[k]) continue;
-                    Rng rng(seed, (static_cast<uint64_t>(k) << 20u) | s);
+                    // Seeded by pixel, not by point: a run over a material's
+                    // points alone draws what the whole frame's would there.
+                    Rng rng(seed, (static_cast<uint64_t>(points.pixel[k]) << 20u) | s);
                     const glm::dvec3 toEye = glm::normalize(eye - hits[k].position);
                     sum[k] += exitantRadiance(walk, hits[k], toEye, rng, c);
                 }

@@ -56,6 +56,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
     h.lights = graph.create<GlLights>("light_views");
     h.geometryAtlas = graph.create<GlTarget>("geometry_atlas");
     h.fluxAtlas = graph.create<GlTarget>("flux_atlas");
+    h.residualFluxAtlas = graph.create<GlTarget>("residual_flux_atlas");
     h.gbuffer = graph.create<GlTarget>("gbuffer");
     // η and the exit scale of every medium (render/scene_media.h).
     std::vector<glm::vec2> media;
@@ -145,6 +146,28 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             }
             res.write(h.fluxAtlas) = {&fluxAtlasPass_.target(), fluxVersion_};
         });
+    // The same pass without the lights, for the texture-space run that adds
+    // the residual to a light-view method (Renderer::render): by linearity
+    // the two runs' sum sees the whole atlas.
+    if (ctx.scene->env)
+        graph.addPass(
+            "gl_residual_flux_atlas",
+            [&](FrameGraph::Builder& b) {
+                b.read(h.geometryAtlas);
+                b.read(h.lights);
+                b.write(h.residualFluxAtlas);
+            },
+            [this, &ctx, lighting, h](FrameGraph::Resources& res) {
+                if (residualKey_ != lighting) {
+                    const RenderTarget& geometry = *res.read(h.geometryAtlas).target;
+                    residualFluxPass_.run(geometry, {}, *res.read(h.lights).shadows, materials_,
+                                          environmentTexture(ctx, geometry, res.stats()));
+                    glFinish();
+                    residualKey_ = lighting;
+                    ++residualVersion_;
+                }
+                res.write(h.residualFluxAtlas) = {&residualFluxPass_.target(), residualVersion_};
+            });
     graph.addPass(
         "gl_gbuffer",
         [&](FrameGraph::Builder& b) {

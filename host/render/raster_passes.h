@@ -42,6 +42,8 @@ struct RasterHandles {
     FrameGraphId<const GpuMesh*> mesh;
     FrameGraphId<GlLights> lights;
     FrameGraphId<GlTarget> geometryAtlas, fluxAtlas, gbuffer;
+    // The flux atlas of the environment's residual alone (none without --env).
+    FrameGraphId<GlTarget> residualFluxAtlas;
     // The composite's geometry: positions and normals at --aa × the frame's
     // size (the G-buffer itself at 1×).
     FrameGraphId<GlTarget> samples;
@@ -72,7 +74,7 @@ class RasterPasses {
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
     void invalidateLighting() {
-        lightViewKey_ = fluxKey_ = envTextureKey_ = 0;
+        lightViewKey_ = fluxKey_ = residualKey_ = envTextureKey_ = 0;
         viewKeys_.clear();
     }
 
@@ -88,7 +90,7 @@ class RasterPasses {
 
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
-    FluxAtlasPass fluxAtlasPass_;
+    FluxAtlasPass fluxAtlasPass_, residualFluxPass_;
     GBufferPass gbufferPass_, sampleGbufferPass_;
     CompositePass compositePass_;
     MaterialTables
@@ -103,12 +105,12 @@ class RasterPasses {
     std::vector<LightView> lights_;
     std::vector<uint64_t> viewKeys_;  // per light view: what it was drawn for (frame_keys.h)
     // What the targets hold: lighting keys (0 = nothing) and versions.
-    uint64_t lightViewKey_ = 0, fluxKey_ = 0;
+    uint64_t lightViewKey_ = 0, fluxKey_ = 0, residualKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
     uint64_t gbufferKey_ = 0;  // mesh, camera, size (and the lighting, with irradiance)
     uint64_t samplesKey_ = 0;  // mesh, camera, size, --aa
-    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, gbufferVersion_ = 0,
-             samplesVersion_ = 0;
+    uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, residualVersion_ = 0,
+             gbufferVersion_ = 0, samplesVersion_ = 0;
 };
 
 }  // namespace tsis

@@ -87,13 +87,25 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
 
 }  // namespace
 
-Renderer::Renderer(const std::string& clDevice) : gl_(), cl_(clDevice) {}
+Renderer::Renderer(const std::string& clDevice, const std::string& gl)
+    : gl_(parseGlChoice(gl)),
+      cl_(clDevice),
+      sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
+                                 clSharingSide(cl_.device()))) {}
 
-Renderer::~Renderer() = default;
+// The passes free their GL objects in this renderer's context, whichever
+// renderer of the thread drew last.
+Renderer::~Renderer() {
+    try {
+        gl_.makeCurrent();
+    } catch (const Error&) {  // a lost context: nothing to free it in
+    }
+}
 
-Method& Renderer::method(const std::string& name, size_t slot) {
-    // One instance per material slot: each keeps the tables of its own profile.
-    const std::string key = slot == 0 ? name : concat(name, "#", slot);
+Method& Renderer::method(const std::string& name, size_t slot, const char* role) {
+    // One instance per material slot and role: each keeps the tables of its
+    // own profile.
+    const std::string key = concat(name, role, "#", slot);
     auto it = methods_.find(key);
     if (it == methods_.end()) it = methods_.emplace(key, makeMethod(name, cl_)).first;
     return *it->second;
@@ -147,6 +159,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
+    gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
@@ -182,14 +195,28 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     staging_.addUploads(graph, ctx, gl);
     // The method, once per material (docs/design.md §2 "Materials"); the
     // passes hold their context by reference until the graph has run.
-    std::vector<FrameContext> runs;
+    // A method that reads only the lights' views gets the environment's
+    // residual from a texture-space run (pyramid) over the residual's flux
+    // alone, through the part of Rd it misses (docs/design.md §12).
+    std::vector<FrameContext> runs, residual;
     runs.reserve(sm.slots());
+    const std::vector<FrameGraphId<SurfacePoints>> points = staging_.addSlotPoints(graph, ctx);
+    const std::optional<RdPart> missed =
+        scene.env ? method(opt.method, 0).missesResidual(opt) : std::nullopt;
+    if (missed) residual.reserve(sm.slots());
     for (size_t k = 0; k < sm.slots(); ++k) {
         runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
+        runs[k].points = points[k];
         if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
         method(opt.method, k).addPasses(graph, runs[k]);
+        if (!missed) continue;
+        residual.push_back(runs[k]);
+        residual[k].fluxAtlas = ctx.residualFluxAtlas;
+        residual[k].rdPart = *missed;
+        residual[k].radiosity = staging_.declareRadiosity(graph, sm.slots() + k);
+        method("pyramid", k, "residual").addPasses(graph, residual[k]);
     }
-    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs);
+    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs, residual);
     if (opt.progressive)
         graph.addPass(
             "accumulate",
@@ -214,6 +241,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.addStage("total", total.ms(), -1, totalCpu.ms());
     stats.set("device", cl_.deviceName());
     stats.set("gl_renderer", gl_.renderer());
+    stats.set("gl_platform", gl_.platform());
+    stats.set("gl_cl_sharing", sharing_.reason);
     recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);
     return result;
 }

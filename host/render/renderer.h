@@ -14,6 +14,7 @@
 #include "image/image_io.h"
 #include "render/accumulator.h"
 #include "render/frame_stats.h"
+#include "render/gl_cl_sharing.h"
 #include "render/gl_cl_staging.h"
 #include "render/method.h"
 #include "render/raster_passes.h"
@@ -34,8 +35,9 @@ struct FrameResult {
 
 class Renderer {
   public:
-    // clDevice: see ClRuntime. Throws tsis::Error when GL or OpenCL is missing.
-    explicit Renderer(const std::string& clDevice = "");
+    // clDevice: see ClRuntime; gl: "auto", "osmesa" or "egl" ("": $TSIS_GL,
+    // else auto; gl_context.h). Throws tsis::Error when GL or OpenCL is missing.
+    explicit Renderer(const std::string& clDevice = "", const std::string& gl = "");
     ~Renderer();
 
     FrameResult render(const Scene& scene, const RenderOptions& options);
@@ -44,9 +46,12 @@ class Renderer {
 
     ClRuntime& cl() { return cl_; }
     std::string glRenderer() const { return gl_.renderer(); }
+    std::string glPlatform() const { return gl_.platform(); }
 
   private:
-    Method& method(const std::string& name, size_t slot);
+    // The instance of method `name` for material slot `slot` in `role` ("":
+    // the frame's method; "residual": the environment's run, render()).
+    Method& method(const std::string& name, size_t slot, const char* role = "");
     // The scene's media and their materials (made again when the mesh or a
     // material changed).
     const SceneMedia& media(const Scene& scene, uint64_t meshKey);
@@ -58,6 +63,7 @@ class Renderer {
     ClRuntime cl_;
     RasterPasses raster_;
     GlClStaging staging_;
+    GlClSharing sharing_;  // decided, not yet used: staging_ copies (gl_cl_sharing.h)
     RadiosityAccumulator accumulator_;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/environment.h"
 #include "support/render.h"
 
 namespace tsis {
@@ -69,6 +70,43 @@ TEST(Renderer, MovingOneLightRedrawsOnlyItsView) {
         EXPECT_EQ(scratch.radiosity.pixels, kept.radiosity.pixels);
         EXPECT_EQ(scratch.rgb8, kept.rgb8);
     }
+}
+
+// Under a sky without a sun and a dark light, what ltsm and tsm give is the
+// texture-space run over the residual's flux alone (design §12): the
+// default method's B, to the bit, also right after a lit frame.
+TEST(Renderer, LightViewMethodsUnderASunlessSkyAreTheResidualsRun) {
+    const Scene lit =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    Scene sky = lit;
+    sky.lights[0].rgb = glm::vec3(0.0f);  // a frame needs a light: a dark one
+    sky.env.map = splitEnvironment("white", 32, 16, 3, std::vector<float>(32 * 16 * 3, 0.3f));
+    const RenderOptions opt = test::smallOptions(48, 256, 256);
+    const FrameResult pyramid = test::renderWith(sky, opt, "pyramid");
+    for (const char* method : {"ltsm", "tsm"}) {
+        SCOPED_TRACE(method);
+        test::renderWith(lit, opt, method);
+        const FrameResult b = test::renderWith(sky, opt, method);
+        EXPECT_EQ(b.radiosity.pixels, pyramid.radiosity.pixels);
+    }
+}
+
+// Renderers of both GL platforms on one thread take turns (each frame makes
+// its own context current) and one going away leaves the other drawing.
+TEST(Renderer, RenderersOnOneThreadTakeTurns) {
+    const Scene scene =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    RenderOptions opt = test::smallOptions(48, 256, 256);
+    opt.method = "pyramid";
+    Renderer a("", "egl");
+    const FrameResult first = a.render(scene, opt);
+    {
+        Renderer b("", "osmesa");
+        EXPECT_EQ(b.render(scene, opt).rgb8, first.rgb8);
+        EXPECT_EQ(a.render(scene, opt).rgb8, first.rgb8);
+        EXPECT_EQ(b.render(scene, opt).rgb8, first.rgb8);
+    }
+    EXPECT_EQ(a.render(scene, opt).rgb8, first.rgb8);
 }
 
 // Light maps of 2048² only for objects many diffusion lengths across, where

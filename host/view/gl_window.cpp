@@ -3,14 +3,13 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
-#include <dlfcn.h>
 #include <imgui.h>
-#include <link.h>
 
 #include <string>
 
 #include "image/image_io.h"
 #include "util/error.h"
+#include "util/loaded_libraries.h"
 
 namespace tsis {
 
@@ -20,21 +19,6 @@ std::string gLastGlfwError;
 
 void onGlfwError(int, const char* description) {
     gLastGlfwError = description ? description : "";
-}
-
-// GLFW loads the X GL libraries (and they their driver) with dlopen, and
-// glfwTerminate unloads them; the state Mesa's GLX driver keeps for the
-// process (112 B) then looks leaked at exit, from a module that is gone and
-// no suppression can name. One more reference to every library loaded once
-// the context exists keeps them mapped, and that state reachable, until exit.
-void keepGlLibrariesLoaded() {
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void*) {
-            if (info->dlpi_name && info->dlpi_name[0])
-                dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD);
-            return 0;
-        },
-        nullptr);
 }
 
 }  // namespace
@@ -90,7 +74,9 @@ GlWindow::GlWindow(const std::string& title, int width, int height) {
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
-    keepGlLibrariesLoaded();
+    // GLFW loads the X GL libraries (and they their driver) with dlopen, and
+    // glfwTerminate unloads them (util/loaded_libraries.h).
+    keepLoadedLibrariesMapped();
     try {
         gl_ = std::make_unique<Gl>();
     } catch (...) {

@@ -2,11 +2,12 @@
 // presenting (Mesa on X or any desktop driver) and Dear ImGui through its GLFW
 // and OpenGL 3 backends.
 //
-// This context is not the renderer's. The tsis binary links OSMesa's GL entry
-// points (gl/gl.h), which act on the calling thread's OSMesa context; so the
-// few GL calls made here go through pointers GLFW loads for the window's own
-// context, and ImGui's backend loads its own the same way. The Renderer lives
-// on another thread (view/render_worker.h) with its OSMesa context current there.
+// This context is not the renderer's. The renderer's GL calls go through its
+// own context's table (gl/gl.h), and the gl* symbols the binary links are
+// OSMesa's; so the few GL calls made here go through pointers GLFW loads for
+// the window's own context, and ImGui's backend loads its own the same way. The
+// Renderer lives on another thread (view/render_worker.h) with its EGL or
+// OSMesa context current there.
 #pragma once
 
 #include <cstdint>

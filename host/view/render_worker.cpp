@@ -17,9 +17,10 @@ std::string currentErrorMessage() {
     }
 }
 
-RenderWorker::RenderWorker(const std::string& clDevice, std::function<void()> wake)
+RenderWorker::RenderWorker(const std::string& clDevice, const std::string& gl,
+                           std::function<void()> wake)
     : wake_(std::move(wake)) {
-    thread_ = std::thread([this, clDevice] { run(clDevice); });
+    thread_ = std::thread([this, clDevice, gl] { run(clDevice, gl); });
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return started_; });
     if (!startError_.empty()) {
@@ -78,13 +79,13 @@ FrameDone RenderWorker::render(const FrameJob& job) {
     return done;
 }
 
-void RenderWorker::run(const std::string& clDevice) {
+void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
     lowerThisThreadPriority();
-    // The Renderer is made here: its OSMesa context is current on this thread only.
+    // The Renderer is made here: its GL context is current on this thread only.
     {
         std::lock_guard lock(mutex_);
         try {
-            renderer_ = std::make_unique<Renderer>(clDevice);
+            renderer_ = std::make_unique<Renderer>(clDevice, gl);
         } catch (...) {
             startError_ = currentErrorMessage();
         }

@@ -41,7 +41,7 @@ class RenderWorker {
     // Starts the thread and waits for its Renderer: throws the tsis::Error of
     // a missing GL context or OpenCL device. wake() runs on the worker's
     // thread whenever a frame is done.
-    RenderWorker(const std::string& clDevice, std::function<void()> wake);
+    RenderWorker(const std::string& clDevice, const std::string& gl, std::function<void()> wake);
     ~RenderWorker();  // finishes the frame in hand, then stops
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -53,7 +53,7 @@ class RenderWorker {
     WorkProgress progress() const { return progress_.get(); }
 
   private:
-    void run(const std::string& clDevice);
+    void run(const std::string& clDevice, const std::string& gl);
     FrameDone render(const FrameJob& job);
 
     std::function<void()> wake_;

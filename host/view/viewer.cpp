@@ -1,5 +1,7 @@
 #include "view/viewer.h"
 
+// The window is gl_window.h's; here GLFW is only keys and events (GL is gl/gl.h's).
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -151,7 +153,7 @@ Viewer::Viewer(ViewerConfig config)
       state_(config_.state),
       window_("tsis view", config_.state.options.width + static_cast<int>(kPanelWidth),
               std::max(config_.state.options.height, kMinWindowHeight)) {
-    worker_ = std::make_unique<RenderWorker>(config_.clDevice, GlWindow::wake);
+    worker_ = std::make_unique<RenderWorker>(config_.clDevice, config_.gl, GlWindow::wake);
     openMesh(state_.meshSpec);
 }
 
@@ -201,11 +203,11 @@ void Viewer::startReference() {
     options.method = "reference";
     options.keepAovs = true;
     options.progressive = false;
-    const std::string device = config_.clDevice;
-    // Its own Renderer: an OSMesa context current on the task's thread, its own CL queue.
+    const std::string device = config_.clDevice, gl = config_.gl;
+    // Its own Renderer: a GL context current on the task's thread, its own CL queue.
     referenceTask_ = std::make_unique<BackgroundTask<FrameResult>>(
-        [scene = std::move(scene), options, device] {
-            Renderer renderer(device);
+        [scene = std::move(scene), options, device, gl] {
+            Renderer renderer(device, gl);
             return renderer.render(scene, options);
         },
         GlWindow::wake);

@@ -21,6 +21,7 @@ struct ViewerConfig {
     // spec names, with its file's materials and camera.
     std::function<ViewMesh(const std::string& spec, double sizeMm)> loadMesh;
     std::string clDevice;
+    std::string gl;                                    // --gl (gl/gl_context.h)
     std::optional<std::vector<ScriptCommand>> script;  // played instead of the mouse and keys
 };
 

@@ -32,8 +32,10 @@ struct Frame {
 class Renderer {
   public:
     // clDevice: a substring of the OpenCL device's name ("": $TSIS_CL_DEVICE,
-    // else PoCL). Throws tsis::Error when GL or OpenCL is missing.
-    explicit Renderer(const std::string& clDevice = "");
+    // else PoCL); gl: "egl", "osmesa" or "auto" (EGL when it gives a context,
+    // else OSMesa; "": $TSIS_GL, else auto). Throws tsis::Error when GL or
+    // OpenCL is missing.
+    explicit Renderer(const std::string& clDevice = "", const std::string& gl = "");
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;

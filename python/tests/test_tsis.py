@@ -65,6 +65,16 @@ def test_render_returns_arrays_and_stats():
     assert f.lavg > 0
 
 
+def test_gl_platforms_give_the_same_frame():
+    s = tsis.Scene(mesh="builtin:sphere")
+    frames = {gl: tsis.Renderer(gl=gl).render(s, **SMALL) for gl in ("egl", "osmesa")}
+    assert frames["egl"].stats["gl_platform"].startswith("egl-")
+    assert frames["osmesa"].stats["gl_platform"] == "osmesa"
+    assert np.array_equal(frames["egl"].image, frames["osmesa"].image)
+    with pytest.raises(tsis.Error, match="--gl vulkan"):
+        tsis.Renderer(gl="vulkan")
+
+
 def test_material_changes_the_frame_and_compare_measures_it():
     r = tsis.Renderer()
     s = tsis.Scene(mesh="builtin:sphere")
