@@ -26,6 +26,8 @@
 #define glDeleteTextures (::tsis::tCurrentGl->DeleteTextures)
 #define glDeleteVertexArrays (::tsis::tCurrentGl->DeleteVertexArrays)
 #define glDepthFunc (::tsis::tCurrentGl->DepthFunc)
+#define glDepthMask (::tsis::tCurrentGl->DepthMask)
+#define glDepthRange (::tsis::tCurrentGl->DepthRange)
 #define glDisable (::tsis::tCurrentGl->Disable)
 #define glDrawArrays (::tsis::tCurrentGl->DrawArrays)
 #define glDrawBuffer (::tsis::tCurrentGl->DrawBuffer)

@@ -34,6 +34,8 @@ namespace tsis {
     X(DeleteTextures, DELETETEXTURES)                   \
     X(DeleteVertexArrays, DELETEVERTEXARRAYS)           \
     X(DepthFunc, DEPTHFUNC)                             \
+    X(DepthMask, DEPTHMASK)                             \
+    X(DepthRange, DEPTHRANGE)                           \
     X(Disable, DISABLE)                                 \
     X(DrawArrays, DRAWARRAYS)                           \
     X(DrawBuffer, DRAWBUFFER)                           \
