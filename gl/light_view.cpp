@@ -15,7 +15,8 @@ LightView makeLightView(const Light& light, float radius, int resolution, bool m
     lv.texelMm = lp.texelMm;
     lv.target = std::make_unique<RenderTarget>(
         resolution, resolution,
-        maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);
+        maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{},
+        true);
     return lv;
 }
 

@@ -18,7 +18,7 @@ struct LightView {
     float tanHalf = 0;                     // point lights: tan of half the field of view
     float texelAreaMm = 0;                 // directional: area of one texel (mm²)
     float texelMm = 0;                     // a texel's size at the object centre (shadow offsets)
-    std::unique_ptr<RenderTarget> target;  // flux, position; depth = shadow map
+    std::unique_ptr<RenderTarget> target;  // flux, position, normal; depth = shadow map
 };
 
 // The light's projection (scene/projection.h) with its render target.

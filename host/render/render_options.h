@@ -77,6 +77,9 @@ struct RenderOptions {
     // measures the others against volumetric transport.
     ProfileModel profile = ProfileModel::Dipole;
     ExitTerm exit = ExitTerm::Jensen;
+    // Add Jensen et al. 2001's single-scattering term L⁽¹⁾ to the profile
+    // methods' radiosity (render/single_scatter.h; volumetric has it already).
+    bool singleScatter = false;
     EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
     VolumetricEstimator estimator = VolumetricEstimator::Camera;
     int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre

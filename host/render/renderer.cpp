@@ -190,6 +190,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
         method(opt.method, k).addPasses(graph, runs[k]);
     }
     const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs);
+    // L⁽¹⁾ once for every method but volumetric, whose walk scatters once too.
+    if (opt.singleScatter && opt.method != "volumetric") {
+        if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
+        singleScatter_->addPass(graph, ctx, gl, radiosity);
+    }
     if (opt.progressive)
         graph.addPass(
             "accumulate",

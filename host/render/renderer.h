@@ -18,6 +18,7 @@
 #include "render/method.h"
 #include "render/raster_passes.h"
 #include "render/render_options.h"
+#include "render/single_scatter.h"
 #include "scene/scene.h"
 
 namespace tsis {
@@ -59,6 +60,7 @@ class Renderer {
     RasterPasses raster_;
     GlClStaging staging_;
     RadiosityAccumulator accumulator_;
+    std::unique_ptr<SingleScatter> singleScatter_;  // made on first use (its kernel)
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;

@@ -1,0 +1,39 @@
+/* Jensen et al. 2001's single-scattering term L(1) (kernels/single_scatter.cl,
+ * render/single_scatter.h): what the kernel reads of each medium and light.
+ * Shared by host and kernel. */
+#ifndef TSIS_SINGLE_SCATTER_SHARED_H
+#define TSIS_SINGLE_SCATTER_SHARED_H
+
+#include "tsis_shared.h" /* TSIS_CHECK_SIZE, TSIS_CHECK_OFFSET */
+
+/* A medium: reduced scattering and extinction (mm^-1, rgb), its relative
+ * index, and the factor from L(1)/Ft(eta, cos theta_o) to the radiosity the
+ * composite turns back into it: pi / (the exit term's scale over Ft/pi). */
+typedef struct {
+    float ss_r, ss_g, ss_b; /* sigma_s' */
+    float eta;
+    float st_r, st_g, st_b; /* sigma_t' = sigma_s' + sigma_a */
+    float to_radiosity;
+} TsisScatterMedium;
+TSIS_CHECK_SIZE(TsisScatterMedium, 32);
+TSIS_CHECK_OFFSET(TsisScatterMedium, ss_r, 0);
+TSIS_CHECK_OFFSET(TsisScatterMedium, eta, 12);
+TSIS_CHECK_OFFSET(TsisScatterMedium, st_r, 16);
+TSIS_CHECK_OFFSET(TsisScatterMedium, to_radiosity, 28);
+
+/* A light: type 0 = point (x, y, z its position, rgb its intensity W/sr),
+ * 1 = directional (x, y, z its direction of travel, rgb the irradiance
+ * normal to it, W/mm^2). */
+typedef struct {
+    float x, y, z;
+    int type;
+    float r, g, b;
+    float pad;
+} TsisScatterLight;
+TSIS_CHECK_SIZE(TsisScatterLight, 32);
+TSIS_CHECK_OFFSET(TsisScatterLight, x, 0);
+TSIS_CHECK_OFFSET(TsisScatterLight, type, 12);
+TSIS_CHECK_OFFSET(TsisScatterLight, r, 16);
+TSIS_CHECK_OFFSET(TsisScatterLight, pad, 28);
+
+#endif /* TSIS_SINGLE_SCATTER_SHARED_H */
