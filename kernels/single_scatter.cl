@@ -6,7 +6,8 @@
  *         * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o),
  * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o)
  * (sigma the smallest channel's sigma_t', so every channel's weight stays
- * below 1/sigma), K stratified draws with one hashed offset per point; xi
+ * below 1/sigma), K stratified draws, each jittered in its stratum by a
+ * hash of the point, the stratum and the seed; xi
  * the light's entry point (the light view's surface at the sample's texel),
  * s_i' = (depth below xi's tangent plane) / cos theta_ti, Jensen's refracted
  * path. E (cos theta_i / cos theta_ti) is the beam's irradiance inside, and
@@ -52,10 +53,10 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
     const float sigma = fmin(sigma_t.x, fmin(sigma_t.y, sigma_t.z));
     const float3 e_light = (float3)(light.r, light.g, light.b);
     const float3 light_vec = (float3)(light.x, light.y, light.z);
-    const float offset = tsis_hash_unit(tsis_hash(tsis_hash((uint)j) ^ seed));
+    const uint h = tsis_hash(tsis_hash((uint)j) ^ seed);
     float3 sum = (float3)(0.0f);
     for (int k = 0; k < samples; ++k) {
-        const float u = ((float)k + offset) / (float)samples;
+        const float u = ((float)k + tsis_hash_unit(tsis_hash(h + (uint)k))) / (float)samples;
         const float so = -log(1.0f - u) / sigma;
         const float3 x = xo + so * wt;
         const float3 q = tsis_light_project(&map, x);

@@ -41,10 +41,10 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
     const glm::dvec3 wt = glm::normalize(-v * invEta + n * (invEta * cosO - refractedCos(cosO)));
     const glm::dvec3 sigmaS(md.ss_r, md.ss_g, md.ss_b), sigmaT(md.st_r, md.st_g, md.st_b);
     const double sigma = std::min({sigmaT.x, sigmaT.y, sigmaT.z});
-    const double offset = tsis_hash_unit(tsis_hash(tsis_hash(index) ^ seed));
+    const uint32_t h = tsis_hash(tsis_hash(index) ^ seed);
     glm::dvec3 sum(0.0);
     for (int k = 0; k < samples; ++k) {
-        const double u = (k + offset) / samples;
+        const double u = (k + double(tsis_hash_unit(tsis_hash(h + uint32_t(k))))) / samples;
         const double so = -std::log(1.0 - u) / sigma;
         const glm::dvec3 x = xo + so * wt;
         const ScatterEntry in = entry(x);

@@ -19,8 +19,8 @@
 namespace tsis {
 
 // Distances drawn along each refracted camera ray per light (stratified,
-// one hashed offset per point).
-constexpr int kSingleScatterSamples = 8;
+// jittered per point and stratum by a hash).
+constexpr int kSingleScatterSamples = 16;
 
 // The kernel's medium: σs′, σt′, η and π over the exit term's scale.
 TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit);
