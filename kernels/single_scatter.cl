@@ -8,15 +8,32 @@
  * (sigma the smallest channel's sigma_t', so every channel's weight stays
  * below 1/sigma), K stratified draws, each jittered in its stratum by a
  * hash of the point, the stratum and the seed; xi
- * the light's entry point (the light view's surface at the sample's texel),
- * s_i' = (depth below xi's tangent plane) / cos theta_ti, Jensen's refracted
- * path. E (cos theta_i / cos theta_ti) is the beam's irradiance inside, and
- * 1/eta^2 the radiance's change leaving the medium (Jensen 2001 leaves both
- * out; the volumetric truth has them). Phase p = 1/(4 pi). */
+ * the light's entry point: first the light view's surface at the sample's
+ * texel (Jensen's xi), then TSIS_SCATTER_ENTRY_STEPS times the point of that
+ * surface point's tangent plane whose refracted ray reaches x, moved onto the
+ * surface the light sees there (single_scatter_shared.h), and
+ * s_i' = (depth below the tangent plane) / cos theta_ti, the refracted path. E (cos theta_i / cos
+ * theta_ti) is the beam's irradiance inside, and 1/eta^2 the radiance's change leaving the medium
+ * (Jensen 2001 leaves both out; the volumetric truth has them). Phase p = 1/(4 pi). */
 #include "fresnel.h"
 #include "hash.h"
 #include "light_map.h"
 #include "single_scatter_shared.h"
+
+/* The surface point the light sees at p's texel and its normal (false: no
+ * light of medium `tag` landed there); *clip_w: p's clip w. */
+static inline bool tsis_scatter_surface(const TsisLightMapInfo* map, const __global float4* flux,
+                                        const __global float4* position,
+                                        const __global float4* normal, const float tag,
+                                        const float3 p, float3* y, float3* n, float* clip_w) {
+    const float3 q = tsis_light_project(map, p);
+    const int t = tsis_light_texel(map, q.x, q.y);
+    if (t < 0 || flux[t].w != tag) return false;
+    *y = position[t].xyz;
+    *n = normalize(normal[t].xyz);
+    *clip_w = q.z;
+    return true;
+}
 
 kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
                                 const int count, const float4 eye,
@@ -59,30 +76,43 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
         const float u = ((float)k + tsis_hash_unit(tsis_hash(h + (uint)k))) / (float)samples;
         const float so = -log(1.0f - u) / sigma;
         const float3 x = xo + so * wt;
-        const float3 q = tsis_light_project(&map, x);
-        const int t = tsis_light_texel(&map, q.x, q.y);
-        if (t < 0 || flux[t].w != tag) continue;
-        const float3 xi = position[t].xyz;
-        const float3 ni = normalize(light_normal[t].xyz);
-        float3 e = e_light;
-        float3 l;
-        if (light.type == 0) {
-            const float3 d = light_vec - xi;
-            const float d2 = dot(d, d);
-            e /= d2;
-            l = d * rsqrt(d2);
-        } else {
-            l = -normalize(light_vec);
-        }
-        /* x in front of the light's first surface: outside the object. */
-        if (dot(xi - x, normalize(light.type == 0 ? light_vec - x : l)) < -map.tau_per_w * q.z)
+        float3 y, ny;
+        float clip_w;
+        if (!tsis_scatter_surface(&map, flux, position, light_normal, tag, x, &y, &ny, &clip_w))
             continue;
-        const float cos_i = dot(ni, l);
+        /* x in front of the light's first surface: outside the object. */
+        const float3 toward = light.type == 0 ? normalize(light_vec - x) : -normalize(light_vec);
+        if (dot(y - x, toward) < -map.tau_per_w * clip_w) continue;
+        /* The entry whose refracted ray reaches x: on y's tangent plane in
+         * closed form, then the surface the light sees there, again. */
+        float3 e, l;
+        float cos_i = 0.0f, cos_t = 1.0f, h2 = 0.0f;
+        for (int it = 0;; ++it) {
+            e = e_light;
+            if (light.type == 0) {
+                const float3 d = light_vec - y;
+                const float d2 = dot(d, d);
+                e /= d2;
+                l = d * rsqrt(d2);
+            } else {
+                l = -normalize(light_vec);
+            }
+            cos_i = dot(ny, l);
+            cos_t = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_i * cos_i)));
+            h2 = fmax(dot(y - x, ny), 0.0f);
+            if (!(cos_i > 0.0f) || h2 == 0.0f || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
+            /* Past what the light sees: the entry would be at grazing
+             * incidence, where Ft cos theta_i -> 0. */
+            if (!tsis_scatter_surface(&map, flux, position, light_normal, tag,
+                                      x - refracted * (h2 / cos_t), &y, &ny, &clip_w)) {
+                cos_i = 0.0f;
+                break;
+            }
+        }
         if (!(cos_i > 0.0f)) continue;
-        const float cos_ti = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_i * cos_i)));
-        const float si = fmax(dot(xi - x, ni), 0.0f) / cos_ti;
-        const float3 w = exp(-sigma_t * (si + so) + sigma * so) / sigma;
-        sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_ti) * e;
+        const float3 w = exp(-sigma_t * (h2 / cos_t + so) + sigma * so) / sigma;
+        sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_t) * e;
     }
     const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F * (float)samples));
     out[j] = base + (float4)(md.to_radiosity * r, 0.0f);

@@ -47,23 +47,37 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
         const double u = (k + double(tsis_hash_unit(tsis_hash(h + uint32_t(k))))) / samples;
         const double so = -std::log(1.0 - u) / sigma;
         const glm::dvec3 x = xo + so * wt;
-        const ScatterEntry in = entry(x);
+        ScatterEntry in = entry(x);
         if (!in.lit) continue;
-        glm::dvec3 e(light.rgb), l;
-        if (light.type == Light::Type::Point) {
-            const glm::dvec3 d = glm::dvec3(light.vec) - in.point;
-            e /= glm::dot(d, d);
-            l = glm::normalize(d);
-        } else {
-            l = -glm::normalize(glm::dvec3(light.vec));
+        // As the kernel: from the straight line's entry, the tangent plane's
+        // refracted solution moved onto the surface, TSIS_SCATTER_ENTRY_STEPS
+        // times; none where it falls past what the light sees.
+        glm::dvec3 e, l;
+        double cosI = 0, cosT = 1, h2 = 0;
+        for (int it = 0;; ++it) {
+            e = glm::dvec3(light.rgb);
+            if (light.type == Light::Type::Point) {
+                const glm::dvec3 d = glm::dvec3(light.vec) - in.point;
+                e /= glm::dot(d, d);
+                l = glm::normalize(d);
+            } else {
+                l = -glm::normalize(glm::dvec3(light.vec));
+            }
+            const glm::dvec3 ni = glm::normalize(in.normal);
+            cosI = glm::dot(ni, l);
+            cosT = refractedCos(cosI);
+            h2 = std::max(glm::dot(in.point - x, ni), 0.0);
+            if (!(cosI > 0) || h2 == 0 || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            const glm::dvec3 refracted = -l * invEta + ni * (invEta * cosI - cosT);
+            in = entry(x - refracted * (h2 / cosT));
+            if (!in.lit) {
+                cosI = 0;
+                break;
+            }
         }
-        const glm::dvec3 ni = glm::normalize(in.normal);
-        const double cosI = glm::dot(ni, l);
         if (!(cosI > 0)) continue;
-        const double cosTi = refractedCos(cosI);
-        const double si = std::max(glm::dot(in.point - x, ni), 0.0) / cosTi;
-        const glm::dvec3 w = glm::exp(-sigmaT * (si + so) + sigma * so) / sigma;
-        sum += w * (fresnelTransmittance(eta, cosI) * cosI / cosTi) * e;
+        const glm::dvec3 w = glm::exp(-sigmaT * (h2 / cosT + so) + sigma * so) / sigma;
+        sum += w * (fresnelTransmittance(eta, cosI) * cosI / cosT) * e;
     }
     return sum * sigmaS * (invEta * invEta / (4.0 * M_PI * samples));
 }
