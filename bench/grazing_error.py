@@ -73,12 +73,14 @@ def main():
         band = [smp for smp in samples if -0.2 < smp[1] < 0.2]
         ratio = [sum(m[i] for _, _, m, _ in band) / max(sum(t[i] for _, _, _, t in band), 1e-300)
                  for i in range(3)]
-        print("\n%s, %s %s: relative RMSE %.1f %%; model / truth at -0.2 < cos θi < 0.2: "
-              "%.3f %.3f %.3f" % (name, method, " ".join(extra),
-                                 100 * math.sqrt(sq / (3 * len(samples))) / mean, *ratio))
         # One scale per channel, least squares: the level taken out.
         scale = [sum(m[i] * t[i] for _, _, m, t in samples) /
                  max(sum(m[i] ** 2 for _, _, m, _ in samples), 1e-300) for i in range(3)]
+        shaped = sum((scale[i] * m[i] - t[i]) ** 2 for _, _, m, t in samples for i in range(3))
+        print("\n%s, %s %s: relative RMSE %.1f %% (%.1f %% after the scale); model / truth at "
+              "-0.2 < cos θi < 0.2: %.3f %.3f %.3f" % (
+                  name, method, " ".join(extra), 100 * math.sqrt(sq / (3 * len(samples))) / mean,
+                  100 * math.sqrt(shaped / (3 * len(samples))) / mean, *ratio))
         for title, key, bins in (("exit cos θo", 0, BINS), ("light cos θi", 1, LIGHT_BINS)):
             rows = [[0, 0.0, 0.0, 0.0, 0.0] for _ in bins[:-1]]
             for smp in samples:

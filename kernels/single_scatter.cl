@@ -4,7 +4,8 @@
  *   B1(xo) = to_radiosity * R,  L(1) = Ft(eta, cos theta_o) * R,
  *   R = sigma_s' p (1/K) sum_k Ft(eta, cos theta_i) E (cos theta_i / cos theta_ti) / eta^2
  *         * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o),
- * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o)
+ * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o) cut
+ * at TSIS_SCATTER_DEPTH / sigma (single_scatter_shared.h)
  * (sigma the smallest channel's sigma_t', so every channel's weight stays
  * below 1/sigma), K stratified draws, each jittered in its stratum by a
  * hash of the point, the stratum and the seed; xi
@@ -71,10 +72,12 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
     const float3 e_light = (float3)(light.r, light.g, light.b);
     const float3 light_vec = (float3)(light.x, light.y, light.z);
     const uint h = tsis_hash(tsis_hash((uint)j) ^ seed);
+    /* The pdf's mass within TSIS_SCATTER_DEPTH mean free paths. */
+    const float kept = 1.0f - exp(-(float)TSIS_SCATTER_DEPTH);
     float3 sum = (float3)(0.0f);
     for (int k = 0; k < samples; ++k) {
         const float u = ((float)k + tsis_hash_unit(tsis_hash(h + (uint)k))) / (float)samples;
-        const float so = -log(1.0f - u) / sigma;
+        const float so = -log(1.0f - u * kept) / sigma;
         const float3 x = xo + so * wt;
         float3 y, ny;
         float clip_w;
@@ -99,8 +102,15 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
             }
             cos_i = dot(ny, l);
             cos_t = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_i * cos_i)));
-            h2 = fmax(dot(y - x, ny), 0.0f);
-            if (!(cos_i > 0.0f) || h2 == 0.0f || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            h2 = dot(y - x, ny);
+            /* x above a later step's tangent plane: no connection (at the
+             * first, x within a texel of the surface: none to cross). */
+            if (!(h2 > 0.0f)) {
+                if (it > 0) cos_i = 0.0f;
+                h2 = 0.0f;
+                break;
+            }
+            if (!(cos_i > 0.0f) || it == TSIS_SCATTER_ENTRY_STEPS) break;
             const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
             /* Past what the light sees: the entry would be at grazing
              * incidence, where Ft cos theta_i -> 0. */
@@ -111,7 +121,7 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
             }
         }
         if (!(cos_i > 0.0f)) continue;
-        const float3 w = exp(-sigma_t * (h2 / cos_t + so) + sigma * so) / sigma;
+        const float3 w = exp(-sigma_t * (h2 / cos_t + so) + sigma * so) * (kept / sigma);
         sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_t) * e;
     }
     const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F * (float)samples));

@@ -13,6 +13,13 @@
  * 4-7x at cos theta_i = 0 on a 30 mm skin1 sphere. */
 #define TSIS_SCATTER_ENTRY_STEPS 3
 
+/* The camera ray's samples end this many mean free paths 1/min sigma_t' in
+ * (the pdf renormalised): past it the camera's own attenuation leaves
+ * < e^-8 = 0.03% of what any draw can add, while a draw there that happens
+ * to lie near a lit surface (the back of a back-lit 30 mm sphere, 23 mean
+ * free paths in) adds 1/16 of a lit pixel's term: a firefly. */
+#define TSIS_SCATTER_DEPTH 8
+
 /* A medium: reduced scattering and extinction (mm^-1, rgb), its relative
  * index, and the factor from L(1)/Ft(eta, cos theta_o) to the radiosity the
  * composite turns back into it: pi / (the exit term's scale over Ft/pi). */

@@ -42,10 +42,11 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
     const glm::dvec3 sigmaS(md.ss_r, md.ss_g, md.ss_b), sigmaT(md.st_r, md.st_g, md.st_b);
     const double sigma = std::min({sigmaT.x, sigmaT.y, sigmaT.z});
     const uint32_t h = tsis_hash(tsis_hash(index) ^ seed);
+    const double kept = 1.0 - std::exp(-double(TSIS_SCATTER_DEPTH));
     glm::dvec3 sum(0.0);
     for (int k = 0; k < samples; ++k) {
         const double u = (k + double(tsis_hash_unit(tsis_hash(h + uint32_t(k))))) / samples;
-        const double so = -std::log(1.0 - u) / sigma;
+        const double so = -std::log(1.0 - u * kept) / sigma;
         const glm::dvec3 x = xo + so * wt;
         ScatterEntry in = entry(x);
         if (!in.lit) continue;
@@ -66,8 +67,13 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
             const glm::dvec3 ni = glm::normalize(in.normal);
             cosI = glm::dot(ni, l);
             cosT = refractedCos(cosI);
-            h2 = std::max(glm::dot(in.point - x, ni), 0.0);
-            if (!(cosI > 0) || h2 == 0 || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            h2 = glm::dot(in.point - x, ni);
+            if (!(h2 > 0)) {
+                if (it > 0) cosI = 0;
+                h2 = 0;
+                break;
+            }
+            if (!(cosI > 0) || it == TSIS_SCATTER_ENTRY_STEPS) break;
             const glm::dvec3 refracted = -l * invEta + ni * (invEta * cosI - cosT);
             in = entry(x - refracted * (h2 / cosT));
             if (!in.lit) {
@@ -76,7 +82,7 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
             }
         }
         if (!(cosI > 0)) continue;
-        const glm::dvec3 w = glm::exp(-sigmaT * (h2 / cosT + so) + sigma * so) / sigma;
+        const glm::dvec3 w = glm::exp(-sigmaT * (h2 / cosT + so) + sigma * so) * (kept / sigma);
         sum += w * (fresnelTransmittance(eta, cosI) * cosI / cosT) * e;
     }
     return sum * sigmaS * (invEta * invEta / (4.0 * M_PI * samples));
