@@ -1,37 +1,39 @@
 /* Jensen et al. 2001's single-scattering term L(1) (docs/design.md "Single
  * scattering"), per covered camera point xo and one light, as the radiosity
- * the composite turns back into it:
- *   B1(xo) = to_radiosity * R,  L(1) = Ft(eta, cos theta_o) * R,
- *   R = sigma_s' p (1/K) sum_k Ft(eta, cos theta_i) E (cos theta_i / cos theta_ti) / eta^2
- *         * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o),
+ * the composite turns back into it: B1(xo) = to_radiosity * R,
+ * L(1) = Ft(eta, cos theta_o) * R,
+ *   R = sigma_s' p (1/K) sum_k Ft(eta, cos theta_i) E (cos theta_i / cos theta_ti)
+ *         / eta^2 * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o).
  * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o) cut
- * at TSIS_SCATTER_DEPTH / sigma (single_scatter_shared.h)
- * (sigma the smallest channel's sigma_t', so every channel's weight stays
- * below 1/sigma), K stratified draws, each jittered in its stratum by a
- * hash of the point, the stratum and the seed; xi
- * the light's entry point: first the light view's surface at the sample's
- * texel (Jensen's xi), then TSIS_SCATTER_ENTRY_STEPS times the point of that
- * surface point's tangent plane whose refracted ray reaches x, moved onto the
- * surface the light sees there (single_scatter_shared.h), and
- * s_i' = (depth below the tangent plane) / cos theta_ti, the refracted path. E (cos theta_i / cos
- * theta_ti) is the beam's irradiance inside, and 1/eta^2 the radiance's change leaving the medium
- * (Jensen 2001 leaves both out; the volumetric truth has them). Phase p = 1/(4 pi). */
+ * at TSIS_SCATTER_DEPTH / sigma (sigma the smallest channel's sigma_t', so
+ * every channel's weight stays below 1/sigma): K strata, each jittered by a
+ * hash of the point, the stratum and the seed. The entry: first the light
+ * view's surface at the draw's texel (Jensen's xi), then
+ * TSIS_SCATTER_ENTRY_STEPS times the point of that surface point's tangent
+ * plane whose refracted ray reaches x, moved onto the surface the light sees
+ * there; s_i' = (depth below the tangent plane) / cos theta_ti, the refracted
+ * path. E (cos theta_i / cos theta_ti) is the beam's irradiance inside and
+ * 1/eta^2 the radiance's change leaving the medium: Jensen 2001 leaves both
+ * out, the volumetric truth has them. Phase p = 1/(4 pi). */
 #include "fresnel.h"
 #include "hash.h"
 #include "light_map.h"
 #include "single_scatter_shared.h"
 
 /* The surface point the light sees at p's texel and its normal (false: no
- * light of medium `tag` landed there); *clip_w: p's clip w. */
-static inline bool tsis_scatter_surface(const TsisLightMapInfo* map, const __global float4* flux,
+ * surface of medium `tag` there: the normal map's w is the tag, as the flux
+ * map's); *clip_w: p's clip w. */
+static inline bool tsis_scatter_surface(const TsisLightMapInfo* map,
                                         const __global float4* position,
                                         const __global float4* normal, const float tag,
                                         const float3 p, float3* y, float3* n, float* clip_w) {
     const float3 q = tsis_light_project(map, p);
     const int t = tsis_light_texel(map, q.x, q.y);
-    if (t < 0 || flux[t].w != tag) return false;
+    if (t < 0) return false;
+    const float4 nt = normal[t];
+    if (nt.w != tag) return false;
     *y = position[t].xyz;
-    *n = normalize(normal[t].xyz);
+    *n = normalize(nt.xyz);
     *clip_w = q.z;
     return true;
 }
@@ -40,7 +42,7 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
                                 const int count, const float4 eye,
                                 const __global TsisScatterMedium* media, const int media_count,
                                 const TsisLightMapInfo map, const TsisScatterLight light,
-                                const __global float4* flux, const __global float4* position,
+                                const __global float4* position,
                                 const __global float4* light_normal, const int samples,
                                 const uint seed, const int accumulate, __global float4* out) {
     const int j = get_global_id(0);
@@ -81,8 +83,7 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
         const float3 x = xo + so * wt;
         float3 y, ny;
         float clip_w;
-        if (!tsis_scatter_surface(&map, flux, position, light_normal, tag, x, &y, &ny, &clip_w))
-            continue;
+        if (!tsis_scatter_surface(&map, position, light_normal, tag, x, &y, &ny, &clip_w)) continue;
         /* x in front of the light's first surface: outside the object. */
         const float3 toward = light.type == 0 ? normalize(light_vec - x) : -normalize(light_vec);
         if (dot(y - x, toward) < -map.tau_per_w * clip_w) continue;
@@ -114,7 +115,7 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
             const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
             /* Past what the light sees: the entry would be at grazing
              * incidence, where Ft cos theta_i -> 0. */
-            if (!tsis_scatter_surface(&map, flux, position, light_normal, tag,
+            if (!tsis_scatter_surface(&map, position, light_normal, tag,
                                       x - refracted * (h2 / cos_t), &y, &ny, &clip_w)) {
                 cos_i = 0.0f;
                 break;

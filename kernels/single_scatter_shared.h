@@ -6,12 +6,14 @@
 
 #include "tsis_shared.h" /* TSIS_CHECK_SIZE, TSIS_CHECK_OFFSET */
 
-/* Steps towards the entry point whose refracted ray reaches the sample. One
- * (Jensen's: the tangent plane where the straight line to the light leaves)
- * is exact on a plane; on a curved surface near the shadow line it puts the
- * entry too close and overshoots the volumetric walk's single scattering
- * 4-7x at cos theta_i = 0 on a 30 mm skin1 sphere. */
-#define TSIS_SCATTER_ENTRY_STEPS 3
+/* Steps towards the entry point whose refracted ray reaches the sample, from
+ * Jensen's (the straight line to the light), which is exact on a plane; on a
+ * curved surface near the shadow line it puts the entry too close, and the
+ * term overshoots the volumetric walk's single scattering 1.4x at
+ * cos theta_i = 0.1 and 4-7x at 0 (30 mm skin1 sphere). Two steps: 0.89-0.98
+ * at 0.1, below the walk at 0 (single_scatter_test.cpp); three: the same;
+ * each costs two more map reads per draw. */
+#define TSIS_SCATTER_ENTRY_STEPS 2
 
 /* The camera ray's samples end this many mean free paths 1/min sigma_t' in
  * (the pdf renormalised): past it the camera's own attenuation leaves

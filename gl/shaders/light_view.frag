@@ -29,5 +29,5 @@ void main() {
     vec3 flux = c > 0.0 ? u_lightRgb[u_light] * (fresnelT(mediumOf(v_medium).r, c) * measure) : vec3(0.0);
     o_flux = vec4(flux * albedoFactor(v_uv), v_medium);
     o_position = vec4(v_position, length(u_lightVec[u_light] - v_position));
-    o_normal = vec4(n, 0.0);
+    o_normal = vec4(n, v_medium);  // w as the flux's: single scattering reads only this
 }

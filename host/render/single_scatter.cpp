@@ -124,7 +124,7 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
             }
             // The light views' normals, with the views.
             const std::vector<LightView>& views = *lights.views;
-            TSIS_CHECK_EQ(maps.flux.size(), views.size());
+            TSIS_CHECK_EQ(maps.position.size(), views.size());
             if (lights.version != lightNormalsOf_ || lightNormals_.size() != views.size()) {
                 lightNormals_.resize(views.size());
                 for (size_t l = 0; l < views.size(); ++l) {
@@ -153,9 +153,9 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                     light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
                 setKernelArgs(kernel_, points.xyz, normals_.buffer, points.count, eye, mediaBuffer,
                               static_cast<int>(media.size()),
-                              lightMapInfo(views[l], ctx.lightResolution), sl, maps.flux[l],
-                              maps.position[l], lightNormals_[l].buffer, kSingleScatterSamples,
-                              frameSeed(ctx), l > 0 ? 1 : 0, out);
+                              lightMapInfo(views[l], ctx.lightResolution), sl, maps.position[l],
+                              lightNormals_[l].buffer, kSingleScatterSamples, frameSeed(ctx),
+                              l > 0 ? 1 : 0, out);
                 enqueue1D(queue, kernel_, count, kLocalSize, nullptr);
             }
             std::vector<float> b1(count * 4);

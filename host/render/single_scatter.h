@@ -20,7 +20,7 @@ namespace tsis {
 
 // Distances drawn along each refracted camera ray per light (stratified,
 // jittered per point and stratum by a hash).
-constexpr int kSingleScatterSamples = 16;
+constexpr int kSingleScatterSamples = 8;
 
 // The kernel's medium: σs′, σt′, η and π over the exit term's scale.
 TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit);
