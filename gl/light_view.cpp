@@ -5,7 +5,7 @@
 
 namespace tsis {
 
-LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
+LightView makeLightView(const Light& light, float radius, int resolution, bool maps, bool normals) {
     LightView lv;
     lv.light = light;
     const LightProjection lp = lightProjection(light, radius, resolution);
@@ -13,10 +13,9 @@ LightView makeLightView(const Light& light, float radius, int resolution, bool m
     lv.tanHalf = lp.tanHalf;
     lv.texelAreaMm = lp.texelAreaMm;
     lv.texelMm = lp.texelMm;
-    lv.target = std::make_unique<RenderTarget>(
-        resolution, resolution,
-        maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{},
-        true);
+    std::vector<GLenum> targets;
+    if (maps) targets.assign(normals ? 3 : 2, GL_RGBA32F);
+    lv.target = std::make_unique<RenderTarget>(resolution, resolution, targets, true);
     return lv;
 }
 

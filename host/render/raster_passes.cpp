@@ -82,14 +82,18 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.write(h.lights);
         },
         [this, &graph, &ctx, lighting, lightMapsCl, h](FrameGraph::Resources& res) {
-            // Flux and position maps only when a light-view method reads them.
+            // Flux and position maps only when a light-view method reads them;
+            // normals only for the single-scattering term.
             const bool maps = graph.isRead(lightMapsCl);
-            if (lightViewKey_ != lighting || (maps && !lightMapsMade_)) {
+            const bool normals = maps && addsSingleScatter(*ctx.options);
+            if (lightViewKey_ != lighting || (maps && !lightMapsMade_) ||
+                (normals && !lightNormalsMade_)) {
                 lights_.clear();
                 for (const Light& l : ctx.scene->lights)
                     lights_.push_back(
-                        makeLightView(l, ctx.boundingRadius, ctx.lightResolution, maps));
+                        makeLightView(l, ctx.boundingRadius, ctx.lightResolution, maps, normals));
                 lightMapsMade_ = maps;
+                lightNormalsMade_ = normals;
                 lightPass_.run(*res.read(h.mesh), lights_, materials_);
                 glFinish();
                 lightViewKey_ = lighting;

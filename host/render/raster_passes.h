@@ -97,7 +97,8 @@ class RasterPasses {
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::vector<LightView> lights_;
-    bool lightMapsMade_ = false;  // the light views have flux and position maps
+    bool lightMapsMade_ = false;     // the light views have flux and position maps
+    bool lightNormalsMade_ = false;  // and normal maps
     // What the targets hold: lighting keys (0 = nothing) and versions.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)

@@ -110,6 +110,11 @@ struct RenderOptions {
     bool reuseLighting = true;
 };
 
+// Whether the frame adds the single-scattering term (render/single_scatter.h).
+inline bool addsSingleScatter(const RenderOptions& o) {
+    return o.singleScatter && o.method != "volumetric";
+}
+
 // Checks the method's name and every parameter's value against its row of
 // render/render_params.h, what the renderer and the methods would otherwise
 // refuse only after the mesh is loaded and GL/CL started. Throws tsis::Error.

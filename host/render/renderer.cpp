@@ -191,7 +191,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     }
     const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs);
     // L⁽¹⁾ once for every method but volumetric, whose walk scatters once too.
-    if (opt.singleScatter && opt.method != "volumetric") {
+    if (addsSingleScatter(opt)) {
         if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
         singleScatter_->addPass(graph, ctx, gl, radiosity);
     }
