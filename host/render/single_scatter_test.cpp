@@ -171,6 +171,17 @@ TEST(SingleScatterHost, PlaneAgreesWithTheSingleScatteringWalk) {
     }
 }
 
+// Every method but volumetric gets the term, and only when asked for.
+TEST(SingleScatterHost, AddedForEveryProfileMethodButNotVolumetric) {
+    RenderOptions o;
+    EXPECT_FALSE(addsSingleScatter(o));
+    o.singleScatter = true;
+    for (const std::string& m : methodNames()) {
+        o.method = m;
+        EXPECT_EQ(addsSingleScatter(o), m != "volumetric") << m;
+    }
+}
+
 class SingleScatterKernelTest : public test::ClTest {
   protected:
     cl::Kernel kernel = rt.kernel("single_scatter.cl", "tsis_single_scatter");
