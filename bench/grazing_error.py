@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Where a texture-space model's error against the volumetric truth lives, by exit angle (issue 24 item 5).
 
-Usage: bench/grazing_error.py TSIS [METHOD]   (default method: pyramid)
+Usage: bench/grazing_error.py TSIS [METHOD [ARGS...]]   (default method: pyramid)
+ARGS go to `tsis render` after the truth's own (e.g. --no-specular --aa 1
+--single-scatter: the truth has no GGX lobe).
 
 For the two truth scenes of tests/validation (truth.json: their `tsis render`
 arguments; truth_*.exr: the light tracer's radiance to <= 1 % noise), renders
@@ -12,7 +14,9 @@ incidence, cos(theta_i) = n . l (negative: the side turned away, the light
 reaching it through the object). Per bin: the share of the pixels, the share
 of the squared error (all channels), the same after one least-squares scale
 per channel (what is left once the level is right: the shape), and the ratio
-model / truth (red). EXRs are read with oiiotool.
+model / truth (red); over all pixels the relative RMSE (RMSE / the truth's
+mean, as `tsis compare`) and per channel the ratio model / truth in the
+shadow-line band -0.2 < cos(theta_i) < 0.2. EXRs are read with oiiotool.
 """
 import json
 import math
@@ -37,12 +41,13 @@ def pixels(exr):
 def main():
     tsis = sys.argv[1]
     method = sys.argv[2] if len(sys.argv) > 2 else "pyramid"
+    extra = sys.argv[3:]
     truth = json.load(open(os.path.join(ROOT, "tests/validation/truth.json")))
     tmp = tempfile.mkdtemp(prefix="grazing_")
     for name, entry in truth.items():
         aov = os.path.join(tmp, name)
         stats = aov + ".json"
-        subprocess.run([tsis, "render", *entry["args"], "--method", method, "--aov", aov,
+        subprocess.run([tsis, "render", *entry["args"], "--method", method, *extra, "--aov", aov,
                         "--stats", stats, "-o", aov + ".png"], check=True,
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         args = json.load(open(stats))["scene_args"]
@@ -63,9 +68,19 @@ def main():
             cos_o = sum(n[i] * v[i] for i in range(3)) / math.sqrt(sum(t * t for t in v))
             cos_i = sum(n[i] * l[i] for i in range(3)) / math.sqrt(sum(t * t for t in l))
             samples.append((cos_o, cos_i, got.get(xy, [0.0, 0.0, 0.0]), ref[xy]))
+        sq = sum((m[i] - t[i]) ** 2 for _, _, m, t in samples for i in range(3))
+        mean = sum(sum(t) for _, _, _, t in samples) / (3 * len(samples))
+        band = [smp for smp in samples if -0.2 < smp[1] < 0.2]
+        ratio = [sum(m[i] for _, _, m, _ in band) / max(sum(t[i] for _, _, _, t in band), 1e-300)
+                 for i in range(3)]
         # One scale per channel, least squares: the level taken out.
         scale = [sum(m[i] * t[i] for _, _, m, t in samples) /
                  max(sum(m[i] ** 2 for _, _, m, _ in samples), 1e-300) for i in range(3)]
+        shaped = sum((scale[i] * m[i] - t[i]) ** 2 for _, _, m, t in samples for i in range(3))
+        print("\n%s, %s %s: relative RMSE %.1f %% (%.1f %% after the scale); model / truth at "
+              "-0.2 < cos θi < 0.2: %.3f %.3f %.3f" % (
+                  name, method, " ".join(extra), 100 * math.sqrt(sq / (3 * len(samples))) / mean,
+                  100 * math.sqrt(shaped / (3 * len(samples))) / mean, *ratio))
         for title, key, bins in (("exit cos θo", 0, BINS), ("light cos θi", 1, LIGHT_BINS)):
             rows = [[0, 0.0, 0.0, 0.0, 0.0] for _ in bins[:-1]]
             for smp in samples:

@@ -5,24 +5,24 @@
 
 namespace tsis {
 
-LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
+LightView makeLightView(const Light& light, float radius, int resolution, bool maps, bool normals) {
     LightView lv;
-    updateLightView(lv, light, radius, resolution, maps);
+    updateLightView(lv, light, radius, resolution, maps, normals);
     return lv;
 }
 
-void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps) {
+void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps,
+                     bool normals) {
     lv.light = light;
     const LightProjection lp = lightProjection(light, radius, resolution);
     lv.viewProj = lp.viewProj;
     lv.tanHalf = lp.tanHalf;
     lv.texelAreaMm = lp.texelAreaMm;
     lv.texelMm = lp.texelMm;
-    const int colours = maps ? 2 : 0;
+    const int colours = maps ? (normals ? 3 : 2) : 0;
     if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != colours)
         lv.target = std::make_unique<RenderTarget>(
-            resolution, resolution,
-            maps ? std::vector<GLenum>{GL_RGBA32F, GL_RGBA32F} : std::vector<GLenum>{}, true);
+            resolution, resolution, std::vector<GLenum>(size_t(colours), GL_RGBA32F), true);
 }
 
 ShadowMapArray::~ShadowMapArray() {

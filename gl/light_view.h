@@ -18,18 +18,21 @@ struct LightView {
     float tanHalf = 0;                     // point lights: tan of half the field of view
     float texelAreaMm = 0;                 // directional: area of one texel (mm²)
     float texelMm = 0;                     // a texel's size at the object centre (shadow offsets)
-    std::unique_ptr<RenderTarget> target;  // flux, position; depth = shadow map
+    std::unique_ptr<RenderTarget> target;  // flux, position (, normal); depth = shadow map
 };
 
 // The light's projection (scene/projection.h) with its render target.
 // maps: the target also has the flux and position maps (the light-view
 // methods read them); without, it is depth only. Throws tsis::Error for a
 // point light inside that sphere or a zero direction.
-LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true);
+// normals: with maps, a third map of the surface normal (w = the medium tag),
+// for the single-scattering term (render/single_scatter.h).
+LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true,
+                        bool normals = false);
 // The same in place: `view` for `light`, its target kept when it has the size
 // and the maps asked for (a light that moved needs no new target).
 void updateLightView(LightView& view, const Light& light, float boundingRadius, int resolution,
-                     bool maps);
+                     bool maps, bool normals = false);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
 // form the shaders sample.

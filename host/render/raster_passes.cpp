@@ -84,12 +84,14 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.write(h.lights);
         },
         [this, &graph, &ctx, lighting, lightMapsCl, eta, h](FrameGraph::Resources& res) {
-            // Flux and position maps only when a light-view method reads them.
+            // Flux and position maps only when a light-view method reads them;
+            // normals only for the single-scattering term.
             const bool maps = graph.isRead(lightMapsCl);
+            const bool normals = maps && addsSingleScatter(*ctx.options);
             // Each view is redrawn only when its own key changed: a frame that
             // moves one light of several redraws that one.
             const std::vector<Light>& lights = ctx.scene->lights;
-            const uint64_t shading = Hasher(eta).add(ctx.albedo->key).digest();
+            const uint64_t shading = Hasher(eta).add(ctx.albedo->key).add(normals).digest();
             lights_.resize(lights.size());
             viewKeys_.resize(lights.size(), 0);
             std::vector<size_t> changed;
@@ -98,7 +100,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading);
                 if (key == viewKeys_[i]) continue;
                 updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
-                                maps);
+                                maps, normals);
                 viewKeys_[i] = key;
                 changed.push_back(i);
             }

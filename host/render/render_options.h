@@ -77,6 +77,9 @@ struct RenderOptions {
     // measures the others against volumetric transport.
     ProfileModel profile = ProfileModel::Dipole;
     ExitTerm exit = ExitTerm::Jensen;
+    // Add Jensen et al. 2001's single-scattering term L⁽¹⁾ to the profile
+    // methods' radiosity (render/single_scatter.h; volumetric has it already).
+    bool singleScatter = false;
     EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
     VolumetricEstimator estimator = VolumetricEstimator::Camera;
     int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre
@@ -106,6 +109,11 @@ struct RenderOptions {
     // that moves only the camera or changes σ, N or the method skips them.
     bool reuseLighting = true;
 };
+
+// Whether the frame adds the single-scattering term (render/single_scatter.h).
+inline bool addsSingleScatter(const RenderOptions& o) {
+    return o.singleScatter && o.method != "volumetric";
+}
 
 // Checks the method's name and every parameter's value against its row of
 // render/render_params.h, what the renderer and the methods would otherwise

@@ -65,7 +65,7 @@ RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
     p.set = [field, whenGiven](RenderOptions& o, const std::string& value) {
         o.*field = (value == "1") == whenGiven;
     };
-    p.example = "1";
+    p.example = std::string(1, '1');  // not = "1": GCC 12 warns -Wrestrict when inlined
     return p;
 }
 
@@ -137,6 +137,11 @@ std::vector<RenderParam> makeParams() {
             {"exit", "E  the exit term: jensen (Ft/pi·B) or normalized (Ft/(c·pi)·B, exitance B)",
              kEvery, kRadiosity},
             &O::exit, parseExitTerm, exitTermName, ExitTerm::Normalized),
+        flag({"single-scatter",
+              "add Jensen et al. 2001's single-scattering term L(1) (README \"Where the error "
+              "lives\")",
+              kProfiled, kRadiosity},
+             &O::singleScatter, true),
         number({"ltsm-rings", "L  rings of the light-view filter", M{"ltsm", "hybrid"}, kRadiosity},
                &O::ltsmRings, {0, 64}),
         number({"ltsm-per-ring", "C  samples per ring (L×C+1 in all)", M{"ltsm", "hybrid"},

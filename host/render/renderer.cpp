@@ -217,6 +217,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
         method("pyramid", k, "residual").addPasses(graph, residual[k]);
     }
     const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs, residual);
+    // L⁽¹⁾ once for every method but volumetric, whose walk scatters once too.
+    if (addsSingleScatter(opt)) {
+        if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
+        singleScatter_->addPass(graph, ctx, gl, radiosity);
+    }
     if (opt.progressive)
         graph.addPass(
             "accumulate",

@@ -19,6 +19,7 @@
 #include "render/method.h"
 #include "render/raster_passes.h"
 #include "render/render_options.h"
+#include "render/single_scatter.h"
 #include "scene/scene.h"
 
 namespace tsis {
@@ -65,6 +66,7 @@ class Renderer {
     GlClStaging staging_;
     GlClSharing sharing_;  // decided, not yet used: staging_ copies (gl_cl_sharing.h)
     RadiosityAccumulator accumulator_;
+    std::unique_ptr<SingleScatter> singleScatter_;  // made on first use (its kernel)
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;

@@ -1,0 +1,171 @@
+#include "render/single_scatter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "cl/launch.h"
+#include "hash.h"
+#include "physics/fresnel.h"
+#include "render/light_map_info.h"
+#include "util/error.h"
+
+namespace tsis {
+
+TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit) {
+    const glm::dvec3 st = m.sigmaSPrime + m.sigmaA;
+    return {static_cast<float>(m.sigmaSPrime.x),
+            static_cast<float>(m.sigmaSPrime.y),
+            static_cast<float>(m.sigmaSPrime.z),
+            static_cast<float>(m.eta),
+            static_cast<float>(st.x),
+            static_cast<float>(st.y),
+            static_cast<float>(st.z),
+            static_cast<float>(M_PI / exitScale(exit, m.eta))};
+}
+
+glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, const glm::dvec3& eye,
+                             const TsisScatterMedium& md, const Light& light, const EntryOf& entry,
+                             int samples, uint32_t seed, uint32_t index) {
+    glm::dvec3 n = glm::normalize(normal);
+    const glm::dvec3 v = glm::normalize(eye - xo);
+    double cosO = glm::dot(n, v);
+    if (cosO < 0) {
+        n = -n;
+        cosO = -cosO;
+    }
+    const double eta = md.eta, invEta = 1.0 / eta;
+    auto refractedCos = [invEta](double c) {
+        return std::sqrt(std::max(0.0, 1.0 - invEta * invEta * (1.0 - c * c)));
+    };
+    const glm::dvec3 wt = glm::normalize(-v * invEta + n * (invEta * cosO - refractedCos(cosO)));
+    const glm::dvec3 sigmaS(md.ss_r, md.ss_g, md.ss_b), sigmaT(md.st_r, md.st_g, md.st_b);
+    const double sigma = std::min({sigmaT.x, sigmaT.y, sigmaT.z});
+    const uint32_t h = tsis_hash(tsis_hash(index) ^ seed);
+    const double kept = 1.0 - std::exp(-double(TSIS_SCATTER_DEPTH));
+    glm::dvec3 sum(0.0);
+    for (int k = 0; k < samples; ++k) {
+        const double u = (k + double(tsis_hash_unit(tsis_hash(h + uint32_t(k))))) / samples;
+        const double so = -std::log(1.0 - u * kept) / sigma;
+        const glm::dvec3 x = xo + so * wt;
+        ScatterEntry in = entry(x);
+        if (!in.lit) continue;
+        // As the kernel: from the straight line's entry, the tangent plane's
+        // refracted solution moved onto the surface, TSIS_SCATTER_ENTRY_STEPS
+        // times; none where it falls past what the light sees.
+        glm::dvec3 e, l;
+        double cosI = 0, cosT = 1, h2 = 0;
+        for (int it = 0;; ++it) {
+            e = glm::dvec3(light.rgb);
+            if (light.type == Light::Type::Point) {
+                const glm::dvec3 d = glm::dvec3(light.vec) - in.point;
+                e /= glm::dot(d, d);
+                l = glm::normalize(d);
+            } else {
+                l = -glm::normalize(glm::dvec3(light.vec));
+            }
+            const glm::dvec3 ni = glm::normalize(in.normal);
+            cosI = glm::dot(ni, l);
+            cosT = refractedCos(cosI);
+            h2 = glm::dot(in.point - x, ni);
+            if (!(h2 > 0)) {
+                if (it > 0) cosI = 0;
+                h2 = 0;
+                break;
+            }
+            if (!(cosI > 0) || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            const glm::dvec3 refracted = -l * invEta + ni * (invEta * cosI - cosT);
+            in = entry(x - refracted * (h2 / cosT));
+            if (!in.lit) {
+                cosI = 0;
+                break;
+            }
+        }
+        if (!(cosI > 0)) continue;
+        const glm::dvec3 w = glm::exp(-sigmaT * (h2 / cosT + so) + sigma * so) * (kept / sigma);
+        sum += w * (fresnelTransmittance(eta, cosI) * cosI / cosT) * e;
+    }
+    return sum * sigmaS * (invEta * invEta / (4.0 * M_PI * samples));
+}
+
+SingleScatter::SingleScatter(ClRuntime& cl)
+    : cl_(cl), kernel_(cl.kernel("single_scatter.cl", "tsis_single_scatter")) {}
+
+void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl,
+                            FrameGraphId<RadiosityImage> radiosity) {
+    graph.addPass(
+        "single_scatter",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.points);
+            b.read(ctx.lightMaps);
+            b.read(gl.gbuffer);
+            b.read(gl.lights);
+            b.read(radiosity);
+            b.write(radiosity);
+        },
+        [this, &ctx, gl, radiosity](FrameGraph::Resources& res) {
+            const SurfacePoints& points = res.read(ctx.points);
+            const LightMapsCl& maps = res.read(ctx.lightMaps);
+            const GlLights& lights = res.read(gl.lights);
+            const GlTarget& gbuffer = res.read(gl.gbuffer);
+            std::vector<float>& rgba = res.write(radiosity).rgba;
+            const size_t count = static_cast<size_t>(points.count);
+            if (count == 0) return;
+            cl::CommandQueue& queue = cl_.queue();
+            // The points' shading normals (the G-buffer's), with the points.
+            if (gbuffer.version != normalsOf_) {
+                const std::vector<float> all = gbuffer.target->readRGBA(1);
+                std::vector<float> normals(count * 4, 0.0f);
+                for (size_t k = 0; k < count; ++k)
+                    std::copy_n(&all[static_cast<size_t>(points.pixel[k]) * 4], 3, &normals[k * 4]);
+                queue.enqueueWriteBuffer(normals_.reserve(cl_.context(), count * 16), CL_TRUE, 0,
+                                         count * 16, normals.data());
+                normalsOf_ = gbuffer.version;
+            }
+            // The light views' normals, with the views.
+            const std::vector<LightView>& views = *lights.views;
+            TSIS_CHECK_EQ(maps.position.size(), views.size());
+            if (lights.version != lightNormalsOf_ || lightNormals_.size() != views.size()) {
+                lightNormals_.resize(views.size());
+                for (size_t l = 0; l < views.size(); ++l) {
+                    const std::vector<float> n = views[l].target->readRGBA(2);
+                    queue.enqueueWriteBuffer(
+                        lightNormals_[l].reserve(cl_.context(), n.size() * sizeof(float)), CL_TRUE,
+                        0, n.size() * sizeof(float), n.data());
+                }
+                lightNormalsOf_ = lights.version;
+            }
+            // Each medium's coefficients (tag − 1 indexes them).
+            const SceneMedia& sm = *ctx.media;
+            std::vector<TsisScatterMedium> media;
+            for (size_t m = 0; m < sm.etaOfMedium.size(); ++m)
+                media.push_back(scatterMedium(
+                    ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]]), ctx.options->exit));
+            const size_t mediaBytes = media.size() * sizeof(TsisScatterMedium);
+            cl::Buffer& mediaBuffer = media_.reserve(cl_.context(), mediaBytes);
+            queue.enqueueWriteBuffer(mediaBuffer, CL_TRUE, 0, mediaBytes, media.data());
+            cl::Buffer& out = out_.reserve(cl_.context(), count * 16);
+            const cl_float4 eye = {{ctx.eye.x, ctx.eye.y, ctx.eye.z, 0.0f}};
+            for (size_t l = 0; l < views.size(); ++l) {
+                const Light& light = views[l].light;
+                const TsisScatterLight sl = {
+                    light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
+                    light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
+                setKernelArgs(kernel_, points.xyz, normals_.buffer, points.count, eye, mediaBuffer,
+                              static_cast<int>(media.size()),
+                              lightMapInfo(views[l], ctx.lightResolution), sl, maps.position[l],
+                              lightNormals_[l].buffer, kSingleScatterSamples, frameSeed(ctx),
+                              l > 0 ? 1 : 0, out);
+                enqueue1D(queue, kernel_, count, kLocalSize, nullptr);
+            }
+            std::vector<float> b1(count * 4);
+            queue.enqueueReadBuffer(out, CL_TRUE, 0, count * 16, b1.data());
+            for (size_t k = 0; k < count; ++k)
+                for (int c = 0; c < 3; ++c)
+                    rgba[static_cast<size_t>(points.pixel[k]) * 4 + static_cast<size_t>(c)] +=
+                        b1[k * 4 + static_cast<size_t>(c)];
+            res.stats().set("single_scatter_samples", kSingleScatterSamples);
+        });
+}
+
+}  // namespace tsis

@@ -1,0 +1,60 @@
+// Jensen et al. 2001's single-scattering term L⁽¹⁾ (docs/design.md "Single
+// scattering"): light refracted in at xi, scattered once on the refracted
+// camera ray and refracted out at xo. A renderer-level term, added once per
+// frame to every profile method's radiosity (not volumetric's: its walk
+// holds single scattering already), as π·L⁽¹⁾/Ft(η, cos θo) over the exit
+// term's scale, so the composite's Ft/π·B·(scale) gives L⁽¹⁾ back.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "render/frame_graph.h"
+#include "render/method.h"
+#include "render/raster_passes.h"
+#include "single_scatter_shared.h"
+
+namespace tsis {
+
+// Distances drawn along each refracted camera ray per light (stratified,
+// jittered per point and stratum by a hash).
+constexpr int kSingleScatterSamples = 8;
+
+// The kernel's medium: σs′, σt′, η and π over the exit term's scale.
+TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit);
+
+// Where the light's ray to an interior point enters: the surface point and
+// its outward normal, or lit = false where no light of the point's medium
+// arrives (the light view's texel there).
+struct ScatterEntry {
+    bool lit = false;
+    glm::dvec3 point{0.0}, normal{0.0};
+};
+using EntryOf = std::function<ScatterEntry(const glm::dvec3& x)>;
+
+// The kernel's R = L⁽¹⁾/Ft(η, cos θo) at xo (normal n, seen from eye) for
+// one light, in double: the same draws (`index`: the point's, for its hashed
+// offset), the entry points from `entry`.
+glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& n, const glm::dvec3& eye,
+                             const TsisScatterMedium& medium, const Light& light,
+                             const EntryOf& entry, int samples, uint32_t seed, uint32_t index);
+
+// The frame's pass: B += to_radiosity·R at every covered point, summed over
+// the lights, after the methods' radiosity came back to the host.
+class SingleScatter {
+  public:
+    explicit SingleScatter(ClRuntime& cl);
+    void addPass(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl,
+                 FrameGraphId<RadiosityImage> radiosity);
+
+  private:
+    ClRuntime& cl_;
+    cl::Kernel kernel_;
+    GrowingBuffer normals_, media_, out_;
+    std::vector<GrowingBuffer> lightNormals_;
+    uint64_t normalsOf_ = 0, lightNormalsOf_ = 0;  // G-buffer and light-view versions
+};
+
+}  // namespace tsis

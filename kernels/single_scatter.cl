@@ -1,0 +1,130 @@
+/* Jensen et al. 2001's single-scattering term L(1) (docs/design.md "Single
+ * scattering"), per covered camera point xo and one light, as the radiosity
+ * the composite turns back into it: B1(xo) = to_radiosity * R,
+ * L(1) = Ft(eta, cos theta_o) * R,
+ *   R = sigma_s' p (1/K) sum_k Ft(eta, cos theta_i) E (cos theta_i / cos theta_ti)
+ *         / eta^2 * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o).
+ * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o) cut
+ * at TSIS_SCATTER_DEPTH / sigma (sigma the smallest channel's sigma_t', so
+ * every channel's weight stays below 1/sigma): K strata, each jittered by a
+ * hash of the point, the stratum and the seed. The entry: first the light
+ * view's surface at the draw's texel (Jensen's xi), then
+ * TSIS_SCATTER_ENTRY_STEPS times the point of that surface point's tangent
+ * plane whose refracted ray reaches x, moved onto the surface the light sees
+ * there; s_i' = (depth below the tangent plane) / cos theta_ti, the refracted
+ * path. E (cos theta_i / cos theta_ti) is the beam's irradiance inside and
+ * 1/eta^2 the radiance's change leaving the medium: Jensen 2001 leaves both
+ * out, the volumetric truth has them. Phase p = 1/(4 pi). */
+#include "fresnel.h"
+#include "hash.h"
+#include "light_map.h"
+#include "single_scatter_shared.h"
+
+/* The surface point the light sees at p's texel and its normal (false: no
+ * surface of medium `tag` there: the normal map's w is the tag, as the flux
+ * map's); *clip_w: p's clip w. */
+static inline bool tsis_scatter_surface(const TsisLightMapInfo* map,
+                                        const __global float4* position,
+                                        const __global float4* normal, const float tag,
+                                        const float3 p, float3* y, float3* n, float* clip_w) {
+    const float3 q = tsis_light_project(map, p);
+    const int t = tsis_light_texel(map, q.x, q.y);
+    if (t < 0) return false;
+    const float4 nt = normal[t];
+    if (nt.w != tag) return false;
+    *y = position[t].xyz;
+    *n = normalize(nt.xyz);
+    *clip_w = q.z;
+    return true;
+}
+
+kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
+                                const int count, const float4 eye,
+                                const __global TsisScatterMedium* media, const int media_count,
+                                const TsisLightMapInfo map, const TsisScatterLight light,
+                                const __global float4* position,
+                                const __global float4* light_normal, const int samples,
+                                const uint seed, const int accumulate, __global float4* out) {
+    const int j = get_global_id(0);
+    if (j >= count) return;
+    const float4 base = accumulate ? out[j] : (float4)(0.0f);
+    const float tag = points[j].w;
+    const int m = (int)(tag + 0.5f) - 1;
+    if (m < 0 || m >= media_count) {
+        out[j] = base;
+        return;
+    }
+    const TsisScatterMedium md = media[m];
+    const float3 xo = points[j].xyz;
+    float3 n = normalize(normals[j].xyz);
+    const float3 v = normalize(eye.xyz - xo);
+    float cos_o = dot(n, v);
+    /* As the composite: the side that faces the eye. */
+    if (cos_o < 0.0f) {
+        n = -n;
+        cos_o = -cos_o;
+    }
+    const float inv_eta = 1.0f / md.eta;
+    const float cos_to = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_o * cos_o)));
+    /* The camera ray refracted into the medium. */
+    const float3 wt = normalize(-v * inv_eta + n * (inv_eta * cos_o - cos_to));
+    const float3 sigma_s = (float3)(md.ss_r, md.ss_g, md.ss_b);
+    const float3 sigma_t = (float3)(md.st_r, md.st_g, md.st_b);
+    const float sigma = fmin(sigma_t.x, fmin(sigma_t.y, sigma_t.z));
+    const float3 e_light = (float3)(light.r, light.g, light.b);
+    const float3 light_vec = (float3)(light.x, light.y, light.z);
+    const uint h = tsis_hash(tsis_hash((uint)j) ^ seed);
+    /* The pdf's mass within TSIS_SCATTER_DEPTH mean free paths. */
+    const float kept = 1.0f - exp(-(float)TSIS_SCATTER_DEPTH);
+    float3 sum = (float3)(0.0f);
+    for (int k = 0; k < samples; ++k) {
+        const float u = ((float)k + tsis_hash_unit(tsis_hash(h + (uint)k))) / (float)samples;
+        const float so = -log(1.0f - u * kept) / sigma;
+        const float3 x = xo + so * wt;
+        float3 y, ny;
+        float clip_w;
+        if (!tsis_scatter_surface(&map, position, light_normal, tag, x, &y, &ny, &clip_w)) continue;
+        /* x in front of the light's first surface: outside the object. */
+        const float3 toward = light.type == 0 ? normalize(light_vec - x) : -normalize(light_vec);
+        if (dot(y - x, toward) < -map.tau_per_w * clip_w) continue;
+        /* The entry whose refracted ray reaches x: on y's tangent plane in
+         * closed form, then the surface the light sees there, again. */
+        float3 e, l;
+        float cos_i = 0.0f, cos_t = 1.0f, h2 = 0.0f;
+        for (int it = 0;; ++it) {
+            e = e_light;
+            if (light.type == 0) {
+                const float3 d = light_vec - y;
+                const float d2 = dot(d, d);
+                e /= d2;
+                l = d * rsqrt(d2);
+            } else {
+                l = -normalize(light_vec);
+            }
+            cos_i = dot(ny, l);
+            cos_t = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_i * cos_i)));
+            h2 = dot(y - x, ny);
+            /* x above a later step's tangent plane: no connection (at the
+             * first, x within a texel of the surface: none to cross). */
+            if (!(h2 > 0.0f)) {
+                if (it > 0) cos_i = 0.0f;
+                h2 = 0.0f;
+                break;
+            }
+            if (!(cos_i > 0.0f) || it == TSIS_SCATTER_ENTRY_STEPS) break;
+            const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
+            /* Past what the light sees: the entry would be at grazing
+             * incidence, where Ft cos theta_i -> 0. */
+            if (!tsis_scatter_surface(&map, position, light_normal, tag,
+                                      x - refracted * (h2 / cos_t), &y, &ny, &clip_w)) {
+                cos_i = 0.0f;
+                break;
+            }
+        }
+        if (!(cos_i > 0.0f)) continue;
+        const float3 w = exp(-sigma_t * (h2 / cos_t + so) + sigma * so) * (kept / sigma);
+        sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_t) * e;
+    }
+    const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F * (float)samples));
+    out[j] = base + (float4)(md.to_radiosity * r, 0.0f);
+}
