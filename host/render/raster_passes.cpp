@@ -129,47 +129,38 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             }
             res.write(h.geometryAtlas) = {&geometryAtlasPass_.target(), geometryVersion_};
         });
-    graph.addPass(
-        "gl_flux_atlas",
-        [&](FrameGraph::Builder& b) {
-            b.read(h.geometryAtlas);
-            b.read(h.lights);
-            b.write(h.fluxAtlas);
-        },
-        [this, &ctx, lighting, h](FrameGraph::Resources& res) {
-            if (fluxKey_ != lighting) {
-                const GlLights& lights = res.read(h.lights);
-                const RenderTarget& geometry = *res.read(h.geometryAtlas).target;
-                fluxAtlasPass_.run(geometry, *lights.views, *lights.shadows, materials_,
-                                   environmentTexture(ctx, geometry, res.stats()));
-                glFinish();
-                fluxKey_ = lighting;
-                ++fluxVersion_;
-            }
-            res.write(h.fluxAtlas) = {&fluxAtlasPass_.target(), fluxVersion_};
-        });
-    // The same pass without the lights, for the texture-space run that adds
-    // the residual to a light-view method (Renderer::render): by linearity
-    // the two runs' sum sees the whole atlas.
-    if (ctx.scene->env)
+    // The flux atlas (the lights' E and the environment's residual) and, for
+    // the texture-space run that adds the residual to a light-view method
+    // (Renderer::render), the same pass without the lights: by linearity the
+    // two runs' sum sees the whole atlas.
+    auto fluxPass = [&](const char* name, FrameGraphId<GlTarget> out, FluxAtlasPass& pass,
+                        uint64_t& key, uint64_t& version, bool withLights) {
         graph.addPass(
-            "gl_residual_flux_atlas",
+            name,
             [&](FrameGraph::Builder& b) {
                 b.read(h.geometryAtlas);
                 b.read(h.lights);
-                b.write(h.residualFluxAtlas);
+                b.write(out);
             },
-            [this, &ctx, lighting, h](FrameGraph::Resources& res) {
-                if (residualKey_ != lighting) {
+            [this, &ctx, lighting, h, out, &pass, &key, &version,
+             withLights](FrameGraph::Resources& res) {
+                if (key != lighting) {
+                    static const std::vector<LightView> none;
+                    const GlLights& lights = res.read(h.lights);
                     const RenderTarget& geometry = *res.read(h.geometryAtlas).target;
-                    residualFluxPass_.run(geometry, {}, *res.read(h.lights).shadows, materials_,
-                                          environmentTexture(ctx, geometry, res.stats()));
+                    pass.run(geometry, withLights ? *lights.views : none, *lights.shadows,
+                             materials_, environmentTexture(ctx, geometry, res.stats()));
                     glFinish();
-                    residualKey_ = lighting;
-                    ++residualVersion_;
+                    key = lighting;
+                    ++version;
                 }
-                res.write(h.residualFluxAtlas) = {&residualFluxPass_.target(), residualVersion_};
+                res.write(out) = {&pass.target(), version};
             });
+    };
+    fluxPass("gl_flux_atlas", h.fluxAtlas, fluxAtlasPass_, fluxKey_, fluxVersion_, true);
+    if (ctx.scene->env)
+        fluxPass("gl_residual_flux_atlas", h.residualFluxAtlas, residualFluxPass_, residualKey_,
+                 residualVersion_, false);
     graph.addPass(
         "gl_gbuffer",
         [&](FrameGraph::Builder& b) {
