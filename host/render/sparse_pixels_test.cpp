@@ -45,7 +45,10 @@ TEST(SparsePixels, LinearFieldIsExactOnAPlane) {
     // points plus the pixels past the last full cell (x = 17 is outside).
     EXPECT_LT(plan.evaluate.size(), size_t(w * h) / 4);
     std::vector<float> rgba(size_t(w * h) * 4, -1.0f);
-    auto field = [&](int k) { return 3.0f + 0.5f * (k % w) - 0.25f * (k / w); };
+    auto field = [&](int k) {
+        const int row = k / w, column = k % w;
+        return 3.0f + 0.5f * float(column) - 0.25f * float(row);
+    };
     for (int k : plan.evaluate)
         for (int c = 0; c < 4; ++c) rgba[size_t(k) * 4 + c] = field(k) * float(c + 1);
     interpolateSparsePixels(plan, rgba);
