@@ -116,7 +116,8 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     // Segmentation and flattening see the smoothed copy of a noisy scan
     // (smooth.cpp); the output keeps the mesh's own positions.
     int smoothing = 0;
-    const Mesh shape = chartingShape(mesh, adj, &smoothing);
+    const std::optional<Mesh> smoothed = smoothedForCharting(mesh, adj, &smoothing);
+    const Mesh& shape = smoothed ? *smoothed : mesh;
     if (debug) std::fprintf(stderr, "atlas smoothing: %d λ|μ steps\n", smoothing);
     std::vector<int> labels = segmentVSA(shape, adj.usable, proxies);
     stage("segmented");

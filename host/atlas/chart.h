@@ -7,6 +7,7 @@
 #include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,12 +50,14 @@ std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, i
 // between neighbouring faces exceeds kRoughDihedralDegrees (a noisy scan;
 // the data meshes: 3–12°) is charted on a copy smoothed by Taubin's λ|μ steps
 // (same connectivity) until that median is at most kSmoothDihedralDegrees;
-// other meshes as they are. `iterations`: the λ|μ pairs applied.
+// other meshes as they are (nullopt: no copy). `iterations`: the λ|μ pairs
+// applied.
 constexpr double kRoughDihedralDegrees = 20;
 constexpr double kSmoothDihedralDegrees = 10;
 constexpr int kMaxSmoothingIterations = 64;
 double medianDihedralDegrees(const Mesh& mesh, const Adjacency& adj);
-Mesh chartingShape(const Mesh& mesh, const Adjacency& adj, int* iterations = nullptr);
+std::optional<Mesh> smoothedForCharting(const Mesh& mesh, const Adjacency& adj,
+                                        int* iterations = nullptr);
 
 // parameterize.cpp — ARAP (λ = 1000) of a disk. Returns false (with a reason)
 // when CGAL reports an error; the result is not validated here.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 
 #include "atlas/chart.h"
 
@@ -43,47 +44,47 @@ double medianDihedralDegrees(const Mesh& mesh, const Adjacency& adj) {
     return double(*mid) * 180.0 / M_PI;
 }
 
-Mesh chartingShape(const Mesh& mesh, const Adjacency& adj, int* iterations) {
+std::optional<Mesh> smoothedForCharting(const Mesh& mesh, const Adjacency& adj, int* iterations) {
     int done = 0;
+    if (iterations) *iterations = 0;
+    if (medianDihedralDegrees(mesh, adj) <= kRoughDihedralDegrees) return std::nullopt;
     Mesh shape = mesh;
-    if (medianDihedralDegrees(mesh, adj) > kRoughDihedralDegrees) {
-        // Each vertex's neighbours through the triangles' edges.
-        std::vector<std::vector<uint32_t>> ring(mesh.positions.size());
-        for (const glm::uvec3& t : mesh.triangles)
-            for (int k = 0; k < 3; ++k) {
-                ring[t[k]].push_back(t[(k + 1) % 3]);
-                ring[t[k]].push_back(t[(k + 2) % 3]);
-            }
-        for (auto& r : ring) {
-            std::sort(r.begin(), r.end());
-            r.erase(std::unique(r.begin(), r.end()), r.end());
+    // Each vertex's neighbours through the triangles' edges.
+    std::vector<std::vector<uint32_t>> ring(mesh.positions.size());
+    for (const glm::uvec3& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            ring[t[k]].push_back(t[(k + 1) % 3]);
+            ring[t[k]].push_back(t[(k + 2) % 3]);
         }
-        // Taubin's λ|μ steps (1995): smooth without shrinking.
-        std::vector<glm::dvec3> p(mesh.positions.begin(), mesh.positions.end()), next(p.size());
-        auto step = [&](double factor) {
-            for (size_t v = 0; v < p.size(); ++v) {
-                if (ring[v].empty()) {
-                    next[v] = p[v];
-                    continue;
-                }
-                glm::dvec3 mean(0.0);
-                for (uint32_t u : ring[v]) mean += p[u];
-                mean /= double(ring[v].size());
-                next[v] = p[v] + factor * (mean - p[v]);
-            }
-            p.swap(next);
-        };
-        while (done < kMaxSmoothingIterations) {
-            step(0.5);
-            step(-0.53);
-            ++done;
-            if (done % 4 == 0) {
-                for (size_t v = 0; v < p.size(); ++v) shape.positions[v] = glm::vec3(p[v]);
-                if (medianDihedralDegrees(shape, adj) <= kSmoothDihedralDegrees) break;
-            }
-        }
-        for (size_t v = 0; v < p.size(); ++v) shape.positions[v] = glm::vec3(p[v]);
+    for (auto& r : ring) {
+        std::sort(r.begin(), r.end());
+        r.erase(std::unique(r.begin(), r.end()), r.end());
     }
+    // Taubin's λ|μ steps (1995): smooth without shrinking.
+    std::vector<glm::dvec3> p(mesh.positions.begin(), mesh.positions.end()), next(p.size());
+    auto step = [&](double factor) {
+        for (size_t v = 0; v < p.size(); ++v) {
+            if (ring[v].empty()) {
+                next[v] = p[v];
+                continue;
+            }
+            glm::dvec3 mean(0.0);
+            for (uint32_t u : ring[v]) mean += p[u];
+            mean /= double(ring[v].size());
+            next[v] = p[v] + factor * (mean - p[v]);
+        }
+        p.swap(next);
+    };
+    while (done < kMaxSmoothingIterations) {
+        step(0.5);
+        step(-0.53);
+        ++done;
+        if (done % 4 == 0) {
+            for (size_t v = 0; v < p.size(); ++v) shape.positions[v] = glm::vec3(p[v]);
+            if (medianDihedralDegrees(shape, adj) <= kSmoothDihedralDegrees) break;
+        }
+    }
+    for (size_t v = 0; v < p.size(); ++v) shape.positions[v] = glm::vec3(p[v]);
     if (iterations) *iterations = done;
     return shape;
 }
