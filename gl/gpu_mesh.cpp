@@ -4,6 +4,7 @@
 
 #include "gl/gl_context.h"
 #include "mesh/media.h"
+#include "mesh/weld.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -69,6 +70,29 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
         vertices.insert(vertices.end(),
                         {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v]), uv.x, uv.y});
     }
+    uploadIndexed(vertices, kIndexedStride, mesh);
+    closedOutward_ = tsis::closedOutward(mesh);
+    floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
+    floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
+    floatAttribute(2, 2, kIndexedStride * sizeof(float), 7);  // uv (albedo atlas)
+    glBindVertexArray(0);
+    checkGl("GpuMesh upload");
+}
+
+GpuMesh::GpuMesh(const Mesh& mesh, PositionsOnly) {
+    std::vector<float> vertices;
+    vertices.reserve(mesh.positions.size() * 3);
+    for (const glm::vec3& p : mesh.positions) vertices.insert(vertices.end(), {p.x, p.y, p.z});
+    uploadIndexed(vertices, 3, mesh);
+    closedOutward_ = tsis::closedOutward(mesh);
+    count_ = mesh.triangles.size() * 3;
+    glBindVertexArray(0);
+    checkGl("GpuMesh upload (positions)");
+}
+
+// The indexed VAO bound, its vertex buffer (position first of `stride`
+// floats) and the triangles uploaded.
+void GpuMesh::uploadIndexed(const std::vector<float>& vertices, int stride, const Mesh& mesh) {
     glGenVertexArrays(1, &indexedVao_);
     glBindVertexArray(indexedVao_);
     glGenBuffers(1, &indexedVbo_);
@@ -80,12 +104,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
                  mesh.triangles.data(), GL_STATIC_DRAW);
-    floatAttribute(0, 3, kIndexedStride * sizeof(float), 0);  // position
-    floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
-    floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
-    floatAttribute(2, 2, kIndexedStride * sizeof(float), 7);  // uv (albedo atlas)
-    glBindVertexArray(0);
-    checkGl("GpuMesh upload");
+    floatAttribute(0, 3, stride * static_cast<GLsizei>(sizeof(float)), 0);  // position
 }
 
 GpuMesh::~GpuMesh() {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "gl/gl.h"
 #include "mesh/mesh.h"
@@ -17,6 +18,10 @@ class GpuMesh {
     // Attributes: 0 position, 1 normal, 2 uv, 4 medium tag (mesh/media.h);
     // unindexed only: 3 area ratio.
     explicit GpuMesh(const Mesh& mesh);
+    // Positions and triangles only, for a light's depth (mesh/lod.h): draw()
+    // alone is valid, the other attributes read their defaults.
+    struct PositionsOnly {};
+    GpuMesh(const Mesh& mesh, PositionsOnly);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
@@ -24,12 +29,16 @@ class GpuMesh {
     void draw() const;                         // indexed: positions, normals, uvs
     void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
+    // Closed and wound outward (mesh/weld.h): a light's depth may cull back faces.
+    bool closedOutward() const { return closedOutward_; }
 
   private:
     GLuint vao_ = 0, vbo_ = 0;                          // unindexed
     GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
+    void uploadIndexed(const std::vector<float>& vertices, int stride, const Mesh& mesh);
     uint32_t media_ = 1;
+    bool closedOutward_ = false;
 };
 
 }  // namespace tsis

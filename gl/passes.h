@@ -24,9 +24,11 @@ class LightViewPass {
   public:
     LightViewPass();
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
-    // Only the views `changed` (indices into lights), the others' kept.
+    // Only the views `changed` (indices into lights), the others' kept; a
+    // view without maps drawn from `depthMesh` when given (a coarser copy:
+    // its LightView::lodMm set by the caller).
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media,
-             const std::vector<size_t>& changed);
+             const std::vector<size_t>& changed, const GpuMesh* depthMesh = nullptr);
     // The shadow maps of the last run, for the passes that light.
     const ShadowMapArray& shadows() const { return shadows_; }
 
@@ -68,12 +70,13 @@ class FluxAtlasPass {
 // `irradiance` (for the camera-view methods), E at each pixel's surface point
 // (attachments 0, 1, 2), to which `envIrradiance` (0: none; FluxAtlasPass's)
 // adds the environment's residual at each pixel's atlas texel. Each variant
-// is compiled on first use.
+// is compiled on first use. `cull`: back faces culled (the caller knows the
+// mesh is closed and outward and the eye outside it).
 class GBufferPass {
   public:
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
-             int width, int height, bool irradiance, GLuint envIrradiance = 0);
+             int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false);
     const RenderTarget& target() const { return *variants_[current_].target; }
 
   private:

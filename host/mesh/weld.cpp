@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/common.hpp>
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
@@ -120,6 +121,66 @@ std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32
     std::vector<char> on(mesh.triangles.size(), 0);
     forEachBoundaryEdge(sortedEdges(mesh, weld), [&](const WeldedEdge& e) { on[e.triangle] = 1; });
     return on;
+}
+
+bool closedOutward(const Mesh& mesh) {
+    if (mesh.triangles.empty()) return false;
+    // Positions by their bits.
+    struct BitsHash {
+        size_t operator()(const glm::vec3& p) const {
+            uint64_t h = 1469598103934665603ull;
+            for (int k = 0; k < 3; ++k) {
+                uint32_t b;
+                std::memcpy(&b, &p[k], sizeof b);
+                h = (h ^ b) * 1099511628211ull;
+            }
+            return size_t(h);
+        }
+    };
+    std::unordered_map<glm::vec3, uint32_t, BitsHash> idOf;
+    idOf.reserve(mesh.positions.size());
+    std::vector<uint32_t> id(mesh.positions.size());
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+        id[v] = idOf.try_emplace(mesh.positions[v], uint32_t(idOf.size())).first->second;
+    // Every undirected edge twice, once each way: sorted by (edge, direction).
+    std::vector<uint64_t> edges;
+    edges.reserve(mesh.triangles.size() * 3);
+    // (A triangle with two corners on one point covers nothing: its other
+    // two edges would pair with each other.)
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::uvec3 w(id[t.x], id[t.y], id[t.z]);
+        if (w.x == w.y || w.y == w.z || w.x == w.z) continue;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = w[k], b = w[(k + 1) % 3];
+            edges.push_back((uint64_t(std::min(a, b)) << 32 | std::max(a, b)) << 1 | (a < b));
+        }
+    }
+    if (edges.empty()) return false;
+    std::sort(edges.begin(), edges.end());
+    for (size_t i = 0; i < edges.size(); i += 2)
+        if (i + 1 >= edges.size() || edges[i] >> 1 != edges[i + 1] >> 1 || (edges[i] & 1) != 0 ||
+            (edges[i + 1] & 1) != 1 || (i + 2 < edges.size() && edges[i + 2] >> 1 == edges[i] >> 1))
+            return false;
+    // Parts (union-find over the welded ids) and each one's signed volume.
+    std::vector<uint32_t> parent(idOf.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = uint32_t(i);
+    auto root = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const glm::uvec3& t : mesh.triangles) {
+        parent[root(id[t.y])] = root(id[t.x]);
+        parent[root(id[t.z])] = root(id[t.x]);
+    }
+    std::unordered_map<uint32_t, double> volume;
+    const glm::dvec3 o(mesh.positions[mesh.triangles[0].x]);
+    for (const glm::uvec3& t : mesh.triangles) {
+        const glm::dvec3 a = glm::dvec3(mesh.positions[t.x]) - o,
+                         b = glm::dvec3(mesh.positions[t.y]) - o,
+                         c = glm::dvec3(mesh.positions[t.z]) - o;
+        volume[root(id[t.x])] += glm::dot(a, glm::cross(b, c));
+    }
+    return std::all_of(volume.begin(), volume.end(), [](const auto& v) { return v.second > 0; });
 }
 
 }  // namespace tsis

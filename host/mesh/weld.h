@@ -25,4 +25,11 @@ size_t boundaryEdges(const Mesh& mesh);
 // (weldPositions).
 std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32_t>& weld);
 
+// Whether every connected part of the mesh is a closed surface wound outward:
+// each edge between bit-identical positions used once in each direction, and
+// each part's signed volume positive. From a light outside such a mesh every
+// ray meets a front face first, so a depth pass may cull the back ones. A
+// seam whose copies differ in a bit reads as open (no culling: safe).
+bool closedOutward(const Mesh& mesh);
+
 }  // namespace tsis

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "mesh/builtin.h"
 
 namespace tsis {
@@ -27,6 +29,35 @@ TEST(Weld, SeamsDoNotOpenAClosedSurface) {
     EXPECT_EQ(boundaryEdges(builtinSphere()), 0u);
     EXPECT_EQ(boundaryEdges(builtinDefault()), 0u);
     EXPECT_EQ(boundaryEdges(builtinPlane()), 4u * 32u);
+}
+
+// Closed and outward: a tetrahedron and a cube from bit-identical copies of
+// their corners (a seam); not when a face is missing, when the winding is
+// inward, or when one of two parts is inward even though the sum is outward.
+TEST(Weld, ClosedOutwardNeedsEveryPartClosedAndWoundOut) {
+    Mesh tetra;
+    tetra.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}};
+    tetra.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    EXPECT_TRUE(closedOutward(tetra));
+    Mesh seam = tetra;  // the last face from copies of its corners
+    seam.positions.insert(seam.positions.end(), {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}});
+    seam.triangles[3] = {4, 5, 6};
+    seam.triangles.push_back({0, 0, 1});  // a sliver on one point: ignored
+    EXPECT_TRUE(closedOutward(seam));
+    Mesh open = tetra;
+    open.triangles.pop_back();
+    EXPECT_FALSE(closedOutward(open));
+    Mesh inward = tetra;
+    for (glm::uvec3& t : inward.triangles) std::swap(t.y, t.z);
+    EXPECT_FALSE(closedOutward(inward));
+    // A big outward tetrahedron and a small inward one beside it.
+    Mesh two = tetra;
+    for (glm::vec3& p : two.positions) p *= 5.0f;
+    for (const glm::vec3& p : inward.positions) two.positions.push_back(p + glm::vec3(20, 0, 0));
+    for (const glm::uvec3& t : inward.triangles) two.triangles.push_back(t + 4u);
+    EXPECT_FALSE(closedOutward(two));
+    EXPECT_TRUE(closedOutward(builtinDefault()));
+    EXPECT_FALSE(closedOutward(builtinPlane()));
 }
 
 }  // namespace

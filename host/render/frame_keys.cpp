@@ -51,10 +51,13 @@ uint64_t lightingKey(const Scene& scene, const RenderOptions& o, uint64_t meshHa
 }
 
 uint64_t lightViewKey(const Light& light, uint64_t meshHash, int resolution, bool maps,
-                      uint64_t shading) {
+                      uint64_t shading, int lodTriangles) {
     Hasher h(meshHash);
     h.add(light.type).add(light.vec).add(light.rgb).add(light.shadows).add(resolution).add(maps);
-    if (maps) h.add(shading);
+    if (maps)
+        h.add(shading);
+    else
+        h.add(lodTriangles);
     return h.digest();
 }
 

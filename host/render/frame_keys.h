@@ -30,9 +30,11 @@ uint64_t lightingKey(const Scene& scene, const RenderOptions& options, uint64_t 
 // One light's view (its shadow map, and flux and position maps when `maps`):
 // the light field by field, the mesh, the map resolution and, for the maps,
 // `shading` (what the flux map reads of the materials: η per medium, the
-// albedo atlas' key). A frame redraws only the views whose key changed.
+// albedo atlas' key), without them `lodTriangles` (--light-lod: the copy a
+// big mesh's depth is drawn from). A frame redraws only the views whose key
+// changed.
 uint64_t lightViewKey(const Light& light, uint64_t meshHash, int resolution, bool maps,
-                      uint64_t shading);
+                      uint64_t shading, int lodTriangles);
 
 // Everything that changes the radiosity a frame computes, except the sample
 // set: frames with equal keys may be averaged. The parameters come from their

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "image/image_io.h"
+#include "mesh/lod.h"
 #include "physics/ggx.h"
 #include "render/env_reflection.h"
 #include "render/frame_keys.h"
@@ -40,12 +41,37 @@ void filterLinear(const FloatTexture& t, bool wrapS) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrapS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
 }
 
+// The camera's passes may cull back faces: the mesh is closed and outward and
+// the eye outside its bounding sphere (so outside the mesh).
+bool cullsBackFaces(const FrameContext& ctx, const GpuMesh& mesh) {
+    return mesh.closedOutward() && glm::length(ctx.eye) > ctx.boundingRadius;
+}
+
 }  // namespace
 
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
     if (gpuMesh_ && hash == meshHash_) return;
     gpuMesh_ = std::make_unique<GpuMesh>(mesh);
     meshHash_ = hash;
+}
+
+const GpuMesh* RasterPasses::depthMesh(const Mesh& mesh, int budget, FrameStats& stats) {
+    const bool coarser = budget > 0 && mesh.triangles.size() > 2 * size_t(budget);
+    if (lodKey_ != std::make_pair(meshHash_, budget)) {
+        lodMesh_.reset();
+        lodMm_ = 0;
+        lodTriangles_ = 0;
+        if (coarser) {
+            const MeshLod lod = clusterLod(mesh, lodCellForBudget(mesh, size_t(budget)));
+            lodMesh_ = std::make_unique<GpuMesh>(lod.mesh, GpuMesh::PositionsOnly{});
+            lodMm_ = lod.deviationMm;
+            lodTriangles_ = lod.mesh.triangles.size();
+        }
+        lodKey_ = {meshHash_, budget};
+    }
+    stats.set("light_lod_triangles", static_cast<double>(lodTriangles_));
+    stats.set("light_lod_mm", lodMm_);
+    return lodMesh_.get();
 }
 
 RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx, uint64_t meshHash,
@@ -91,13 +117,16 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             // Each view is redrawn only when its own key changed: a frame that
             // moves one light of several redraws that one.
             const std::vector<Light>& lights = ctx.scene->lights;
+            // A big mesh's depth-only views from its coarser copy.
+            const int lod = ctx.options->lightLodTriangles;
+            const GpuMesh* depth = maps ? nullptr : depthMesh(ctx.scene->mesh, lod, res.stats());
             const uint64_t shading = Hasher(eta).add(ctx.albedo->key).add(normals).digest();
             lights_.resize(lights.size());
             viewKeys_.resize(lights.size(), 0);
             std::vector<size_t> changed;
             for (size_t i = 0; i < lights.size(); ++i) {
                 const uint64_t key =
-                    lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading);
+                    lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading, lod);
                 if (key == viewKeys_[i]) continue;
                 updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
                                 maps, normals);
@@ -105,12 +134,14 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 changed.push_back(i);
             }
             if (!changed.empty()) {
-                lightPass_.run(*res.read(h.mesh), lights_, materials_, changed);
+                lightPass_.run(*res.read(h.mesh), lights_, materials_, changed, depth);
                 glFinish();
                 ++lightsVersion_;
             }
             lightViewKey_ = lighting;
             res.stats().set("light_views_drawn", static_cast<double>(changed.size()));
+            res.stats().set("light_views_cull",
+                            (depth ? depth : res.read(h.mesh))->closedOutward() ? 1.0 : 0.0);
             res.write(h.lights) = {&lights_, &lightPass_.shadows(), lightsVersion_};
         });
     // The geometry atlas depends on the mesh and resolution only: made once.
@@ -186,7 +217,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                         ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
                         : 0;
                 gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, materials_,
-                                 ctx.viewProj, ctx.width, ctx.height, irradiance, env);
+                                 ctx.viewProj, ctx.width, ctx.height, irradiance, env,
+                                 cullsBackFaces(ctx, *res.read(h.mesh)));
                 glFinish();
                 gbufferKey_ = key.digest();
                 ++gbufferVersion_;
@@ -216,7 +248,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 const GlLights& lights = res.read(h.lights);
                 sampleGbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows,
                                        materials_, ctx.viewProj, ctx.width * aa, ctx.height * aa,
-                                       false);
+                                       false, 0, cullsBackFaces(ctx, *res.read(h.mesh)));
                 glFinish();
                 samplesKey_ = key.digest();
                 ++samplesVersion_;

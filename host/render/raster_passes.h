@@ -80,6 +80,10 @@ class RasterPasses {
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
+    // What the shadow maps are drawn from: the coarser copy (mesh/lod.h) of a
+    // mesh over 2 × `budget` triangles, made once per mesh and budget; null
+    // for the mesh itself.
+    const GpuMesh* depthMesh(const Mesh& mesh, int budget, FrameStats& stats);
     // The environment residual's E per atlas texel as a texture (0 without --env).
     GLuint environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
                               FrameStats& stats);
@@ -102,6 +106,10 @@ class RasterPasses {
     uint64_t envPrefilteredKey_ = 0, envAlbedoKey_ = 0;
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
+    std::unique_ptr<GpuMesh> lodMesh_;
+    std::pair<uint64_t, int> lodKey_{0, -1};  // (mesh hash, budget)
+    float lodMm_ = 0;                         // its deviation (MeshLod)
+    size_t lodTriangles_ = 0;
     std::vector<LightView> lights_;
     std::vector<uint64_t> viewKeys_;  // per light view: what it was drawn for (frame_keys.h)
     // What the targets hold: lighting keys (0 = nothing) and versions.

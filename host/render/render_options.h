@@ -55,6 +55,9 @@ struct RenderOptions {
     // Shadow map and light-view flux map; 0 = from the object's size in
     // diffusion lengths (autoLightResolution in render/renderer.h)
     int lightResolution = 0;
+    // The shadow maps of a mesh of over twice this many triangles are drawn
+    // from a coarser copy of about this many (mesh/lod.h); 0 = always the mesh.
+    int lightLodTriangles = 200000;
     int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
     // The display (docs/design.md "The composite"): radiance × 2^exposure before the tone

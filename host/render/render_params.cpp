@@ -175,6 +175,11 @@ std::vector<RenderParam> makeParams() {
                 "diffusion lengths 1/max σtr across, else 1024",
                 kEvery, kLighting},
                &O::lightResolution, {16, 8192, false, true}),
+        number({"light-lod",
+                "T  a mesh of over 2T triangles casts its shadows from a coarser copy of about T "
+                "(the offset grows by the copy's deviation); 0 = always the mesh itself",
+                kEvery, kLighting},
+               &O::lightLodTriangles, {0, 1 << 30}),
         number({"exposure",
                 "EV  radiance × 2^EV before the tone curve (fixed: the same for every frame and "
                 "light; README \"Exposure, reflection and antialiasing\")",

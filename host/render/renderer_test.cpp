@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "scene/environment.h"
 #include "support/render.h"
 
@@ -70,6 +72,39 @@ TEST(Renderer, MovingOneLightRedrawsOnlyItsView) {
         EXPECT_EQ(scratch.radiosity.pixels, kept.radiosity.pixels);
         EXPECT_EQ(scratch.rgb8, kept.rgb8);
     }
+}
+
+// A mesh over twice --light-lod triangles casts its shadows from a coarser
+// copy (mesh/lod.h): the torus' thin top shadows its body as closely to the
+// reference as the mesh's own shadows. A budget of half the mesh or more,
+// and the views with maps (the light-view methods read positions from
+// them), draw the mesh itself, to the bit.
+TEST(Renderer, BigMeshCastsShadowsFromACoarserCopy) {
+    const Scene scene = test::torusScene("marble", 50.0);
+    const size_t triangles = scene.mesh.triangles.size();
+    RenderOptions own = test::smallOptions(64, 256, 256);
+    own.lightLodTriangles = 0;
+    RenderOptions coarse = own;
+    coarse.lightLodTriangles = static_cast<int>(triangles / 8);
+    RenderOptions half = own;
+    half.lightLodTriangles = static_cast<int>(triangles / 2);
+    const FrameResult reference = test::renderWith(scene, own, "reference");
+    const FrameResult a = test::renderWith(scene, own, "pyramid");
+    EXPECT_EQ(a.stats.number("light_lod_triangles"), 0);
+    const FrameResult b = test::renderWith(scene, coarse, "pyramid");
+    EXPECT_GT(b.stats.number("light_lod_triangles"), 0.0);
+    EXPECT_LT(b.stats.number("light_lod_triangles"), double(triangles) / 4);
+    EXPECT_GT(b.stats.number("light_lod_mm"), 0.0);
+    const double errOwn = test::relativeRmse(a, reference);
+    const double errCoarse = test::relativeRmse(b, reference);
+    std::printf(
+        "%zu triangles, copy %.0f (deviation %.4f mm): rel. RMSE vs reference %.4f -> %.4f\n",
+        triangles, b.stats.number("light_lod_triangles"), b.stats.number("light_lod_mm"), errOwn,
+        errCoarse);
+    EXPECT_LT(errCoarse, errOwn + 0.002);
+    EXPECT_EQ(test::renderWith(scene, half, "pyramid").radiosity.pixels, a.radiosity.pixels);
+    EXPECT_EQ(test::renderWith(scene, coarse, "ltsm").radiosity.pixels,
+              test::renderWith(scene, own, "ltsm").radiosity.pixels);
 }
 
 // Under a sky without a sun and a dark light, what ltsm and tsm give is the
