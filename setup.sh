@@ -11,6 +11,8 @@
 #   ./setup.sh python     install + build + install `import tsis` for /usr/bin/python3
 #   ./setup.sh clang      build everything with clang and -Werror into build-clang/ (CI)
 #   ./setup.sh tidy       clang-tidy (.clang-tidy) on the C++ files changed since .ci/tidy-base (CI)
+#   ./setup.sh bench-blender [ARGS…]  install Blender (only if missing) and time tsis against EEVEE's
+#                         viewport side by side: bench/eevee_side_by_side.sh ARGS → bench/results/eevee.md
 #
 # Idempotent; run as root on a fresh machine (or with the packages present).
 set -euo pipefail
@@ -104,10 +106,14 @@ sanitize_build() {
 if [ "${1:-}" = fuzz ]; then
   PACKAGES+=(libclang-rt-14-dev)
 fi
+# Blender is large and only this benchmark needs it: never in the default list.
+if [ "${1:-}" = bench-blender ]; then
+  PACKAGES+=(blender)
+fi
 install_packages
 unpack_meshes
 case "${1:-}" in
-  fuzz | sanitize | sanitize-quick | clang | tidy) ;;
+  fuzz | sanitize | sanitize-quick | clang | tidy | bench-blender) ;;
   *) build ;;
 esac
 case "${1:-}" in
@@ -146,6 +152,10 @@ case "${1:-}" in
     [ -f "$CLANG_DIR/compile_commands.json" ] || clang_build
     .ci/tidy "$CLANG_DIR"
     ;;
+  bench-blender)
+    # Builds tsis and bench_frame in build-bench/ (TSIS_BENCH_BUILD) itself.
+    bench/eevee_side_by_side.sh "${@:2}"
+    ;;
   "") ;;
-  *) log "unknown step '$1' (render, test, fuzz, sanitize, sanitize-quick, python, clang or tidy)"; exit 2 ;;
+  *) log "unknown step '$1' (render, test, fuzz, sanitize, sanitize-quick, python, clang, tidy or bench-blender)"; exit 2 ;;
 esac

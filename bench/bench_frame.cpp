@@ -18,6 +18,13 @@
 // TSIS_BEFORE, the older binary's composite stage (`render --frames`) in the
 // same run. `bench_frame --composite` measures only this and replaces that
 // section of frame.md.
+//
+// `bench_frame --side-by-side [--frames N] [RENDER ARGS…]` (issue 25, for
+// bench/eevee_side_by_side.sh) writes nothing: for the scene RENDER ARGS make
+// (`--mesh cow --material marble`), today's defaults with the light orbiting
+// and with the camera orbiting (lighting reused), N frames each after one
+// warm-up frame, it prints one line: `TSIS light_moving_ms=… camera_moving_ms=…
+// frames=N gl_renderer=…` (medians of the whole frame, the stage `total`).
 #include <unistd.h>
 
 #include <algorithm>
@@ -151,6 +158,7 @@ std::string compositeSection(Renderer& renderer, int frames) {
         firsts.push_back(renderer.render(c.scene, c.options));
         c.options.keepAovs = false;
         std::vector<FrameStats> stats;
+        stats.reserve(frames);
         for (int f = 0; f < frames; ++f)
             stats.push_back(
                 renderer.render(orbit(c.scene, f + 1, frames + 1, true), c.options).stats);
@@ -173,7 +181,32 @@ std::string compositeSection(Renderer& renderer, int frames) {
     return md;
 }
 
+// The two medians of --side-by-side: the light orbiting, then the camera.
+int sideBySide(const BenchArgs& a) {
+    std::vector<std::string> args;
+    for (const std::string& s : a.rest)
+        if (s != "--side-by-side") args.push_back(s);
+    Renderer renderer;
+    double ms[2] = {0, 0};
+    for (int camera = 0; camera < 2; ++camera) {
+        BenchCase c = makeCase(args);
+        c.options.reuseLighting = camera == 1;
+        renderer.render(c.scene, c.options);  // warm-up: programs, atlas, first light maps
+        std::vector<FrameStats> frames;
+        frames.reserve(a.frames);
+        for (int f = 0; f < a.frames; ++f)
+            frames.push_back(
+                renderer.render(orbit(c.scene, f + 1, a.frames + 1, camera == 1), c.options).stats);
+        ms[camera] = summarize(stageSums(frames, {"total"})).median;
+    }
+    std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f frames=%d gl_renderer=%s\n", ms[0],
+                ms[1], a.frames, renderer.glRenderer().c_str());
+    return 0;
+}
+
 int run(const BenchArgs& a) {
+    if (std::find(a.rest.begin(), a.rest.end(), "--side-by-side") != a.rest.end())
+        return sideBySide(a);
     if (std::find(a.rest.begin(), a.rest.end(), "--composite") != a.rest.end()) {
         Renderer renderer;
         const std::string section = compositeSection(renderer, a.frames);
@@ -214,7 +247,8 @@ int run(const BenchArgs& a) {
         "pyramid); *now, camera moving* = the same, the camera orbiting instead of the light, "
         "so the light maps and the flux atlas are reused (the method's passes still run). rel. "
         "RMSE = radiance against `--method reference` on the first frame's view and "
-        "lighting.\n";
+        "lighting. Against EEVEE's viewport on the same machine, side by side: "
+        "`bench/eevee_side_by_side.sh` → eevee.md.\n";
     Progress progress("frame", static_cast<long long>(meshes.size() * configs.size()));
     long long done = 0;
     for (const std::string& mesh : meshes) {
@@ -235,6 +269,7 @@ int run(const BenchArgs& a) {
             const double err = relativeRmse(renderer.render(c.scene, c.options), ref);
             c.options.keepAovs = false;
             std::vector<FrameStats> frames;
+            frames.reserve(a.frames);
             for (int f = 0; f < a.frames; ++f)
                 frames.push_back(
                     renderer
