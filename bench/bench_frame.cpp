@@ -37,7 +37,13 @@
 #include <sstream>
 
 #include "bench_common.h"
+#include "gl/gpu_mesh.h"
+#include "gl/render_target.h"
+#include "gl/shader.h"
+#include "mesh/weld.h"
+#include "scene/projection.h"
 #include "util/progress.h"
+#include "util/timer.h"
 
 namespace tsis::bench {
 namespace {
@@ -204,9 +210,134 @@ int sideBySide(const BenchArgs& a) {
     return 0;
 }
 
+// Median ms of `body` (GL work) over `n` runs, each ended by glFinish.
+template <typename F>
+double glMs(int n, F body) {
+    std::vector<double> ms;
+    for (int i = 0; i < n; ++i) {
+        const Timer t;
+        body();
+        glFinish();
+        ms.push_back(t.ms());
+    }
+    return summarize(ms).median;
+}
+
+// `bench_frame --gl-floors`: each GL pass of the default scene's frame
+// against its floor on this GL — the same targets and triangles with
+// constant shaders (gl/shaders/floor.frag), and the clears and read-backs
+// alone — in rounds that interleave the two (bench/results/gl_floors.md).
+int glFloors(const BenchArgs& a) {
+    Renderer renderer;
+    BenchCase c = makeCase({});
+    const FrameStats first = renderer.render(c.scene, c.options).stats;
+    const int lightRes = static_cast<int>(first.number("light_resolution"));
+    const int atlasRes = c.options.atlasResolution, w = c.options.width, h = c.options.height,
+              aa = c.options.aa;
+    const size_t lights = c.scene.lights.size();
+    GlContext gl;
+    const ShaderProgram depthOnly("mesh.vert", "depth.frag"), meshFloor("mesh.vert", "floor.frag"),
+        screenFloor("fullscreen.vert", "floor.frag");
+    const GpuMesh mesh(c.scene.mesh, GpuMesh::PositionsOnly{});
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    RenderTarget depth(lightRes, lightRes, {}, true);
+    RenderTarget atlas(atlasRes, atlasRes, {GL_RGBA32F, GL_RGBA32F}, false);
+    RenderTarget frame(w, h, {GL_RGBA32F, GL_RGBA32F}, true);
+    RenderTarget samples(w * aa, h * aa, {GL_RGBA32F, GL_RGBA32F}, true);
+    RenderTarget display(w, h, {GL_RGBA8}, false);
+    const float radius = boundingRadius(c.scene.mesh);
+    const glm::mat4 lightViewProj = lightProjection(c.scene.lights[0], radius, lightRes).viewProj;
+    const glm::mat4 viewProj = cameraViewProj(c.scene.camera, float(w) / float(h), radius);
+    auto drawMesh = [&](const ShaderProgram& p, RenderTarget& t, const glm::mat4& m, bool cull) {
+        t.bindAndClear();
+        p.use();
+        p.set("u_viewProj", m);
+        glEnable(GL_DEPTH_TEST);
+        if (cull) glEnable(GL_CULL_FACE);
+        mesh.draw();
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_DEPTH_TEST);
+    };
+    auto fullScreen = [&](RenderTarget& t) {
+        t.bindAndClear();
+        screenFloor.use();
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    const int n = std::max(3, a.frames);
+    std::map<std::string, std::vector<double>> now, floors;
+    const std::vector<std::string> lightStages = {"gl_light_view", "gl_flux_atlas", "composite"},
+                                   cameraStages = {"gl_gbuffer", "gl_composite_samples"};
+    const bool cull = closedOutward(c.scene.mesh);
+    for (int round = 0; round < 3; ++round) {
+        for (int camera = 0; camera < 2; ++camera) {
+            BenchCase k = c;
+            k.options.reuseLighting = camera == 1;
+            std::vector<FrameStats> frames;
+            for (int f = 0; f < n; ++f)
+                frames.push_back(
+                    renderer.render(orbit(k.scene, f + 1, n + 1, camera == 1), k.options).stats);
+            for (const std::string& st : camera ? cameraStages : lightStages)
+                now[st].push_back(summarize(stageSums(frames, {st})).median);
+        }
+        gl.makeCurrent();
+        floors["light view: clear"].push_back(glMs(n, [&] { depth.bindAndClear(); }) *
+                                              double(lights));
+        floors["light view: clear + depth of the mesh"].push_back(
+            glMs(n, [&] { drawMesh(depthOnly, depth, lightViewProj, cull); }) * double(lights));
+        floors["flux atlas: constant full-screen pass"].push_back(
+            glMs(n, [&] { fullScreen(atlas); }));
+        floors["G-buffer: clear + constant mesh pass"].push_back(
+            glMs(n, [&] { drawMesh(meshFloor, frame, viewProj, cull); }));
+        floors["composite samples: clear + constant mesh pass"].push_back(
+            glMs(n, [&] { drawMesh(meshFloor, samples, viewProj, cull); }));
+        floors["composite: constant full-screen pass + 8-bit read-back"].push_back(glMs(n, [&] {
+            fullScreen(display);
+            (void)display.readRGBA8(0);
+        }));
+    }
+    glDeleteVertexArrays(1, &vao);
+    const std::vector<std::pair<std::string, std::string>> rows = {
+        {"gl_light_view", "light view: clear + depth of the mesh"},
+        {"gl_flux_atlas", "flux atlas: constant full-screen pass"},
+        {"gl_gbuffer", "G-buffer: clear + constant mesh pass"},
+        {"gl_composite_samples", "composite samples: clear + constant mesh pass"},
+        {"composite", "composite: constant full-screen pass + 8-bit read-back"}};
+    Table t({"pass", "now ms", "floor ms", "its floor", "what is left: shading"});
+    for (const auto& [stage, floor] : rows) {
+        const double nowMs = summarize(now[stage]).median,
+                     floorMs = summarize(floors[floor]).median;
+        t.add({"`" + stage + "`", fmt(nowMs, 1), fmt(floorMs, 1), floor, fmt(nowMs - floorMs, 1)});
+    }
+    std::string md =
+        "# Each GL pass against its floor on this GL\n\nMade by `build-bench/bench/bench_frame "
+        "--gl-floors` on " +
+        timestamp() + ".\nMachine: " + machineLine(renderer) +
+        ".\nDefault scene, today's defaults (" + std::to_string(w) + "×" + std::to_string(h) +
+        ", --aa " + std::to_string(aa) + ", atlas " + std::to_string(atlasRes) + "², light maps " +
+        std::to_string(lightRes) + "², " + std::to_string(lights) + " lights, " +
+        std::to_string(c.scene.mesh.triangles.size()) +
+        " triangles). *now*: the pass in the frame (light moving for the light view, flux atlas "
+        "and composite; camera moving for the G-buffers), median of 3 rounds of " +
+        std::to_string(n) +
+        " frames. *floor*: the same targets and triangles with constant shaders "
+        "(`gl/shaders/floor.frag`), back faces culled where the frame culls them, a clear per "
+        "light view, median of 3 rounds interleaved with the frames. What is left is the "
+        "shading the pass does: the part a faster shader could cut; the floor is what llvmpipe "
+        "costs for the pass' pixels and triangles whatever the shader.\n\n" +
+        t.markdown() +
+        "\nThe light views' clear alone: " + fmt(summarize(floors["light view: clear"]).median, 1) +
+        " ms.\n";
+    writeResult("gl_floors.md", md);
+    std::printf("%s", md.c_str());
+    return 0;
+}
+
 int run(const BenchArgs& a) {
     if (std::find(a.rest.begin(), a.rest.end(), "--side-by-side") != a.rest.end())
         return sideBySide(a);
+    if (std::find(a.rest.begin(), a.rest.end(), "--gl-floors") != a.rest.end()) return glFloors(a);
     if (std::find(a.rest.begin(), a.rest.end(), "--composite") != a.rest.end()) {
         Renderer renderer;
         const std::string section = compositeSection(renderer, a.frames);

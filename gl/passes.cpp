@@ -4,6 +4,7 @@
 
 #include "gl/gl_context.h"
 #include "util/error.h"
+#include "util/hash.h"
 
 namespace tsis {
 
@@ -151,8 +152,36 @@ CompositePass::CompositePass()
     glGenVertexArrays(1, &emptyVao_);
 }
 
+CompositePass::~CompositePass() {
+    if (edgeVbo_) glDeleteBuffers(1, &edgeVbo_);
+    if (edgeVao_) glDeleteVertexArrays(1, &edgeVao_);
+}
+
+// The centre pass' marks read back (1 byte of 4 per pixel) and listed.
+void CompositePass::updateEdgePoints(uint64_t key) {
+    if (edgeVao_ && key == edgesKey_) return;
+    const int w = centreTarget_->width(), h = centreTarget_->height();
+    const std::vector<unsigned char> marks = centreTarget_->readRGBA8(1);
+    std::vector<float> points;
+    for (int i = 0; i < w * h; ++i)
+        if (marks[size_t(i) * 4] != 0) points.insert(points.end(), {float(i % w), float(i / w)});
+    if (!edgeVao_) {
+        glGenVertexArrays(1, &edgeVao_);
+        glGenBuffers(1, &edgeVbo_);
+        glBindVertexArray(edgeVao_);
+        glBindBuffer(GL_ARRAY_BUFFER, edgeVbo_);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, edgeVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(points.size() * sizeof(float)),
+                 points.data(), GL_DYNAMIC_DRAW);
+    edgeCount_ = static_cast<GLsizei>(points.size() / 2);
+    edgesKey_ = key;
+}
+
 void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
-                             const RenderTarget& sampleGbuffer, int aa,
+                             uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                              const glm::vec3& eye, const MaterialTables& materials, float alpha,
                              const EnvReflectionTextures& env) {
@@ -210,6 +239,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     glDisable(GL_DEPTH_TEST);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
+        updateEdgePoints(Hasher(gbufferVersion).add(w).add(h).add(aa).digest());
         ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
         sampleTarget_->bind();
         sampleProgram_.use();
@@ -218,9 +248,11 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         bindTexture(sampleProgram_, "u_framePosition", 1, frameGbuffer.color(0));
         bindTexture(sampleProgram_, "u_normal", 2, sampleGbuffer.color(1));
         bindTexture(sampleProgram_, "u_position", 3, sampleGbuffer.color(0));
-        bindTexture(sampleProgram_, "u_edges", 5, centreTarget_->color(1));
+        sampleProgram_.set("u_frameSize", glm::vec2(w, h));
         glEnable(GL_PROGRAM_POINT_SIZE);
-        glDrawArrays(GL_POINTS, 0, w * h);
+        glBindVertexArray(edgeVao_);
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glBindVertexArray(emptyVao_);
         glDisable(GL_PROGRAM_POINT_SIZE);
     }
     checkGl("CompositePass::radiance");

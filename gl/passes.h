@@ -107,16 +107,21 @@ struct EnvReflectionTextures {
 class CompositePass {
   public:
     CompositePass();
+    ~CompositePass();
+    CompositePass(const CompositePass&) = delete;
+    CompositePass& operator=(const CompositePass&) = delete;
     // radiosity: B at the frame's pixels, RGBA floats, GL row order.
     // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
     // `materials`: η and the exit term's factor over Ft/π (render_options.h
     // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe;
-    // `env`: the environment's reflection. Then toneMap(), or resolve()
-    // first where the log-average or the radiance is needed before it.
+    // `env`: the environment's reflection. `gbufferVersion`: changes when the
+    // frame's G-buffer (and so the pixels to supersample) does. Then
+    // toneMap(), or resolve() first where the log-average or the radiance is
+    // needed before it.
     void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
-                  const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
-                  const ShadowMapArray& shadows, const glm::vec3& eye,
-                  const MaterialTables& materials, float alpha,
+                  uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
+                  const std::vector<LightView>& lights, const ShadowMapArray& shadows,
+                  const glm::vec3& eye, const MaterialTables& materials, float alpha,
                   const EnvReflectionTextures& env = {});
     // The frame's radiance (frameRadiance()) and log luminance, without the
     // display image.
@@ -148,6 +153,12 @@ class CompositePass {
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     int aa_ = 1;
     GLuint emptyVao_ = 0;
+    // The supersampled pixels as points (x, y), listed again only when the
+    // G-buffer changed: the marks follow the camera, not the lights.
+    GLuint edgeVao_ = 0, edgeVbo_ = 0;
+    GLsizei edgeCount_ = 0;
+    uint64_t edgesKey_ = 0;
+    void updateEdgePoints(uint64_t key);
 };
 
 }  // namespace tsis

@@ -1,17 +1,14 @@
-// One point per frame pixel, u_aa samples wide: on the composite's sample
-// grid it covers the pixel's u_aa × u_aa samples. Only the pixels marked in
-// u_edges are drawn (the others are moved outside the clip volume), so the
-// samples are shaded only where a silhouette or depth jump passes: a
-// fullscreen pass that discards elsewhere costs llvmpipe nearly as much as
-// shading every sample.
-uniform sampler2D u_edges;
+// One point per supersampled frame pixel (CompositePass keeps their list,
+// made from the centre pass' marks when the G-buffer changes), u_aa samples
+// wide: on the composite's sample grid it covers the pixel's u_aa × u_aa
+// samples, so only they are shaded (a fullscreen pass that discards the
+// others costs llvmpipe nearly as much as shading every sample, and a point
+// for every pixel costs its vertex pipeline 262K vertices at 512²).
+layout(location = 0) in vec2 a_pixel;
+uniform vec2 u_frameSize;
 uniform int u_aa;
 
 void main() {
-    ivec2 size = textureSize(u_edges, 0);
-    ivec2 c = ivec2(gl_VertexID % size.x, gl_VertexID / size.x);
     gl_PointSize = float(u_aa);
-    gl_Position = texelFetch(u_edges, c, 0).r > 0.0
-                      ? vec4((vec2(c) + 0.5) / vec2(size) * 2.0 - 1.0, 0.0, 1.0)
-                      : vec4(2.0, 2.0, 2.0, 1.0);
+    gl_Position = vec4((a_pixel + 0.5) / u_frameSize * 2.0 - 1.0, 0.0, 1.0);
 }

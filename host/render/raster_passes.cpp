@@ -341,9 +341,10 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             const GlLights& lights = res.read(gl.lights);
             FrameImage& out = res.write(image);
             const float alpha = o.specular ? static_cast<float>(ggxAlpha(o.roughness)) : 0.0f;
-            compositePass_.radiance(res.read(radiosity).rgba.data(), *res.read(gl.gbuffer).target,
-                                    *res.read(gl.samples).target, o.aa, *lights.views,
-                                    *lights.shadows, ctx.eye, materials_, alpha,
+            const GlTarget& gbuffer = res.read(gl.gbuffer);
+            compositePass_.radiance(res.read(radiosity).rgba.data(), *gbuffer.target,
+                                    gbuffer.version, *res.read(gl.samples).target, o.aa,
+                                    *lights.views, *lights.shadows, ctx.eye, materials_, alpha,
                                     environmentReflection(ctx, res.stats()));
             // The frame's radiance as floats only for the AOVs; the
             // log-average from the GPU's sums, before the tone curve only
