@@ -147,7 +147,10 @@ CompositePass::CompositePass()
       uncoveredProgram_("fullscreen.vert", "radiance.frag", "#define TSIS_COMPOSITE_UNCOVERED 1\n"),
       sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
+      resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
       toneMapProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_TONE_MAP 1\n"),
+      toneMapEdgesProgram_("edge_points.vert", "resolve.frag",
+                           "#define TSIS_TONE_MAP 1\n#define TSIS_RESOLVE_EDGES 1\n"),
       reduceProgram_("fullscreen.vert", "reduce.frag") {
     glGenVertexArrays(1, &emptyVao_);
 }
@@ -249,6 +252,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         bindTexture(sampleProgram_, "u_normal", 2, sampleGbuffer.color(1));
         bindTexture(sampleProgram_, "u_position", 3, sampleGbuffer.color(0));
         sampleProgram_.set("u_frameSize", glm::vec2(w, h));
+        sampleProgram_.set("u_pointSize", static_cast<float>(aa));
         glEnable(GL_PROGRAM_POINT_SIZE);
         glBindVertexArray(edgeVao_);
         glDrawArrays(GL_POINTS, 0, edgeCount_);
@@ -258,24 +262,33 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     checkGl("CompositePass::radiance");
 }
 
-void CompositePass::resolveInto(const ShaderProgram& program, std::unique_ptr<RenderTarget>& target,
+void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgram& edges,
+                                std::unique_ptr<RenderTarget>& target,
                                 std::vector<GLenum> formats) {
     const int w = centreTarget_->width(), h = centreTarget_->height();
     ensureTarget(target, w, h, std::move(formats), false);
     target->bindAndClear();
-    program.use();
-    program.set("u_aa", aa_);
-    bindTexture(program, "u_centre", 0, centreTarget_->color(0));
-    // At 1× no pixel is marked and the samples are never read.
-    bindTexture(program, "u_samples", 1, (aa_ > 1 ? *sampleTarget_ : *centreTarget_).color(0));
-    bindTexture(program, "u_edges", 2, centreTarget_->color(1));
+    centres.use();
+    bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    // At 1× no pixel is marked and the samples are never read.
+    if (aa_ > 1 && edgeCount_ > 0) {
+        edges.use();
+        edges.set("u_aa", aa_);
+        edges.set("u_pointSize", 1.0f);
+        edges.set("u_frameSize", glm::vec2(w, h));
+        bindTexture(edges, "u_centre", 0, centreTarget_->color(0));
+        bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
+        glBindVertexArray(edgeVao_);
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glBindVertexArray(emptyVao_);
+    }
     logLuminance_ = target.get();
 }
 
 void CompositePass::resolve() {
-    resolveInto(resolveProgram_, frameTarget_, {GL_RGBA32F, GL_RGBA32F});
+    resolveInto(resolveProgram_, resolveEdgesProgram_, frameTarget_, {GL_RGBA32F, GL_RGBA32F});
     checkGl("CompositePass::resolve");
 }
 
@@ -285,9 +298,11 @@ std::vector<float> CompositePass::frameRadiance() const {
 }
 
 void CompositePass::toneMap(float scale) {
-    toneMapProgram_.use();
-    toneMapProgram_.set("u_scale", scale);
-    resolveInto(toneMapProgram_, colorTarget_, {GL_RGBA8, GL_RGBA32F});
+    for (const ShaderProgram* p : {&toneMapProgram_, &toneMapEdgesProgram_}) {
+        p->use();
+        p->set("u_scale", scale);
+    }
+    resolveInto(toneMapProgram_, toneMapEdgesProgram_, colorTarget_, {GL_RGBA8, GL_RGBA32F});
     checkGl("CompositePass::toneMap");
 }
 

@@ -140,11 +140,13 @@ class CompositePass {
 
   private:
     // resolve.frag into `target` (its attachment 1: the log luminance).
-    void resolveInto(const ShaderProgram& program, std::unique_ptr<RenderTarget>& target,
-                     std::vector<GLenum> formats);
+    // The centres full-screen, then the supersampled pixels' averages (a
+    // point each) over them.
+    void resolveInto(const ShaderProgram& centres, const ShaderProgram& edges,
+                     std::unique_ptr<RenderTarget>& target, std::vector<GLenum> formats);
 
     ShaderProgram centreProgram_, uncoveredProgram_, sampleProgram_, resolveProgram_,
-        toneMapProgram_, reduceProgram_;
+        resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded

@@ -10,9 +10,13 @@
 // --auto-exposure), through Reinhard's curve Ls/(1 + Ls), in a supersampled
 // pixel the samples averaged (a box filter; after the curve, so that a
 // highlight does not flood its silhouette pixel), then sRGB.
+//
+// Two variants: a full-screen pass of the centres, then, with
+// TSIS_RESOLVE_EDGES, a point on each supersampled pixel (edge_points.vert)
+// over it — llvmpipe runs both sides of a branch, so one pass with both would
+// average samples at every pixel.
 uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
-uniform sampler2D u_samples;  // u_aa × the size; read where u_edges is set
-uniform sampler2D u_edges;
+uniform sampler2D u_samples;  // u_aa × the size; read at the supersampled pixels
 uniform int u_aa;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_logLuminance;
@@ -39,12 +43,13 @@ void main() {
     vec3 display = vec3(0.0);
 #endif
     vec4 radiance;
-    if (texelFetch(u_edges, px, 0).r == 0.0) {
-        radiance = texelFetch(u_centre, px, 0);
+#ifndef TSIS_RESOLVE_EDGES
+    radiance = texelFetch(u_centre, px, 0);
 #ifdef TSIS_TONE_MAP
-        display = exposed(radiance, background);
+    display = exposed(radiance, background);
 #endif
-    } else {
+#else
+    {
         vec3 sum = vec3(0.0);
         float covered = 0.0;
         for (int j = 0; j < u_aa; ++j)
@@ -62,6 +67,7 @@ void main() {
         display /= float(u_aa * u_aa);
 #endif
     }
+#endif
     o_logLuminance = radiance.a > 0.0
                          ? vec4(log(1e-12 + max(0.0, dot(LUMA, radiance.rgb))), 1.0, 0.0, 0.0)
                          : vec4(0.0);
