@@ -57,7 +57,7 @@ struct RenderOptions {
     int lightResolution = 0;
     // The shadow maps of a mesh of over twice this many triangles are drawn
     // from a coarser copy of about this many (mesh/lod.h); 0 = always the mesh.
-    int lightLodTriangles = 200000;
+    int lightLodTriangles = 300000;
     int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
     // The display (docs/design.md "The composite"): radiance × 2^exposure before the tone

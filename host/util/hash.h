@@ -1,8 +1,10 @@
-// 64-bit FNV-1a: cache keys and change detection (fast, not cryptographic).
+// 64-bit FNV-1a: cache keys and change detection (fast, not cryptographic);
+// long arrays through bulkHash.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -21,6 +23,27 @@ inline uint64_t fnv1a(const void* data, size_t bytes, uint64_t h = kFnvBasis) {
     return h;
 }
 
+// Long buffers (a mesh's arrays, hashed every frame): four independent 64-bit
+// lanes of multiply-rotate mixing, 8 bytes a step, then FNV-1a over the tail
+// and the lanes — an order of magnitude faster than FNV-1a's byte a step,
+// whose multiplies chain (a 1.2M-triangle mesh: ~40 ms a frame).
+inline uint64_t bulkHash(const void* data, size_t bytes, uint64_t h = kFnvBasis) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    uint64_t lane[4] = {h ^ 0x9e3779b97f4a7c15ull, h ^ 0xbf58476d1ce4e5b9ull,
+                        h ^ 0x94d049bb133111ebull, h ^ 0x2545f4914f6cdd1dull};
+    size_t i = 0;
+    for (; i + 32 <= bytes; i += 32)
+        for (int k = 0; k < 4; ++k) {
+            uint64_t v;
+            std::memcpy(&v, p + i + 8 * k, sizeof v);
+            const uint64_t x = lane[k] ^ (v * 0x9e3779b97f4a7c15ull);
+            lane[k] = ((x << 31) | (x >> 33)) * 0xbf58476d1ce4e5b9ull;
+        }
+    h = fnv1a(p + i, bytes - i, h);
+    h = fnv1a(lane, sizeof lane, h);
+    return fnv1a(&bytes, sizeof bytes, h);
+}
+
 // Feeds values field by field (never whole structs: their padding is not data).
 class Hasher {
   public:
@@ -33,7 +56,7 @@ class Hasher {
     }
     template <typename T>
     Hasher& addAll(const std::vector<T>& values) {
-        h_ = fnv1a(values.data(), values.size() * sizeof(T), h_);
+        h_ = bulkHash(values.data(), values.size() * sizeof(T), h_);
         return *this;
     }
     Hasher& add(std::string_view s) {
