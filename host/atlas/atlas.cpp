@@ -85,6 +85,22 @@ constexpr double kMaxChartAspect = 3;
 // per border face).
 constexpr int kMaxBorderRadius = 3;
 
+// Segmentation of a mesh with at least kParallelSegmentFaces usable faces runs
+// in parts of about kSegmentPartFaces (2 to 16; segmentVSA), in parallel: VSA
+// is single-threaded and was half of a 1.2M-triangle scan's build. The part
+// count follows the mesh, not the thread count, so that an atlas (and the
+// cache entry it is stored under) is the same on any machine. The noisy scan
+// (1.2M triangles) in 2, 4 and 8 parts: 2127, 2018 and 2045 charts (whole:
+// 2190), coverage 0.60 each; in 8 parts on 2 cores VSA takes half the CPU
+// time and a third of the wall time (bench/results/atlas_build.md).
+constexpr size_t kParallelSegmentFaces = 200000;
+constexpr size_t kSegmentPartFaces = 150000;
+constexpr int kMaxSegmentParts = 16;
+int segmentParts(size_t usable) {
+    if (usable < kParallelSegmentFaces) return 1;
+    return std::clamp(int(usable / kSegmentPartFaces), 2, kMaxSegmentParts);
+}
+
 Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats* stats,
                            std::vector<uint32_t>* sourceVertex) {
     const Timer timer;
@@ -119,7 +135,11 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     const std::optional<Mesh> smoothed = smoothedForCharting(mesh, adj, &smoothing);
     const Mesh& shape = smoothed ? *smoothed : mesh;
     if (debug) std::fprintf(stderr, "atlas smoothing: %d λ|μ steps\n", smoothing);
-    std::vector<int> labels = segmentVSA(shape, adj.usable, proxies);
+    stage("shape");
+    const int threads = opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
+    const int parts = segmentParts(usable);
+    if (debug) std::fprintf(stderr, "atlas segmentation: %d parts\n", parts);
+    std::vector<int> labels = segmentVSA(shape, adj, proxies, parts, threads);
     stage("segmented");
     progress.update(400);
     if (labels.empty()) labels = patchLabels(adj, facesPerProxy);
@@ -147,9 +167,7 @@ Mesh buildAtlasWithSources(const Mesh& mesh, const AtlasOptions& opt, AtlasStats
     std::vector<PackChart> packIn;
     packIn.reserve(charts.size());
     for (const Chart& c : charts) packIn.push_back({&c.uv, &c.mesh.triangles});
-    const PackResult packed =
-        packCharts(packIn, opt.resolution, opt.gutterTexels,
-                   opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency()));
+    const PackResult packed = packCharts(packIn, opt.resolution, opt.gutterTexels, threads);
     stage("packed");
     progress.update(950);
 

@@ -6,7 +6,8 @@
 //             segmented and flattened as a smoothed copy (Taubin λ|μ, same
 //             connectivity; chart.h, smooth.cpp); the output keeps its positions;
 //   segment   Variational Shape Approximation (CGAL), proxies = max(50, faces/200)
-//             up to a cap (AtlasOptions); labels smoothed (edge and vertex-ring
+//             up to a cap (AtlasOptions); from 200K faces in parts of ~150K
+//             faces, in parallel (segmentVSA in chart.h); labels smoothed (edge and vertex-ring
 //             majority filters; under the cap also a strict majority over up to
 //             3 vertex rings, which straightens borders), pieces under 1/10 of
 //             a proxy's faces merged into a neighbour (charts.cpp);

@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "atlas/cache.h"
@@ -221,6 +222,86 @@ TEST(Atlas, BorderFilterStraightensTeeth) {
     EXPECT_EQ(borderEdges(adj, straight), size_t(2 * segments));
     const size_t zeros = size_t(std::count(straight.begin(), straight.end(), 0));
     EXPECT_NEAR(double(zeros) / double(straight.size()), 0.5, 0.1);
+}
+
+// Connected pieces (across edges) of each value of `labels` (-1 skipped), summed.
+size_t pieces(const atlas::Adjacency& adj, const std::vector<int>& labels) {
+    UnionFind u{labels.size()};
+    for (size_t f = 0; f < labels.size(); ++f)
+        for (int g : adj.across[f])
+            if (g >= 0 && labels[f] >= 0 && labels[size_t(g)] == labels[f])
+                u.unite(uint32_t(f), uint32_t(g));
+    size_t n = 0;
+    for (size_t f = 0; f < labels.size(); ++f) n += labels[f] >= 0 && u.find(uint32_t(f)) == f;
+    return n;
+}
+
+// A flat U of 30 × 60 grid cells (arms 10 wide along y, a base 10 high), cut
+// in two across y at the median: the upper part is the two arm tips. The tip
+// cut off from its part joins the other part, so each part is one piece.
+TEST(Atlas, SplitPartsAreConnected) {
+    Mesh u;
+    u.name = "test:U";
+    const int w = 30, h = 60;
+    for (int j = 0; j <= h; ++j)
+        for (int i = 0; i <= w; ++i) u.positions.emplace_back(i, j, 0);
+    auto at = [&](int i, int j) { return unsigned(j * (w + 1) + i); };
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            if (j < 10 || i < 10 || i >= 20) {
+                u.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+                u.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+            }
+    const atlas::Adjacency adj = atlas::buildAdjacency(u);
+    const std::vector<int> part = atlas::splitFaces(u, adj, 2);
+    EXPECT_EQ(std::count(part.begin(), part.end(), -1), 0);
+    EXPECT_EQ(pieces(adj, part), 2u);
+    // The upper half is the two tips; one of them is left (a quarter of the faces).
+    EXPECT_EQ(size_t(std::count(part.begin(), part.end(), 1)), u.triangles.size() / 4);
+
+    // A sphere in 4: parts of about equal size, each one piece.
+    const Mesh sphere = test::sphereMesh(60, 120);
+    const atlas::Adjacency sadj = atlas::buildAdjacency(sphere);
+    const std::vector<int> quarters = atlas::splitFaces(sphere, sadj, 4);
+    EXPECT_EQ(pieces(sadj, quarters), 4u);
+    for (int p = 0; p < 4; ++p)
+        EXPECT_NEAR(double(std::count(quarters.begin(), quarters.end(), p)),
+                    double(sphere.triangles.size()) / 4, 0.02 * double(sphere.triangles.size()))
+            << p;
+}
+
+// Segmentation in 4 parts (as a big mesh is segmented, kParallelSegmentFaces
+// in atlas.cpp): the same labels on 1, 2 or 4 threads and run after run;
+// labels unique across parts and about as many, as connected and, once
+// smoothed, with about as long borders as the whole mesh segmented at once.
+TEST(Atlas, SegmentationInPartsIsDeterministicAndAsGood) {
+    const Mesh sphere = test::sphereMesh(100, 200);
+    const atlas::Adjacency adj = atlas::buildAdjacency(sphere);
+    const int proxies = 40, parts = 4;
+    std::vector<int> whole = atlas::segmentVSA(sphere, adj, proxies);
+    std::vector<int> parted = atlas::segmentVSA(sphere, adj, proxies, parts, 2);
+    ASSERT_EQ(parted.size(), sphere.triangles.size());
+    EXPECT_EQ(parted, atlas::segmentVSA(sphere, adj, proxies, parts, 1));
+    EXPECT_EQ(parted, atlas::segmentVSA(sphere, adj, proxies, parts, 4));
+    EXPECT_EQ(parted, atlas::segmentVSA(sphere, adj, proxies, parts, 2));
+
+    const std::vector<int> part = atlas::splitFaces(sphere, adj, parts);
+    std::map<int, int> partOf;  // label -> its part
+    for (size_t f = 0; f < parted.size(); ++f) {
+        ASSERT_GE(parted[f], 0);
+        const auto [it, fresh] = partOf.emplace(parted[f], part[f]);
+        EXPECT_EQ(it->second, part[f]) << "label " << parted[f] << " in two parts";
+    }
+    const std::set<int> wholeLabels(whole.begin(), whole.end());
+    EXPECT_NEAR(double(partOf.size()), double(wholeLabels.size()), 0.1 * proxies);
+    EXPECT_LE(double(pieces(adj, parted)), 1.1 * double(partOf.size()));
+    const int minFaces = int(sphere.triangles.size()) / proxies / 10;
+    atlas::smoothLabels(sphere, adj, whole, minFaces, 1);
+    atlas::smoothLabels(sphere, adj, parted, minFaces, 1);
+    std::printf("  whole: %zu pieces, %zu border edges; in %d parts: %zu pieces, %zu edges\n",
+                pieces(adj, whole), borderEdges(adj, whole), parts, pieces(adj, parted),
+                borderEdges(adj, parted));
+    EXPECT_LE(double(borderEdges(adj, parted)), 1.15 * double(borderEdges(adj, whole)));
 }
 
 // Many triangles under a small proxy cap (charts of ~2000 faces, the border

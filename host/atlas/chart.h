@@ -44,7 +44,19 @@ struct ChartMesh {
 // segment.cpp — VSA labels per face (-1 for unusable faces), or an empty
 // vector when CGAL cannot make a polygon mesh of the soup or it has at least
 // `proxies` connected components (VSA would cost components × faces).
-std::vector<int> segmentVSA(const Mesh& mesh, const std::vector<char>& usable, int proxies);
+// parts > 1: the usable faces cut into that many parts (splitFaces), each
+// segmented on its own with proxies in proportion to its faces, on up to
+// `threads` threads; labels are unique across parts and do not depend on
+// `threads`. A part CGAL cannot segment makes it segment the whole mesh.
+std::vector<int> segmentVSA(const Mesh& mesh, const Adjacency& adj, int proxies, int parts = 1,
+                            int threads = 1);
+
+// split.cpp — a part (0 … parts−1) per usable face, -1 for unusable ones: the
+// faces' centroids cut recursively across the longest side of their bounding
+// box into parts of about equal face count; then pieces of a part cut off
+// from its largest piece join the neighbouring part they share most edges
+// with, so each part is one face-connected piece where the mesh allows.
+std::vector<int> splitFaces(const Mesh& mesh, const Adjacency& adj, int parts);
 
 // smooth.cpp — the shape charts are made of. A mesh whose median angle
 // between neighbouring faces exceeds kRoughDihedralDegrees (a noisy scan;
