@@ -166,8 +166,10 @@ void CompositePass::updateEdgePoints(uint64_t key) {
     const int w = centreTarget_->width(), h = centreTarget_->height();
     const std::vector<unsigned char> marks = centreTarget_->readRGBA8(1);
     std::vector<float> points;
-    for (int i = 0; i < w * h; ++i)
-        if (marks[size_t(i) * 4] != 0) points.insert(points.end(), {float(i % w), float(i / w)});
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (marks[(size_t(y) * size_t(w) + size_t(x)) * 4] != 0)
+                points.insert(points.end(), {float(x), float(y)});
     if (!edgeVao_) {
         glGenVertexArrays(1, &edgeVao_);
         glGenBuffers(1, &edgeVbo_);
