@@ -2,6 +2,7 @@
 // only: the CGAL code stays in segment.cpp and parameterize.cpp.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -9,6 +10,8 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -30,6 +33,45 @@ struct Adjacency {
     std::vector<std::array<int, 3>> across;  // neighbour face or -1
     std::vector<char> usable;                // non-degenerate faces
 };
+
+// One round of merging pieces into their neighbours: every labelled face f
+// (label ≥ 0) whose piece `pieceOf(f)` `moves(piece, f)` takes the label its
+// piece shares the most edges with across `adj` (ties: the smallest label).
+// The counts are made before any label changes. False when no moving piece
+// touches another label.
+template <typename PieceOf, typename Moves>
+bool moveToMostSharedLabel(const Adjacency& adj, std::vector<int>& labels, PieceOf pieceOf,
+                           Moves moves) {
+    std::unordered_map<size_t, std::vector<std::pair<int, int>>> border;  // piece -> (label, edges)
+    for (size_t f = 0; f < labels.size(); ++f) {
+        if (labels[f] < 0) continue;
+        const size_t piece = pieceOf(f);
+        if (!moves(piece, f)) continue;
+        for (const int g : adj.across[f]) {
+            if (g < 0 || labels[size_t(g)] < 0 || labels[size_t(g)] == labels[f]) continue;
+            auto& list = border[piece];
+            auto it = std::find_if(list.begin(), list.end(),
+                                   [&](const auto& p) { return p.first == labels[size_t(g)]; });
+            if (it == list.end())
+                list.emplace_back(labels[size_t(g)], 1);
+            else
+                ++it->second;
+        }
+    }
+    if (border.empty()) return false;
+    std::unordered_map<size_t, int> target;
+    for (const auto& [piece, list] : border) {
+        auto best = list.front();
+        for (const auto& p : list)
+            if (p.second > best.second || (p.second == best.second && p.first < best.first))
+                best = p;
+        target[piece] = best.first;
+    }
+    for (size_t f = 0; f < labels.size(); ++f)
+        if (labels[f] >= 0)
+            if (auto it = target.find(pieceOf(f)); it != target.end()) labels[f] = it->second;
+    return true;
+}
 Adjacency buildAdjacency(const Mesh& mesh);
 
 // A topological disk ready for parameterisation: local vertices (a vertex of

@@ -391,37 +391,10 @@ void smoothLabels(const Mesh& mesh, const Adjacency& adj, std::vector<int>& labe
         std::vector<int> size(n, 0);
         for (size_t f = 0; f < n; ++f)
             if (labels[f] >= 0) ++size[comps.find(int(f))];
-        std::unordered_map<int, std::vector<std::pair<int, int>>> border;  // root -> (label, edges)
-        for (size_t f = 0; f < n; ++f) {
-            if (labels[f] < 0) continue;
-            const int r = comps.find(int(f));
-            if (size[r] >= minFaces) continue;
-            for (int e = 0; e < 3; ++e) {
-                const int g = adj.across[f][e];
-                if (g < 0 || labels[g] < 0 || labels[g] == labels[f]) continue;
-                auto& list = border[r];
-                auto it = std::find_if(list.begin(), list.end(),
-                                       [&](auto& p) { return p.first == labels[g]; });
-                if (it == list.end())
-                    list.emplace_back(labels[g], 1);
-                else
-                    ++it->second;
-            }
-        }
-        if (border.empty()) break;
-        std::unordered_map<int, int> target;
-        for (auto& [r, list] : border) {
-            auto best = list.front();
-            for (auto p : list)
-                if (p.second > best.second || (p.second == best.second && p.first < best.first))
-                    best = p;
-            target[r] = best.first;
-        }
-        for (size_t f = 0; f < n; ++f) {
-            if (labels[f] < 0) continue;
-            auto it = target.find(comps.find(int(f)));
-            if (it != target.end()) labels[f] = it->second;
-        }
+        const bool moved = moveToMostSharedLabel(
+            adj, labels, [&](size_t f) { return size_t(comps.find(int(f))); },
+            [&](size_t piece, size_t) { return size[piece] < minFaces; });
+        if (!moved) break;
     }
 }
 

@@ -80,36 +80,11 @@ std::vector<int> splitFaces(const Mesh& mesh, const Adjacency& adj, int parts) {
             int& l = largest[size_t(part[f])];
             if (l < 0 || size[f] > size[size_t(l)]) l = int(f);
         }
-        // piece root -> edges to each other part, as (part, edges)
-        std::unordered_map<uint32_t, std::vector<std::pair<int, int>>> touch;
-        for (size_t f = 0; f < n; ++f) {
-            if (part[f] < 0) continue;
-            const uint32_t r = comps.find(uint32_t(f));
-            if (int(r) == largest[size_t(part[f])]) continue;
-            for (int g : adj.across[f]) {
-                if (g < 0 || part[size_t(g)] < 0 || part[size_t(g)] == part[f]) continue;
-                auto& list = touch[r];
-                auto it = std::find_if(list.begin(), list.end(),
-                                       [&](auto& p) { return p.first == part[size_t(g)]; });
-                if (it == list.end())
-                    list.emplace_back(part[size_t(g)], 1);
-                else
-                    ++it->second;
-            }
-        }
-        if (touch.empty()) break;
-        std::unordered_map<uint32_t, int> moveTo;
-        for (auto& [r, list] : touch) {
-            auto best = list.front();
-            for (auto p : list)
-                if (p.second > best.second || (p.second == best.second && p.first < best.first))
-                    best = p;
-            moveTo[r] = best.first;
-        }
-        for (size_t f = 0; f < n; ++f)
-            if (part[f] >= 0)
-                if (auto it = moveTo.find(comps.find(uint32_t(f))); it != moveTo.end())
-                    part[f] = it->second;
+        // Each piece but its part's largest joins the part it borders most.
+        const bool moved = moveToMostSharedLabel(
+            adj, part, [&](size_t f) { return size_t(comps.find(uint32_t(f))); },
+            [&](size_t piece, size_t f) { return int(piece) != largest[size_t(part[f])]; });
+        if (!moved) break;
     }
     return part;
 }
