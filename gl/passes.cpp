@@ -162,7 +162,6 @@ CompositePass::~CompositePass() {
 
 // The centre pass' marks read back (1 byte of 4 per pixel) and listed.
 void CompositePass::updateEdgePoints(uint64_t key) {
-    if (edgeVao_ && key == edgesKey_) return;
     const int w = centreTarget_->width(), h = centreTarget_->height();
     const std::vector<unsigned char> marks = centreTarget_->readRGBA8(1);
     std::vector<float> points;
@@ -222,14 +221,18 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
         bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
+    // The pixels to supersample follow the G-buffer (the camera), not the
+    // lights: marked, read back and listed only when it changed.
+    const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
+    const bool findEdges = aa > 1 && (!edgeVao_ || edgesKey != edgesKey_);
     centreProgram_.use();
-    centreProgram_.set("u_findEdges", aa > 1 ? 1 : 0);
+    centreProgram_.set("u_findEdges", findEdges ? 1 : 0);
     bindTexture(centreProgram_, "u_radiosity", 0, radiosity_->id());
     bindTexture(centreProgram_, "u_framePosition", 1, frameGbuffer.color(0));
     bindTexture(centreProgram_, "u_normal", 2, frameGbuffer.color(1));
     glDepthFunc(GL_GREATER);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (aa > 1) {
+    if (findEdges) {
         // At 1× the cleared target is what they would get: no radiance, no edge.
         uncoveredProgram_.use();
         uncoveredProgram_.set("u_findEdges", 1);
@@ -244,7 +247,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     glDisable(GL_DEPTH_TEST);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
-        updateEdgePoints(Hasher(gbufferVersion).add(w).add(h).add(aa).digest());
+        if (findEdges) updateEdgePoints(edgesKey);
         ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
         sampleTarget_->bind();
         sampleProgram_.use();
