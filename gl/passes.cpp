@@ -1,5 +1,6 @@
 #include "gl/passes.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gl/gl_context.h"
@@ -144,7 +145,6 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
 
 CompositePass::CompositePass()
     : centreProgram_("fullscreen.vert", "radiance.frag"),
-      uncoveredProgram_("fullscreen.vert", "radiance.frag", "#define TSIS_COMPOSITE_UNCOVERED 1\n"),
       sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
@@ -160,14 +160,26 @@ CompositePass::~CompositePass() {
     if (edgeVao_) glDeleteVertexArrays(1, &edgeVao_);
 }
 
-// The centre pass' marks read back (1 byte of 4 per pixel) and listed.
+// The centre pass' marks read back and listed: the covered pixels it marked
+// (r), and the uncovered ones with a covered pixel (g) in their 3×3
+// neighbourhood — the same test the centre pass makes, on the host, instead
+// of a full-screen pass over the uncovered pixels.
 void CompositePass::updateEdgePoints(uint64_t key) {
     const int w = centreTarget_->width(), h = centreTarget_->height();
     const std::vector<unsigned char> marks = centreTarget_->readRGBA8(1);
+    auto at = [&](int x, int y, int c) {
+        return marks[(size_t(y) * size_t(w) + size_t(x)) * 4 + size_t(c)] != 0;
+    };
+    auto besideCovered = [&](int x, int y) {
+        for (int v = std::max(0, y - 1); v <= std::min(h - 1, y + 1); ++v)
+            for (int u = std::max(0, x - 1); u <= std::min(w - 1, x + 1); ++u)
+                if (at(u, v, 1)) return true;
+        return false;
+    };
     std::vector<float> points;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            if (marks[(size_t(y) * size_t(w) + size_t(x)) * 4] != 0)
+            if (at(x, y, 1) ? at(x, y, 0) : besideCovered(x, y))
                 points.insert(points.end(), {float(x), float(y)});
     if (!edgeVao_) {
         glGenVertexArrays(1, &edgeVao_);
@@ -232,15 +244,6 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     bindTexture(centreProgram_, "u_normal", 2, frameGbuffer.color(1));
     glDepthFunc(GL_GREATER);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (findEdges) {
-        // At 1× the cleared target is what they would get: no radiance, no edge.
-        uncoveredProgram_.use();
-        uncoveredProgram_.set("u_findEdges", 1);
-        uncoveredProgram_.set("u_eye", eye);
-        bindTexture(uncoveredProgram_, "u_framePosition", 1, frameGbuffer.color(0));
-        glDepthFunc(GL_EQUAL);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
     glDepthRange(0.0, 1.0);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);

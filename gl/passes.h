@@ -145,8 +145,8 @@ class CompositePass {
     void resolveInto(const ShaderProgram& centres, const ShaderProgram& edges,
                      std::unique_ptr<RenderTarget>& target, std::vector<GLenum> formats);
 
-    ShaderProgram centreProgram_, uncoveredProgram_, sampleProgram_, resolveProgram_,
-        resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_, reduceProgram_;
+    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, resolveEdgesProgram_,
+        toneMapProgram_, toneMapEdgesProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded

@@ -4,10 +4,10 @@
 // lights and of the environment's residual (design "Surface reflection"); η
 // and the exit scale those of the point's medium (mediumOf, by the position's w).
 //
-// Three variants. The frame's: one sample at each pixel's centre, from the
-// frame's G-buffer, and (u_findEdges) the pixels to supersample; with
-// TSIS_COMPOSITE_UNCOVERED, the same for the pixels no surface covers (no
-// radiance; an edge beside a covered one). With
+// Two variants. The frame's: one sample at each covered pixel's centre, from
+// the frame's G-buffer, and (u_findEdges) which covered pixels to supersample
+// (the uncovered ones beside a covered one are found on the host from the
+// coverage this writes: CompositePass::updateEdgePoints). With
 // TSIS_COMPOSITE_SAMPLES: u_aa × u_aa samples per pixel from the composite's
 // own G-buffer, drawn only in the pixels marked (edge_points.vert; elsewhere
 // the centre's sample stands for the pixel).
@@ -112,14 +112,9 @@ bool edgePixel(ivec2 px, vec4 p) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_framePosition, px, 0);
-    o_edge = vec4(u_findEdges != 0 && edgePixel(px, p) ? 1.0 : 0.0);
-#ifdef TSIS_COMPOSITE_UNCOVERED
-    // The pixels no surface covers, drawn apart (CompositePass::radiance):
-    // only whether a neighbour is covered.
-    o_radiance = vec4(0.0);
-#else
+    // r: supersample; g: covered (the depth test lets only covered pixels here).
+    o_edge = vec4(u_findEdges != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
     o_radiance = p.w == 0.0 ? vec4(0.0)
                             : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
-#endif
 }
 #endif
