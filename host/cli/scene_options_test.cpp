@@ -132,6 +132,7 @@ TEST(SceneOptions, ValuesOutsideTheirRangeAreRefused) {
     refused({"--atlas-res", "1000"}, "--atlas-res 1000 must be a power of two from 16 to 4096");
     refused({"--atlas-res", "8192"}, "power of two");
     refused({"--light-res", "8"}, "--light-res 8 is out of range [16, 8192] (0: automatic)");
+    refused({"--light-lod", "999"}, "--light-lod 999 is out of range [1000, 1073741824] (0: off)");
     refused({"--method", "volumetric", "--spp", "0"}, "--spp 0 is out of range");
     refused({"--method", "tsis", "--samples", "x"}, "--samples");
     refused({"--method", "tsis", "--rd-part", "middle"}, "--rd-part 'middle'");

@@ -12,11 +12,11 @@ namespace tsis {
 namespace {
 
 // The values a number accepts as typed: lo to hi, optionally only powers of
-// two, optionally 0 for "automatic" as well.
+// two, optionally 0 as well, meaning `zero` ("automatic", "off").
 struct Range {
     double lo, hi;
     bool powerOfTwo = false;
-    bool zeroIsAuto = false;
+    const char* zero = nullptr;
 };
 
 template <typename T>
@@ -28,7 +28,7 @@ RenderParam number(RenderParam p, T RenderOptions::*field, Range r) {
             v = static_cast<double>(parseInteger(what, value));
         else
             v = parseNumber(what, value);
-        if (!(r.zeroIsAuto && v == 0)) {
+        if (!(r.zero && v == 0)) {
             const bool inRange = v >= r.lo && v <= r.hi;
             const auto i = static_cast<int64_t>(v);
             if (r.powerOfTwo && (!inRange || (i & (i - 1))))
@@ -36,7 +36,7 @@ RenderParam number(RenderParam p, T RenderOptions::*field, Range r) {
                      exactText(r.hi));
             if (!inRange)
                 fail(what, " ", value, " is out of range [", exactText(r.lo), ", ", exactText(r.hi),
-                     "]", r.zeroIsAuto ? " (0: automatic)" : "");
+                     "]", r.zero ? std::string(" (0: ") + r.zero + ")" : std::string());
         }
         o.*field = static_cast<T>(v);
     };
@@ -174,12 +174,13 @@ std::vector<RenderParam> makeParams() {
                 "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 "
                 "diffusion lengths 1/max σtr across, else 1024",
                 kEvery, kLighting},
-               &O::lightResolution, {16, 8192, false, true}),
-        number({"light-lod",
-                "T  a mesh of over 2T triangles casts its shadows from a coarser copy of about T "
-                "(the offset grows by the copy's deviation); 0 = always the mesh itself",
-                kEvery, kLighting},
-               &O::lightLodTriangles, {0, 1 << 30}),
+               &O::lightResolution, {16, 8192, false, "automatic"}),
+        number(
+            {"light-lod",
+             "T  a mesh of over 2T triangles (T ≥ 1000) casts its shadows from a coarser copy of "
+             "about T; 0 = always the mesh itself",
+             kEvery, kLighting},
+            &O::lightLodTriangles, {1000, 1 << 30, false, "off"}),
         number({"exposure",
                 "EV  radiance × 2^EV before the tone curve (fixed: the same for every frame and "
                 "light; README \"Exposure, reflection and antialiasing\")",
