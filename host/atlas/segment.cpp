@@ -15,17 +15,16 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <exception>
 #include <mutex>
-#include <thread>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "atlas/chart.h"
+#include "util/parallel.h"
 
 namespace tsis::atlas {
 
@@ -140,25 +139,18 @@ std::vector<int> segmentVSA(const Mesh& mesh, const Adjacency& adj, int proxies,
     // Each part in its own Surface_mesh: the threads share nothing but the
     // read-only input and write only their own slot of `results`.
     std::vector<std::vector<int>> results(static_cast<size_t>(parts));
-    std::atomic<int> next{0};
     std::exception_ptr error;
     std::mutex errorLock;
-    auto worker = [&] {
-        for (int i; (i = next++) < parts;) {
-            try {
-                if (!faces[size_t(i)].empty())
-                    results[size_t(i)] = segmentPart(mesh, faces[size_t(i)], share[size_t(i)]);
-            } catch (...) {
-                const std::lock_guard<std::mutex> hold(errorLock);
-                if (!error) error = std::current_exception();
-            }
+    // One part a chunk; the first exception is kept and thrown here.
+    const auto segmentOne = [&](size_t i, size_t) {
+        try {
+            if (!faces[i].empty()) results[i] = segmentPart(mesh, faces[i], share[i]);
+        } catch (...) {
+            const std::lock_guard<std::mutex> hold(errorLock);
+            if (!error) error = std::current_exception();
         }
     };
-    const int workers = std::clamp(threads, 1, parts);
-    std::vector<std::thread> pool;
-    for (int i = 1; i < workers; ++i) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
+    parallelFor(size_t(parts), 1, segmentOne, size_t(std::max(1, threads)));
     if (error) std::rethrow_exception(error);
 
     std::vector<int> labels(mesh.triangles.size(), -1);

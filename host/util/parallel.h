@@ -15,11 +15,11 @@ inline unsigned hostThreads() {
 }
 
 // Calls body(begin, end) over [0, count) in chunks of at most `chunk`, from
-// hostThreads() threads (the caller's among them). Chunks are handed out in
-// order, so results written per index do not depend on the thread count.
-// `body` must not throw.
+// `threads` threads (the caller's among them; at least one). Chunks are
+// handed out in order, so results written per index do not depend on the
+// thread count. `body` must not throw.
 template <typename Body>
-void parallelFor(size_t count, size_t chunk, const Body& body) {
+void parallelFor(size_t count, size_t chunk, const Body& body, size_t threads = hostThreads()) {
     chunk = std::max<size_t>(chunk, 1);
     const size_t chunks = (count + chunk - 1) / chunk;
     std::atomic<size_t> next{0};
@@ -27,11 +27,12 @@ void parallelFor(size_t count, size_t chunk, const Body& body) {
         for (size_t c; (c = next.fetch_add(1)) < chunks;)
             body(c * chunk, std::min(count, (c + 1) * chunk));
     };
-    const size_t helpers = std::min<size_t>(hostThreads(), chunks) - (chunks > 0 ? 1 : 0);
-    std::vector<std::thread> threads;
-    for (size_t t = 0; t < helpers; ++t) threads.emplace_back(work);
+    const size_t helpers =
+        std::min<size_t>(std::max<size_t>(threads, 1), chunks) - (chunks > 0 ? 1 : 0);
+    std::vector<std::thread> pool;
+    for (size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
     work();
-    for (std::thread& t : threads) t.join();
+    for (std::thread& t : pool) t.join();
 }
 
 }  // namespace tsis
