@@ -9,6 +9,9 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "util/hash.h"
+#include "util/union_find.h"
+
 namespace tsis {
 
 namespace {
@@ -144,19 +147,16 @@ std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32
 
 bool closedOutward(const Mesh& mesh) {
     if (mesh.triangles.empty()) return false;
-    // Positions by their bits.
+    // Positions by their bits (hashed and compared alike: 0 and −0 are two).
     struct BitsHash {
-        size_t operator()(const glm::vec3& p) const {
-            uint64_t h = 1469598103934665603ull;
-            for (int k = 0; k < 3; ++k) {
-                uint32_t b;
-                std::memcpy(&b, &p[k], sizeof b);
-                h = (h ^ b) * 1099511628211ull;
-            }
-            return size_t(h);
+        size_t operator()(const glm::vec3& p) const { return size_t(fnv1a(&p, sizeof p)); }
+    };
+    struct BitsEqual {
+        bool operator()(const glm::vec3& a, const glm::vec3& b) const {
+            return std::memcmp(&a, &b, sizeof a) == 0;
         }
     };
-    std::unordered_map<glm::vec3, uint32_t, BitsHash> idOf;
+    std::unordered_map<glm::vec3, uint32_t, BitsHash, BitsEqual> idOf;
     idOf.reserve(mesh.positions.size());
     std::vector<uint32_t> id(mesh.positions.size());
     for (size_t v = 0; v < mesh.positions.size(); ++v)
@@ -180,16 +180,11 @@ bool closedOutward(const Mesh& mesh) {
         if (i + 1 >= edges.size() || edges[i] >> 1 != edges[i + 1] >> 1 || (edges[i] & 1) != 0 ||
             (edges[i + 1] & 1) != 1 || (i + 2 < edges.size() && edges[i + 2] >> 1 == edges[i] >> 1))
             return false;
-    // Parts (union-find over the welded ids) and each one's signed volume.
-    std::vector<uint32_t> parent(idOf.size());
-    for (size_t i = 0; i < parent.size(); ++i) parent[i] = uint32_t(i);
-    auto root = [&](uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
+    // Parts (over the welded ids) and each one's signed volume.
+    UnionFind parts(idOf.size());
     for (const glm::uvec3& t : mesh.triangles) {
-        parent[root(id[t.y])] = root(id[t.x]);
-        parent[root(id[t.z])] = root(id[t.x]);
+        parts.unite(id[t.x], id[t.y]);
+        parts.unite(id[t.x], id[t.z]);
     }
     std::unordered_map<uint32_t, double> volume;
     const glm::dvec3 o(mesh.positions[mesh.triangles[0].x]);
@@ -197,7 +192,7 @@ bool closedOutward(const Mesh& mesh) {
         const glm::dvec3 a = glm::dvec3(mesh.positions[t.x]) - o,
                          b = glm::dvec3(mesh.positions[t.y]) - o,
                          c = glm::dvec3(mesh.positions[t.z]) - o;
-        volume[root(id[t.x])] += glm::dot(a, glm::cross(b, c));
+        volume[parts.find(id[t.x])] += glm::dot(a, glm::cross(b, c));
     }
     return std::all_of(volume.begin(), volume.end(), [](const auto& v) { return v.second > 0; });
 }
