@@ -165,9 +165,7 @@ int runAnimate(const std::vector<std::string>& argv) {
         j["render_ms"] = frame.stats.stageMs("total");
         // Each pass's ms, to see which ones the change made run (`render
         // --stats` "ms").
-        Json stages = Json::object();
-        for (const FrameStats::Stage& s : frame.stats.stages) stages[s.name] = s.ms;
-        j["stage_ms"] = stages;
+        j["stage_ms"] = frame.stats.stageMsJson();
         // Follows memory over long runs (a test bounds its growth).
         j["rss_mb"] = residentMegabytes();
         perFrame.push_back(j);

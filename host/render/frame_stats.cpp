@@ -50,18 +50,22 @@ void FrameStats::totalRdEvaluations() {
     if (parts) set(key, sum);
 }
 
+Json FrameStats::stageMsJson() const {
+    Json ms = Json::object();
+    for (const Stage& s : stages) ms[s.name] = s.ms;
+    return ms;
+}
+
 Json FrameStats::toJson() const {
     Json root = Json::object();
     for (const auto& [k, v] : values) root[k] = v;
-    Json ms = Json::object();
     Json bytes = Json::object();
     Json cpu = Json::object();
     for (const Stage& s : stages) {
-        ms[s.name] = s.ms;
         if (s.bytes >= 0) bytes[s.name] = s.bytes;
         if (s.cpuMs >= 0) cpu[s.name] = s.cpuMs;
     }
-    root["ms"] = ms;
+    root["ms"] = stageMsJson();
     root["bytes"] = bytes;
     root["cpu_ms"] = cpu;
     return root;

@@ -29,6 +29,8 @@ struct FrameStats {
     // part's "<prefix>rd_evaluations"; their sum becomes "rd_evaluations".
     void totalRdEvaluations();
     Json toJson() const;
+    // Each stage's ms by name: toJson()'s "ms".
+    Json stageMsJson() const;
 };
 
 }  // namespace tsis
