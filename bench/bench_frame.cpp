@@ -40,7 +40,6 @@
 #include "gl/gpu_mesh.h"
 #include "gl/render_target.h"
 #include "gl/shader.h"
-#include "mesh/weld.h"
 #include "scene/projection.h"
 #include "util/progress.h"
 #include "util/timer.h"
@@ -66,6 +65,18 @@ Scene orbit(const Scene& base, int f, int frames, bool camera) {
     }
     for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].vec = turn(base.lights[i].vec);
     return s;
+}
+
+// The stats of `frames` frames of c, the lights (or the camera) a step
+// further round each (steps 1 … frames of frames + 1).
+std::vector<FrameStats> orbitFrames(Renderer& renderer, const BenchCase& c, int frames,
+                                    bool camera) {
+    std::vector<FrameStats> stats;
+    stats.reserve(size_t(frames));
+    for (int f = 0; f < frames; ++f)
+        stats.push_back(
+            renderer.render(orbit(c.scene, f + 1, frames + 1, camera), c.options).stats);
+    return stats;
 }
 
 // Whole-frame ms of an external tsis binary's `animate --orbit` (its stats'
@@ -163,11 +174,7 @@ std::string compositeSection(Renderer& renderer, int frames) {
         c.options.keepAovs = true;
         firsts.push_back(renderer.render(c.scene, c.options));
         c.options.keepAovs = false;
-        std::vector<FrameStats> stats;
-        stats.reserve(frames);
-        for (int f = 0; f < frames; ++f)
-            stats.push_back(
-                renderer.render(orbit(c.scene, f + 1, frames + 1, true), c.options).stats);
+        const std::vector<FrameStats> stats = orbitFrames(renderer, c, frames, true);
         std::vector<std::string> row = {cfg.name};
         for (const char* stage : {"gl_gbuffer", "gl_composite_samples", "composite", "total"})
             row.push_back(fmtRange(summarize(stageSums(stats, {stage})), 1));
@@ -198,12 +205,8 @@ int sideBySide(const BenchArgs& a) {
         BenchCase c = makeCase(args);
         c.options.reuseLighting = camera == 1;
         renderer.render(c.scene, c.options);  // warm-up: programs, atlas, first light maps
-        std::vector<FrameStats> frames;
-        frames.reserve(a.frames);
-        for (int f = 0; f < a.frames; ++f)
-            frames.push_back(
-                renderer.render(orbit(c.scene, f + 1, a.frames + 1, camera == 1), c.options).stats);
-        ms[camera] = summarize(stageSums(frames, {"total"})).median;
+        ms[camera] =
+            summarize(stageSums(orbitFrames(renderer, c, a.frames, camera == 1), {"total"})).median;
     }
     std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f frames=%d gl_renderer=%s\n", ms[0],
                 ms[1], a.frames, renderer.glRenderer().c_str());
@@ -269,15 +272,12 @@ int glFloors(const BenchArgs& a) {
     std::map<std::string, std::vector<double>> now, floors;
     const std::vector<std::string> lightStages = {"gl_light_view", "gl_flux_atlas", "composite"},
                                    cameraStages = {"gl_gbuffer", "gl_composite_samples"};
-    const bool cull = closedOutward(c.scene.mesh);
+    const bool cull = mesh.closedOutward();
     for (int round = 0; round < 3; ++round) {
         for (int camera = 0; camera < 2; ++camera) {
             BenchCase k = c;
             k.options.reuseLighting = camera == 1;
-            std::vector<FrameStats> frames;
-            for (int f = 0; f < n; ++f)
-                frames.push_back(
-                    renderer.render(orbit(k.scene, f + 1, n + 1, camera == 1), k.options).stats);
+            const std::vector<FrameStats> frames = orbitFrames(renderer, k, n, camera == 1);
             for (const std::string& st : camera ? cameraStages : lightStages)
                 now[st].push_back(summarize(stageSums(frames, {st})).median);
         }
@@ -399,14 +399,8 @@ int run(const BenchArgs& a) {
             c.options.keepAovs = true;
             const double err = relativeRmse(renderer.render(c.scene, c.options), ref);
             c.options.keepAovs = false;
-            std::vector<FrameStats> frames;
-            frames.reserve(a.frames);
-            for (int f = 0; f < a.frames; ++f)
-                frames.push_back(
-                    renderer
-                        .render(orbit(c.scene, f + 1, a.frames + 1, configs[ci].cameraMoves),
-                                c.options)
-                        .stats);
+            const std::vector<FrameStats> frames =
+                orbitFrames(renderer, c, a.frames, configs[ci].cameraMoves);
             for (const FrameStats::Stage& st : frames.back().stages) {
                 const std::string& stage = st.name;
                 const Summary s = summarize(stageSums(frames, {stage}));
