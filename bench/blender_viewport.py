@@ -1,16 +1,19 @@
 # EEVEE's real-time viewport on tsis' scene, timed (issue 25). Run with a UI,
 # under Xvfb (the viewport needs a window; `blender -b` has none):
 #
+#   tsis dipole --material skin1 --json > dipole.json
 #   xvfb-run -a -s "-screen 0 620x603x24" blender --factory-startup \
-#       --python bench/blender_viewport.py -- --mesh data/meshes/cow.off [OPTIONS]
+#       --python bench/blender_viewport.py -- --mesh data/meshes/cow.off \
+#       --dipole dipole.json [OPTIONS]
 #
 # bench/eevee_side_by_side.sh runs it beside tsis. Written for Blender 3.4
 # (Debian 12's `blender`). The scene follows `tsis render --mesh M --material
 # MAT --size-mm S` (host/cli/scene_options.cpp): the mesh centred on its
 # bounding box and scaled so that the box's diagonal is S (1 Blender unit =
 # 1 mm), tsis' y-up turned to Blender's z-up; a Principled BSDF with
-# subsurface (radius per RGB = the mean free path 1/σt′ of the preset, colour
-# = the dipole's diffuse reflectance, GGX roughness 0.3, IOR η); tsis'
+# subsurface (radius per RGB = the mean free path 1/σt′ of the material, colour
+# = the dipole's total diffuse reflectance, both as `tsis dipole --json`
+# prints them, GGX roughness 0.3, IOR η); tsis'
 # default lights (a point light behind and above with irradiance ≈ 1 at the
 # centre, a directional fill 0.12 from the front: a sun) and camera (35°
 # vertical field of view from the front and a little above, as a viewport
@@ -41,6 +44,7 @@
 #
 # medians of the per-frame milliseconds, then quits Blender.
 import argparse
+import json
 import math
 import os
 import statistics
@@ -51,28 +55,12 @@ import bpy
 import gpu
 from mathutils import Quaternion, Vector
 
-# Jensen et al. 2001, Fig. 5: σs′, σa (mm⁻¹), η — host/physics/material.cpp.
-MATERIALS = {
-    "apple": ((2.29, 2.39, 1.97), (0.0030, 0.0034, 0.046), 1.3),
-    "chicken1": ((0.15, 0.21, 0.38), (0.015, 0.077, 0.19), 1.3),
-    "chicken2": ((0.19, 0.25, 0.32), (0.018, 0.088, 0.20), 1.3),
-    "cream": ((7.38, 5.47, 3.15), (0.0002, 0.0028, 0.0163), 1.3),
-    "ketchup": ((0.18, 0.07, 0.03), (0.061, 0.97, 1.45), 1.3),
-    "marble": ((2.19, 2.62, 3.00), (0.0021, 0.0041, 0.0071), 1.5),
-    "potato": ((0.68, 0.70, 0.55), (0.0024, 0.0090, 0.12), 1.3),
-    "skimmilk": ((0.70, 1.22, 1.90), (0.0014, 0.0025, 0.0142), 1.3),
-    "skin1": ((0.74, 0.88, 1.01), (0.032, 0.17, 0.48), 1.3),
-    "skin2": ((1.09, 1.59, 1.79), (0.013, 0.070, 0.145), 1.3),
-    "spectralon": ((11.6, 20.4, 14.9), (0.0, 0.0, 0.0), 1.3),
-    "wholemilk": ((2.55, 3.21, 3.77), (0.0011, 0.0024, 0.014), 1.3),
-}
-
-
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     p = argparse.ArgumentParser(prog="blender_viewport.py")
     p.add_argument("--mesh", required=True, help="an ASCII .off file (data/meshes/cow.off)")
-    p.add_argument("--material", default="skin1", choices=sorted(MATERIALS))
+    p.add_argument("--dipole", required=True,
+                   help="the material: `tsis dipole --material M --json`'s output (a file)")
     p.add_argument("--size-mm", type=float, default=10.0)
     p.add_argument("--fov", type=float, default=35.0, help="vertical field of view, degrees")
     p.add_argument("--frames", type=int, default=30, help="timed frames per case")
@@ -136,18 +124,6 @@ def y_up_to_z_up(v):
     return Vector((v[0], -v[2], v[1]))
 
 
-def dipole_reflectance(sigma_s, sigma_a, eta):
-    """Jensen et al. 2001's total diffuse reflectance, the surface colour."""
-    fdr = -1.440 / eta**2 + 0.710 / eta + 0.668 + 0.0636 * eta
-    a = (1 + fdr) / (1 - fdr)
-    out = []
-    for s, k in zip(sigma_s, sigma_a):
-        alpha = s / (s + k)
-        root = math.sqrt(3 * (1 - alpha))
-        out.append(alpha / 2 * (1 + math.exp(-4 / 3 * a * root)) * math.exp(-root))
-    return out
-
-
 def build_scene():
     scene = bpy.context.scene
     for ob in list(bpy.data.objects):  # the startup cube, camera and light
@@ -168,19 +144,20 @@ def build_scene():
     obj = bpy.data.objects.new("object", mesh)
     scene.collection.objects.link(obj)
 
-    sigma_s, sigma_a, eta = MATERIALS[ARGS.material]
-    mat = bpy.data.materials.new(ARGS.material)
+    with open(ARGS.dipole) as f:
+        dipole = json.load(f)
+    eta = dipole["eta"]
+    mat = bpy.data.materials.new(dipole["material"])
     mat.use_nodes = True
     mat.use_sss_translucency = ARGS.translucency == "on"
     bsdf = mat.node_tree.nodes["Principled BSDF"]
     bsdf.subsurface_method = "BURLEY"
-    colour = dipole_reflectance(sigma_s, sigma_a, eta) + [1.0]
+    colour = list(dipole["total_reflectance"]) + [1.0]
     bsdf.inputs["Base Color"].default_value = colour
     bsdf.inputs["Subsurface Color"].default_value = colour
     bsdf.inputs["Subsurface"].default_value = 1.0
     # The mean free path ℓ = 1/σt′ per channel, in mm (= Blender units here).
-    bsdf.inputs["Subsurface Radius"].default_value = [1 / (s + k) for s, k in
-                                                      zip(sigma_s, sigma_a)]
+    bsdf.inputs["Subsurface Radius"].default_value = dipole["mean_free_path"]
     bsdf.inputs["Subsurface IOR"].default_value = eta
     bsdf.inputs["IOR"].default_value = eta
     bsdf.inputs["Specular"].default_value = ((eta - 1) / (eta + 1)) ** 2 / 0.08

@@ -63,11 +63,12 @@ tsis_run() {
 
 eevee_run() {
     rm -f "$tmp/eevee.line"
+    "$build/tsis" dipole --material "$material" --json >"$tmp/dipole.json"
     # $eevee_args is split into options on purpose.
     # shellcheck disable=SC2086
     LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 ${screen}x24" \
         blender --factory-startup --python "$root/bench/blender_viewport.py" -- \
-        --mesh "$off" --material "$material" --size-mm "$size" --frames "$frames" \
+        --mesh "$off" --dipole "$tmp/dipole.json" --size-mm "$size" --frames "$frames" \
         --expect 512x512 --out "$tmp/eevee.line" $eevee_args >"$tmp/eevee.log" 2>&1 || true
     grep -q '^EEVEE static_ms=' "$tmp/eevee.line" 2>/dev/null || {
         echo "eevee_side_by_side.sh: the Blender run failed:" >&2
