@@ -1,8 +1,9 @@
 #include "mesh/weld.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <glm/common.hpp>
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
@@ -147,20 +148,20 @@ std::vector<char> trianglesOnBoundary(const Mesh& mesh, const std::vector<uint32
 
 bool closedOutward(const Mesh& mesh) {
     if (mesh.triangles.empty()) return false;
-    // Positions by their bits (hashed and compared alike: 0 and −0 are two).
+    // Positions by their bits (0 and −0 are two points).
+    using Bits = std::array<uint32_t, 3>;
     struct BitsHash {
-        size_t operator()(const glm::vec3& p) const { return size_t(fnv1a(&p, sizeof p)); }
+        size_t operator()(const Bits& b) const { return size_t(fnv1a(b.data(), sizeof b)); }
     };
-    struct BitsEqual {
-        bool operator()(const glm::vec3& a, const glm::vec3& b) const {
-            return std::memcmp(&a, &b, sizeof a) == 0;
-        }
-    };
-    std::unordered_map<glm::vec3, uint32_t, BitsHash, BitsEqual> idOf;
+    std::unordered_map<Bits, uint32_t, BitsHash> idOf;
     idOf.reserve(mesh.positions.size());
     std::vector<uint32_t> id(mesh.positions.size());
-    for (size_t v = 0; v < mesh.positions.size(); ++v)
-        id[v] = idOf.try_emplace(mesh.positions[v], uint32_t(idOf.size())).first->second;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        const Bits bits{std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
+                        std::bit_cast<uint32_t>(p.z)};
+        id[v] = idOf.try_emplace(bits, uint32_t(idOf.size())).first->second;
+    }
     // Every undirected edge twice, once each way: sorted by (edge, direction).
     std::vector<uint64_t> edges;
     edges.reserve(mesh.triangles.size() * 3);
