@@ -19,12 +19,13 @@
 // same run. `bench_frame --composite` measures only this and replaces that
 // section of frame.md.
 //
-// `bench_frame --side-by-side [--frames N] [RENDER ARGS…]` (issue 25, for
+// `bench_frame --side-by-side [--frames N] [--stages] [RENDER ARGS…]` (issue 25, for
 // bench/eevee_side_by_side.sh) writes nothing: for the scene RENDER ARGS make
 // (`--mesh cow --material marble`), today's defaults with the light orbiting
 // and with the camera orbiting (lighting reused), N frames each after one
 // warm-up frame, it prints one line: `TSIS light_moving_ms=… camera_moving_ms=…
-// frames=N gl_renderer=…` (medians of the whole frame, the stage `total`).
+// frames=N gl_renderer=…` (medians of the whole frame, the stage `total`);
+// with --stages, each stage's median on stderr too.
 #include <unistd.h>
 
 #include <algorithm>
@@ -199,14 +200,20 @@ int sideBySide(const BenchArgs& a) {
     std::vector<std::string> args;
     for (const std::string& s : a.rest)
         if (s != "--side-by-side") args.push_back(s);
+    const bool stages = std::erase(args, "--stages") > 0;
     Renderer renderer;
     double ms[2] = {0, 0};
     for (int camera = 0; camera < 2; ++camera) {
         BenchCase c = makeCase(args);
         c.options.reuseLighting = camera == 1;
         renderer.render(c.scene, c.options);  // warm-up: programs, atlas, first light maps
-        ms[camera] =
-            summarize(stageSums(orbitFrames(renderer, c, a.frames, camera == 1), {"total"})).median;
+        const std::vector<FrameStats> frames = orbitFrames(renderer, c, a.frames, camera == 1);
+        ms[camera] = summarize(stageSums(frames, {"total"})).median;
+        // --stages: each stage's median, on stderr (stdout stays one line).
+        if (!stages) continue;
+        for (const FrameStats::Stage& s : frames.front().stages)
+            std::fprintf(stderr, "%s %s %.2f\n", camera ? "camera" : "light", s.name.c_str(),
+                         summarize(stageSums(frames, {s.name})).median);
     }
     std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f frames=%d gl_renderer=%s\n", ms[0],
                 ms[1], a.frames, renderer.glRenderer().c_str());

@@ -16,6 +16,7 @@ namespace tsis {
     X(AttachShader, ATTACHSHADER)                       \
     X(BindBuffer, BINDBUFFER)                           \
     X(BindFramebuffer, BINDFRAMEBUFFER)                 \
+    X(BindSampler, BINDSAMPLER)                         \
     X(BindTexture, BINDTEXTURE)                         \
     X(BindVertexArray, BINDVERTEXARRAY)                 \
     X(BufferData, BUFFERDATA)                           \
@@ -30,6 +31,7 @@ namespace tsis {
     X(DeleteBuffers, DELETEBUFFERS)                     \
     X(DeleteFramebuffers, DELETEFRAMEBUFFERS)           \
     X(DeleteProgram, DELETEPROGRAM)                     \
+    X(DeleteSamplers, DELETESAMPLERS)                   \
     X(DeleteShader, DELETESHADER)                       \
     X(DeleteTextures, DELETETEXTURES)                   \
     X(DeleteVertexArrays, DELETEVERTEXARRAYS)           \
@@ -47,6 +49,7 @@ namespace tsis {
     X(FramebufferTexture2D, FRAMEBUFFERTEXTURE2D)       \
     X(GenBuffers, GENBUFFERS)                           \
     X(GenFramebuffers, GENFRAMEBUFFERS)                 \
+    X(GenSamplers, GENSAMPLERS)                         \
     X(GenTextures, GENTEXTURES)                         \
     X(GenVertexArrays, GENVERTEXARRAYS)                 \
     X(GetError, GETERROR)                               \
@@ -67,6 +70,7 @@ namespace tsis {
     X(ProgramUniformMatrix4fv, PROGRAMUNIFORMMATRIX4FV) \
     X(ReadBuffer, READBUFFER)                           \
     X(ReadPixels, READPIXELS)                           \
+    X(SamplerParameteri, SAMPLERPARAMETERI)             \
     X(ShaderSource, SHADERSOURCE)                       \
     X(TexImage2D, TEXIMAGE2D)                           \
     X(TexParameteri, TEXPARAMETERI)                     \

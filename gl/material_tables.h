@@ -27,6 +27,8 @@ class MaterialTables {
     // Binds the tables to texture units `unit`, `unit` + 1 (common.glsl:
     // u_media, u_albedo, u_textured).
     void bind(const ShaderProgram& program, int unit) const;
+    // Whether the scene has an albedo factor (a program's TSIS_TEXTURED).
+    bool textured() const { return textured_; }
 
   private:
     std::vector<glm::vec2> media_;

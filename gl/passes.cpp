@@ -29,6 +29,29 @@ void ensureTarget(std::unique_ptr<RenderTarget>& t, int w, int h, std::vector<GL
         t = std::make_unique<RenderTarget>(w, h, std::move(formats), depth);
 }
 
+// A full-screen triangle at depth 1 against the G-buffer depth the bound
+// target holds: GL_GREATER draws where the surface is, GL_EQUAL where it is
+// not. llvmpipe runs both sides of a shader's branches, so a pass that only
+// tested coverage would shade every pixel; the depth test drops the others'
+// blocks before the shader.
+void drawFullScreenWhere(GLenum depthFunc) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDepthRange(1.0, 1.0);
+    glDepthFunc(depthFunc);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthRange(0.0, 1.0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+}
+
+// Copies `from`'s depth into `to`'s (same size).
+void copyDepth(const RenderTarget& from, const RenderTarget& to) {
+    glCopyImageSubData(from.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, to.depth(), GL_TEXTURE_2D, 0, 0, 0,
+                       0, from.width(), from.height(), 1);
+}
+
 }  // namespace
 
 LightViewPass::LightViewPass()
@@ -88,7 +111,8 @@ void GeometryAtlasPass::run(const GpuMesh& mesh, int resolution) {
     checkGl("GeometryAtlasPass");
 }
 
-FluxAtlasPass::FluxAtlasPass() : program_("fullscreen.vert", "flux_atlas.frag") {
+FluxAtlasPass::FluxAtlasPass()
+    : programs_("fullscreen.vert", "flux_atlas.frag", {"TSIS_ENV", "TSIS_TEXTURED"}) {
     glGenVertexArrays(1, &emptyVao_);
 }
 
@@ -97,15 +121,18 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
                         GLuint envIrradiance) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
     target_->bindAndClear();
-    program_.use();
-    bindLights(program_, lights, kShadowUnit, shadows);
-    media.bind(program_, kMediaUnit);
-    bindTexture(program_, "u_position", 0, geometry.color(0));
-    bindTexture(program_, "u_normal", 1, geometry.color(1));
-    bindTexture(program_, "u_envIrradiance", 2, envIrradiance);
-    program_.set("u_hasEnv", envIrradiance != 0 ? 1 : 0);
+    const ShaderProgram& program =
+        programs_.get((envIrradiance != 0 ? 1u : 0u) | (media.textured() ? 2u : 0u));
+    program.use();
+    bindLights(program, lights, kShadowUnit, shadows);
+    media.bind(program, kMediaUnit);
+    bindTexture(program, "u_position", 0, geometry.color(0));
+    bindTexture(program, "u_normal", 1, geometry.color(1));
+    bindTexture(program, "u_envIrradiance", 2, envIrradiance);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(emptyVao_);
+    // Full-screen: a depth test against the covered texels (as the composite
+    // does) measured slower here, most blocks holding some.
     glDrawArrays(GL_TRIANGLES, 0, 3);
     checkGl("FluxAtlasPass");
 }
@@ -121,7 +148,10 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
             "mesh.vert", "gbuffer.frag", irradiance ? "#define TSIS_GBUFFER_IRRADIANCE 1\n" : "");
     std::vector<GLenum> formats(irradiance ? 3 : 2, GL_RGBA32F);
     ensureTarget(v.target, width, height, formats, true);
-    v.target->bindAndClear();
+    if (clearColor_)
+        v.target->bindAndClear();
+    else
+        v.target->bindAndClearDepth();
     const ShaderProgram& program = *v.program;
     program.use();
     bindLights(program, lights, kShadowUnit, shadows);
@@ -144,18 +174,28 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
 }
 
 CompositePass::CompositePass()
-    : centreProgram_("fullscreen.vert", "radiance.frag"),
-      sampleProgram_("edge_points.vert", "radiance.frag", "#define TSIS_COMPOSITE_SAMPLES 1\n"),
+    : centrePrograms_("fullscreen.vert", "radiance.frag",
+                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES"}),
+      samplePrograms_("edge_points.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
+                      "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
       toneMapProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_TONE_MAP 1\n"),
       toneMapEdgesProgram_("edge_points.vert", "resolve.frag",
                            "#define TSIS_TONE_MAP 1\n#define TSIS_RESOLVE_EDGES 1\n"),
+      backgroundProgram_("fullscreen.vert", "resolve.frag",
+                         "#define TSIS_TONE_MAP 1\n#define TSIS_BACKGROUND 1\n"),
       reduceProgram_("fullscreen.vert", "reduce.frag") {
     glGenVertexArrays(1, &emptyVao_);
+    // Depth read as a value (RenderTarget's depth compares, as a shadow map).
+    glGenSamplers(1, &depthSampler_);
+    glSamplerParameteri(depthSampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(depthSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(depthSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 CompositePass::~CompositePass() {
+    if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
     if (edgeVbo_) glDeleteBuffers(1, &edgeVbo_);
     if (edgeVao_) glDeleteVertexArrays(1, &edgeVao_);
 }
@@ -210,76 +250,84 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     radiosity_->upload(radiosityRGBA);
     glBindVertexArray(emptyVao_);
     // The pixels' centres, and which pixels to supersample.
+    // The pixels to supersample follow the G-buffer (the camera), not the
+    // lights: marked, read back and listed only when it changed.
+    const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
+    const bool findEdges = aa > 1 && (!edgeVao_ || edgesKey != edgesKey_);
+    // Only the covered pixels shaded (the G-buffer's depth, < 1 there), and
+    // only they read: the radiance is not cleared, the marks only when read.
     ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, true);
-    centreTarget_->bindAndClear();
-    // The G-buffer's depth (< 1 where covered) and every fragment at depth 1:
-    // the covered pixels pass GL_GREATER, the others GL_EQUAL. llvmpipe's
-    // shaders run both sides of a branch, so the shading costs every pixel
-    // unless the depth test drops the uncovered ones' blocks before it.
-    glCopyImageSubData(frameGbuffer.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, centreTarget_->depth(),
-                       GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDepthRange(1.0, 1.0);
-    for (const ShaderProgram* p : {&centreProgram_, &sampleProgram_}) {
+    centreTarget_->bind();
+    copyDepth(frameGbuffer, *centreTarget_);
+    if (findEdges) {
+        const float zero[4] = {0, 0, 0, 0};
+        glClearBufferfv(GL_COLOR, 1, zero);
+    }
+    const unsigned features = (alpha > 0 ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
+    const ShaderProgram& centre = centrePrograms_.get(features | (findEdges ? 4u : 0u));
+    const ShaderProgram& samples = samplePrograms_.get(features);
+    for (const ShaderProgram* p : {&centre, &samples}) {
         p->use();
         bindLights(*p, lights, kShadowUnit, shadows);
         materials.bind(*p, kMediaUnit);
         p->set("u_eye", eye);
         p->set("u_alpha", alpha);
-        p->set("u_envReflect", env.prefiltered != 0 ? 1 : 0);
         p->set("u_worldToMap", env.worldToMap);
         p->set("u_envScale", env.scale);
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
         bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
-    // The pixels to supersample follow the G-buffer (the camera), not the
-    // lights: marked, read back and listed only when it changed.
-    const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
-    const bool findEdges = aa > 1 && (!edgeVao_ || edgesKey != edgesKey_);
-    centreProgram_.use();
-    centreProgram_.set("u_findEdges", findEdges ? 1 : 0);
-    bindTexture(centreProgram_, "u_radiosity", 0, radiosity_->id());
-    bindTexture(centreProgram_, "u_framePosition", 1, frameGbuffer.color(0));
-    bindTexture(centreProgram_, "u_normal", 2, frameGbuffer.color(1));
-    glDepthFunc(GL_GREATER);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthRange(0.0, 1.0);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
+    centre.use();
+    bindTexture(centre, "u_radiosity", 0, radiosity_->id());
+    bindTexture(centre, "u_framePosition", 1, frameGbuffer.color(0));
+    bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
+    drawFullScreenWhere(GL_GREATER);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
         if (findEdges) updateEdgePoints(edgesKey);
         ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
         sampleTarget_->bind();
-        sampleProgram_.use();
-        sampleProgram_.set("u_aa", aa);
-        bindTexture(sampleProgram_, "u_radiosity", 0, radiosity_->id());
-        bindTexture(sampleProgram_, "u_framePosition", 1, frameGbuffer.color(0));
-        bindTexture(sampleProgram_, "u_normal", 2, sampleGbuffer.color(1));
-        bindTexture(sampleProgram_, "u_position", 3, sampleGbuffer.color(0));
-        sampleProgram_.set("u_frameSize", glm::vec2(w, h));
-        sampleProgram_.set("u_pointSize", static_cast<float>(aa));
+        samples.use();
+        samples.set("u_aa", aa);
+        bindTexture(samples, "u_radiosity", 0, radiosity_->id());
+        bindTexture(samples, "u_framePosition", 1, frameGbuffer.color(0));
+        bindTexture(samples, "u_normal", 2, sampleGbuffer.color(1));
+        bindTexture(samples, "u_position", 3, sampleGbuffer.color(0));
+        // Coverage from the samples' depth (their colour is not cleared).
+        bindTexture(samples, "u_sampleDepth", 5, sampleGbuffer.depth());
+        glBindSampler(5, depthSampler_);
+        samples.set("u_frameSize", glm::vec2(w, h));
+        samples.set("u_pointSize", static_cast<float>(aa));
         glEnable(GL_PROGRAM_POINT_SIZE);
         glBindVertexArray(edgeVao_);
         glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glBindSampler(5, 0);
         glBindVertexArray(emptyVao_);
         glDisable(GL_PROGRAM_POINT_SIZE);
     }
     checkGl("CompositePass::radiance");
 }
 
-void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgram& edges,
-                                std::unique_ptr<RenderTarget>& target,
+void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
+                                const ShaderProgram& edges, std::unique_ptr<RenderTarget>& target,
                                 std::vector<GLenum> formats) {
     const int w = centreTarget_->width(), h = centreTarget_->height();
-    ensureTarget(target, w, h, std::move(formats), false);
-    target->bindAndClear();
+    ensureTarget(target, w, h, std::move(formats), true);
+    // With a background every pixel is drawn: no clear.
+    if (background)
+        target->bind();
+    else
+        target->bindAndClear();
+    copyDepth(*centreTarget_, *target);  // the G-buffer's
     centres.use();
     bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    drawFullScreenWhere(GL_GREATER);
+    if (background) {
+        background->use();
+        bindTexture(*background, "u_centre", 0, centreTarget_->color(0));
+        drawFullScreenWhere(GL_EQUAL);
+    }
     // At 1× no pixel is marked and the samples are never read.
     if (aa_ > 1 && edgeCount_ > 0) {
         edges.use();
@@ -296,7 +344,8 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
 }
 
 void CompositePass::resolve() {
-    resolveInto(resolveProgram_, resolveEdgesProgram_, frameTarget_, {GL_RGBA32F, GL_RGBA32F});
+    resolveInto(resolveProgram_, nullptr, resolveEdgesProgram_, frameTarget_,
+                {GL_RGBA32F, GL_RGBA32F});
     checkGl("CompositePass::resolve");
 }
 
@@ -310,7 +359,8 @@ void CompositePass::toneMap(float scale) {
         p->use();
         p->set("u_scale", scale);
     }
-    resolveInto(toneMapProgram_, toneMapEdgesProgram_, colorTarget_, {GL_RGBA8, GL_RGBA32F});
+    resolveInto(toneMapProgram_, &backgroundProgram_, toneMapEdgesProgram_, colorTarget_,
+                {GL_RGBA8, GL_RGBA32F});
     checkGl("CompositePass::toneMap");
 }
 

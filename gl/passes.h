@@ -61,7 +61,7 @@ class FluxAtlasPass {
     const RenderTarget& target() const { return *target_; }
 
   private:
-    ShaderProgram program_;
+    ShaderVariants programs_;  // with the environment, with the albedo factor
     std::unique_ptr<RenderTarget> target_;
     GLuint emptyVao_ = 0;
 };
@@ -74,6 +74,9 @@ class FluxAtlasPass {
 // mesh is closed and outward and the eye outside it).
 class GBufferPass {
   public:
+    // clearColor false: only depth is cleared, and a reader takes coverage
+    // from it (< 1): an uncovered pixel's colour is an earlier frame's.
+    explicit GBufferPass(bool clearColor = true) : clearColor_(clearColor) {}
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
              int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false);
@@ -86,6 +89,7 @@ class GBufferPass {
     };
     Variant variants_[2];  // without, with irradiance
     int current_ = 0;
+    bool clearColor_;
 };
 
 // The environment's reflection for the composite (render/env_reflection.h):
@@ -111,7 +115,8 @@ class CompositePass {
     CompositePass(const CompositePass&) = delete;
     CompositePass& operator=(const CompositePass&) = delete;
     // radiosity: B at the frame's pixels, RGBA floats, GL row order.
-    // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×).
+    // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×),
+    // its coverage read from its depth (its colour need not be cleared).
     // `materials`: η and the exit term's factor over Ft/π (render_options.h
     // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe;
     // `env`: the environment's reflection. `gbufferVersion`: changes when the
@@ -140,13 +145,17 @@ class CompositePass {
 
   private:
     // resolve.frag into `target` (its attachment 1: the log luminance).
-    // The centres full-screen, then the supersampled pixels' averages (a
-    // point each) over them.
-    void resolveInto(const ShaderProgram& centres, const ShaderProgram& edges,
-                     std::unique_ptr<RenderTarget>& target, std::vector<GLenum> formats);
+    // The covered pixels' centres, the others' `background` (none: left 0),
+    // then the supersampled pixels' averages (a point each) over them.
+    void resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
+                     const ShaderProgram& edges, std::unique_ptr<RenderTarget>& target,
+                     std::vector<GLenum> formats);
 
-    ShaderProgram centreProgram_, sampleProgram_, resolveProgram_, resolveEdgesProgram_,
-        toneMapProgram_, toneMapEdgesProgram_, reduceProgram_;
+    // radiance.frag's: with the lobe, the environment's reflection, (the
+    // centres) marking the pixels to supersample
+    ShaderVariants centrePrograms_, samplePrograms_;
+    ShaderProgram resolveProgram_, resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_,
+        backgroundProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded
@@ -154,7 +163,7 @@ class CompositePass {
         sumTarget_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     int aa_ = 1;
-    GLuint emptyVao_ = 0;
+    GLuint emptyVao_ = 0, depthSampler_ = 0;
     // The supersampled pixels as points (x, y), listed again only when the
     // G-buffer changed: the marks follow the camera, not the lights.
     GLuint edgeVao_ = 0, edgeVbo_ = 0;

@@ -78,6 +78,13 @@ void RenderTarget::bindAndClear() {
     }
 }
 
+void RenderTarget::bindAndClearDepth() {
+    TSIS_CHECK(depth_ != 0);
+    bind();
+    const float one = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &one);
+}
+
 void RenderTarget::read(int i, GLenum type, void* out) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));

@@ -19,6 +19,8 @@ class RenderTarget {
 
     // Binds, sets the viewport and clears colour (to zero) and depth.
     void bindAndClear();
+    // Binds and clears depth only, for readers that take coverage from it.
+    void bindAndClearDepth();
     // Binds and sets the viewport; the contents stay (a pass that writes
     // only what it will read).
     void bind();

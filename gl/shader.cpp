@@ -92,4 +92,24 @@ void ShaderProgram::set(const char* name, const glm::mat4& m) const {
     glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, glm::value_ptr(m));
 }
 
+ShaderVariants::ShaderVariants(std::string vertexFile, std::string fragmentFile,
+                               std::vector<std::string> features, std::string defines)
+    : vertexFile_(std::move(vertexFile)),
+      fragmentFile_(std::move(fragmentFile)),
+      defines_(std::move(defines)),
+      features_(std::move(features)) {
+    TSIS_CHECK_LE(features_.size(), size_t(16));
+}
+
+const ShaderProgram& ShaderVariants::get(unsigned on) {
+    std::unique_ptr<ShaderProgram>& p = programs_[on];
+    if (!p) {
+        std::string defines = defines_;
+        for (size_t i = 0; i < features_.size(); ++i)
+            defines += "#define " + features_[i] + ((on >> i) & 1u ? " 1\n" : " 0\n");
+        p = std::make_unique<ShaderProgram>(vertexFile_, fragmentFile_, defines);
+    }
+    return *p;
+}
+
 }  // namespace tsis

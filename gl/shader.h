@@ -7,7 +7,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "gl/gl.h"
 
@@ -35,6 +38,23 @@ class ShaderProgram {
   private:
     GLuint id_ = 0;
     std::string name_;
+};
+
+// A shader pair compiled once per combination of on/off features, each a
+// macro defined 0 or 1 (`#if TSIS_ENV`), on first use. llvmpipe runs both
+// sides of every branch, masked, so a feature behind a uniform costs its
+// lookups even where it is off; a variant without it does not have them.
+class ShaderVariants {
+  public:
+    ShaderVariants(std::string vertexFile, std::string fragmentFile,
+                   std::vector<std::string> features, std::string defines = "");
+    // Bit i of `on`: features[i] on.
+    const ShaderProgram& get(unsigned on);
+
+  private:
+    std::string vertexFile_, fragmentFile_, defines_;
+    std::vector<std::string> features_;
+    std::map<unsigned, std::unique_ptr<ShaderProgram>> programs_;
 };
 
 }  // namespace tsis

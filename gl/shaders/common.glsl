@@ -35,8 +35,15 @@ vec4 mediumOf(float tag) {
 }
 // With u_textured, the albedo factor of each atlas texel (render/albedo_atlas.h):
 // light entering there is scaled by it, light leaving too.
+// A uniform, or a constant in a program compiled for one case (TSIS_TEXTURED
+// defined 0 or 1: gl/shader.h ShaderVariants), where an untextured scene's
+// program has no albedo lookups to run.
 uniform sampler2D u_albedo;
+#ifdef TSIS_TEXTURED
+const bool u_textured = TSIS_TEXTURED != 0;
+#else
 uniform bool u_textured;
+#endif
 vec3 albedoFactor(vec2 atlasUv) {
     return u_textured ? texture(u_albedo, atlasUv).rgb : vec3(1.0);
 }

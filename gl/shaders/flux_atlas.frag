@@ -3,9 +3,8 @@
 // so a moving light re-shades texels without re-rasterising the mesh.
 uniform sampler2D u_position;
 uniform sampler2D u_normal;
-// The environment's residual E per texel (render/env_light.h), when u_hasEnv.
+// With TSIS_ENV, the environment's residual E per texel (render/env_light.h).
 uniform sampler2D u_envIrradiance;
-uniform int u_hasEnv;
 layout(location = 0) out vec4 o_flux;
 
 void main() {
@@ -17,7 +16,11 @@ void main() {
     }
     vec4 n = texelFetch(u_normal, px, 0);
     vec3 e = irradiance(p.xyz, n.xyz, mediumOf(p.w).r);
-    if (u_hasEnv != 0) e += texelFetch(u_envIrradiance, px, 0).rgb;
+#if TSIS_ENV
+    e += texelFetch(u_envIrradiance, px, 0).rgb;
+#endif
     o_flux = vec4(e * n.w, 1.0);
-    if (u_textured) o_flux.rgb *= texelFetch(u_albedo, px, 0).rgb;
+#if TSIS_TEXTURED
+    o_flux.rgb *= texelFetch(u_albedo, px, 0).rgb;
+#endif
 }

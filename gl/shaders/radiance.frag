@@ -5,22 +5,23 @@
 // and the exit scale those of the point's medium (mediumOf, by the position's w).
 //
 // Two variants. The frame's: one sample at each covered pixel's centre, from
-// the frame's G-buffer, and (u_findEdges) which covered pixels to supersample
+// the frame's G-buffer, and (TSIS_FIND_EDGES) which covered pixels to supersample
 // (the uncovered ones beside a covered one are found on the host from the
 // coverage this writes: CompositePass::updateEdgePoints). With
 // TSIS_COMPOSITE_SAMPLES: u_aa × u_aa samples per pixel from the composite's
 // own G-buffer, drawn only in the pixels marked (edge_points.vert; elsewhere
-// the centre's sample stands for the pixel).
+// the centre's sample stands for the pixel). Features (0 or 1, gl/shader.h
+// ShaderVariants): TSIS_SPECULAR the lobe, TSIS_ENV_REFLECT the
+// environment's reflection with it.
 uniform sampler2D u_radiosity;      // B at the frame's pixels
 uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = coverage)
 uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
-uniform float u_alpha;  // GGX α = R²; 0: no lobe (--no-specular)
-// The environment's reflection (render/env_reflection.h), when u_envReflect:
+uniform float u_alpha;  // GGX α = R², with TSIS_SPECULAR
+// The environment's reflection (render/env_reflection.h), with TSIS_ENV_REFLECT:
 // the residual prefiltered by the lobe (lat-long, the map's frame, row 0 =
 // up) about the mirror direction × the lobe's albedo per medium (x: √cos θo,
 // y: medium), × the map's intensity.
-uniform int u_envReflect;
 uniform sampler2D u_envPrefiltered;
 uniform sampler2D u_envAlbedo;
 uniform mat3 u_worldToMap;
@@ -45,8 +46,12 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     if (dot(n, v) < 0.0) n = -n;
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
-    if (u_alpha > 0.0) l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
-    if (u_alpha > 0.0 && u_envReflect != 0) l += envReflection(n, v, p.w);
+#if TSIS_SPECULAR
+    l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
+#if TSIS_ENV_REFLECT
+    l += envReflection(n, v, p.w);
+#endif
+#endif
     return l;
 }
 
@@ -61,7 +66,8 @@ bool sameSurface(vec4 a, vec4 b) {
 }
 
 #ifdef TSIS_COMPOSITE_SAMPLES
-uniform sampler2D u_position;  // the samples'
+uniform sampler2D u_position;     // the samples'
+uniform sampler2D u_sampleDepth;  // their depth: < 1 where covered (colour not cleared)
 uniform int u_aa;
 
 // B at sample px (surface point p): the frame pixel's that holds the sample,
@@ -91,10 +97,10 @@ vec3 radiosityAt(ivec2 px, vec4 p) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_position, px, 0);
-    o_radiance = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, radiosityAt(px, p)), 1.0);
+    bool covered = texelFetch(u_sampleDepth, px, 0).r < 1.0 && p.w != 0.0;
+    o_radiance = covered ? vec4(shade(p, px, radiosityAt(px, p)), 1.0) : vec4(0.0);
 }
 #else
-uniform int u_findEdges;
 layout(location = 1) out vec4 o_edge;
 
 // A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
@@ -113,7 +119,7 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_framePosition, px, 0);
     // r: supersample; g: covered (the depth test lets only covered pixels here).
-    o_edge = vec4(u_findEdges != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
+    o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
     o_radiance = p.w == 0.0 ? vec4(0.0)
                             : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
 }

@@ -11,10 +11,12 @@
 // pixel the samples averaged (a box filter; after the curve, so that a
 // highlight does not flood its silhouette pixel), then sRGB.
 //
-// Two variants: a full-screen pass of the centres, then, with
+// Three variants: a full-screen pass of the centres at the covered pixels
+// (CompositePass: by the G-buffer's depth), with TSIS_BACKGROUND one at the
+// others (the tone map's background; the resolve leaves them 0), then, with
 // TSIS_RESOLVE_EDGES, a point on each supersampled pixel (edge_points.vert)
-// over it — llvmpipe runs both sides of a branch, so one pass with both would
-// average samples at every pixel.
+// over them — llvmpipe runs both sides of a branch, so one pass with all
+// three would average samples and tone-map at every pixel.
 uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
 uniform sampler2D u_samples;  // u_aa × the size; read at the supersampled pixels
 uniform int u_aa;
@@ -30,16 +32,26 @@ vec3 srgb(vec3 c) {
 }
 
 // Background: a dark vertical gradient.
+vec3 backgroundAt(float y) {
+    return vec3(mix(0.004, 0.03, y / float(textureSize(u_centre, 0).y)));
+}
+
 vec3 exposed(vec4 l, vec3 background) {
     vec3 ls = u_scale * l.rgb;
     return l.a > 0.0 ? ls / (1.0 + ls) : background;
 }
 #endif
 
+#ifdef TSIS_BACKGROUND
+void main() {
+    o_color = vec4(srgb(backgroundAt(gl_FragCoord.y)), 1.0);
+    o_logLuminance = vec4(0.0);
+}
+#else
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
 #ifdef TSIS_TONE_MAP
-    vec3 background = vec3(mix(0.004, 0.03, gl_FragCoord.y / float(textureSize(u_centre, 0).y)));
+    vec3 background = backgroundAt(gl_FragCoord.y);
     vec3 display = vec3(0.0);
 #endif
     vec4 radiance;
@@ -77,3 +89,4 @@ void main() {
     o_color = radiance;
 #endif
 }
+#endif

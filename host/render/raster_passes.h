@@ -95,7 +95,7 @@ class RasterPasses {
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
     FluxAtlasPass fluxAtlasPass_, residualFluxPass_;
-    GBufferPass gbufferPass_, sampleGbufferPass_;
+    GBufferPass gbufferPass_, sampleGbufferPass_{false};
     CompositePass compositePass_;
     MaterialTables
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)

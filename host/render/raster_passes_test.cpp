@@ -205,5 +205,32 @@ TEST(Composite, SupersampledSilhouettesApproachTheFinelySampledImage) {
     EXPECT_LT(interior[1], interior[0] + 1e-9 + 4.0 * cov.width * cov.height);
 }
 
+// The composite's targets that are not cleared (the samples' G-buffer, the
+// centres' radiance, the tone map's) hold an earlier frame's pixels where the
+// object no longer is: a frame drawn after another view, another size of
+// object and with the light elsewhere is the same, byte for byte, as that
+// frame drawn by a fresh renderer.
+TEST(Composite, UnclearedTargetsLeaveNoEarlierFrameBehind) {
+    Scene torus = test::torusScene("marble", 10.0);
+    Scene before = torus;
+    before.camera.eye = glm::vec3(-4, 9, 9);
+    normalizeMesh(before.mesh, 14.0);
+    before.lights[0].vec = glm::vec3(10, -5, 8);
+    RenderOptions opt = test::smallOptions(96, 256);
+    opt.method = "pyramid";
+    for (int aa : {2, 3}) {
+        SCOPED_TRACE(aa);
+        opt.aa = aa;
+        for (bool autoExposure : {false, true}) {
+            opt.autoExposure = autoExposure;
+            Renderer fresh, reused;
+            reused.render(before, opt);
+            const FrameResult a = fresh.render(torus, opt), b = reused.render(torus, opt);
+            EXPECT_EQ(a.rgb8, b.rgb8);
+            EXPECT_EQ(a.lavg, b.lavg);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace tsis
