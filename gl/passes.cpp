@@ -120,7 +120,7 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
                         const ShadowMapArray& shadows, const MaterialTables& media,
                         GLuint envIrradiance) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
-    target_->bindAndClear();
+    target_->bind();  // every texel drawn (0 where uncovered): no clear
     const ShaderProgram& program =
         programs_.get((envIrradiance != 0 ? 1u : 0u) | (media.textured() ? 2u : 0u));
     program.use();
