@@ -210,10 +210,16 @@ void CompositePass::updateEdgePoints(uint64_t key) {
     auto at = [&](int x, int y, int c) {
         return marks[(size_t(y) * size_t(w) + size_t(x)) * 4 + size_t(c)] != 0;
     };
+    // Coverage dilated along each row, then the 3×3 test as three rows' look-ups.
+    std::vector<unsigned char> rowNear(size_t(w) * size_t(h), 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (at(x, y, 1))
+                for (int u = std::max(0, x - 1); u <= std::min(w - 1, x + 1); ++u)
+                    rowNear[size_t(y) * size_t(w) + size_t(u)] = 1;
     auto besideCovered = [&](int x, int y) {
         for (int v = std::max(0, y - 1); v <= std::min(h - 1, y + 1); ++v)
-            for (int u = std::max(0, x - 1); u <= std::min(w - 1, x + 1); ++u)
-                if (at(u, v, 1)) return true;
+            if (rowNear[size_t(v) * size_t(w) + size_t(x)]) return true;
         return false;
     };
     std::vector<float> points;
