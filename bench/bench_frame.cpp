@@ -188,8 +188,8 @@ std::string compositeSection(Renderer& renderer, int frames) {
     md += t.markdown();
     if (const char* before = std::getenv("TSIS_BEFORE")) {
         const double ms = externalComposite(before, frames);
-        md += "\nThe older binary `" + std::string(before) + "` (Reinhard + the Phong highlight " +
-              "after it, one sample; `render --frames 3`, the last frame, median of " +
+        md += "\nThe older binary `" + std::string(before) +
+              "` (its own defaults; `render --frames 3`, the last frame, median of " +
               std::to_string(frames) + " runs): composite " + fmt(ms, 1) + " ms.\n";
     }
     return md;
@@ -259,8 +259,13 @@ int glFloors(const BenchArgs& a) {
     const float radius = boundingRadius(c.scene.mesh);
     const glm::mat4 lightViewProj = lightProjection(c.scene.lights[0], radius, lightRes).viewProj;
     const glm::mat4 viewProj = cameraViewProj(c.scene.camera, float(w) / float(h), radius);
-    auto drawMesh = [&](const ShaderProgram& p, RenderTarget& t, const glm::mat4& m, bool cull) {
-        t.bindAndClear();
+    // As the frame's passes clear: the samples' G-buffer and the flux atlas keep their colour.
+    auto drawMesh = [&](const ShaderProgram& p, RenderTarget& t, const glm::mat4& m, bool cull,
+                        bool clearColor) {
+        if (clearColor)
+            t.bindAndClear();
+        else
+            t.bindAndClearDepth();
         p.use();
         p.set("u_viewProj", m);
         glEnable(GL_DEPTH_TEST);
@@ -269,8 +274,11 @@ int glFloors(const BenchArgs& a) {
         glDisable(GL_CULL_FACE);
         glDisable(GL_DEPTH_TEST);
     };
-    auto fullScreen = [&](RenderTarget& t) {
-        t.bindAndClear();
+    auto fullScreen = [&](RenderTarget& t, bool clear) {
+        if (clear)
+            t.bindAndClear();
+        else
+            t.bind();
         screenFloor.use();
         glBindVertexArray(vao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -292,15 +300,16 @@ int glFloors(const BenchArgs& a) {
         floors["light view: clear"].push_back(glMs(n, [&] { depth.bindAndClear(); }) *
                                               double(lights));
         floors["light view: clear + depth of the mesh"].push_back(
-            glMs(n, [&] { drawMesh(depthOnly, depth, lightViewProj, cull); }) * double(lights));
+            glMs(n, [&] { drawMesh(depthOnly, depth, lightViewProj, cull, true); }) *
+            double(lights));
         floors["flux atlas: constant full-screen pass"].push_back(
-            glMs(n, [&] { fullScreen(atlas); }));
+            glMs(n, [&] { fullScreen(atlas, false); }));
         floors["G-buffer: clear + constant mesh pass"].push_back(
-            glMs(n, [&] { drawMesh(meshFloor, frame, viewProj, cull); }));
-        floors["composite samples: clear + constant mesh pass"].push_back(
-            glMs(n, [&] { drawMesh(meshFloor, samples, viewProj, cull); }));
+            glMs(n, [&] { drawMesh(meshFloor, frame, viewProj, cull, true); }));
+        floors["composite samples: depth clear + constant mesh pass"].push_back(
+            glMs(n, [&] { drawMesh(meshFloor, samples, viewProj, cull, false); }));
         floors["composite: constant full-screen pass + 8-bit read-back"].push_back(glMs(n, [&] {
-            fullScreen(display);
+            fullScreen(display, true);
             (void)display.readRGBA8(0);
         }));
     }
@@ -309,7 +318,7 @@ int glFloors(const BenchArgs& a) {
         {"gl_light_view", "light view: clear + depth of the mesh"},
         {"gl_flux_atlas", "flux atlas: constant full-screen pass"},
         {"gl_gbuffer", "G-buffer: clear + constant mesh pass"},
-        {"gl_composite_samples", "composite samples: clear + constant mesh pass"},
+        {"gl_composite_samples", "composite samples: depth clear + constant mesh pass"},
         {"composite", "composite: constant full-screen pass + 8-bit read-back"}};
     Table t({"pass", "now ms", "floor ms", "its floor", "what is left: shading"});
     for (const auto& [stage, floor] : rows) {
