@@ -20,7 +20,7 @@ import sys
 # Options of programs other than tsis that the docs name, by program.
 OTHER_PROGRAMS = {
     "bench/run.sh and the bench programs": {"quick", "models", "truth", "seconds", "photons",
-                                            "size", "repeat", "gl-floors", "side-by-side"},
+                                            "size", "repeat", "gl-floors", "side-by-side", "stages"},
     "cmake, ctest": {"build", "target", "output-on-failure", "preset", "install", "prefix"},
     "clang-format": {"dry-run", "Werror"},
     "duplicates": {"change", "base"},
