@@ -58,6 +58,11 @@ class PyramidMethod : public Method {
     uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0;
     SparseInterpolation interpolation_;
     GrowingBuffer order_;  // the covered pixels in tiles (FluxTree::tileOrder)
+    // The last plan of the pixels to evaluate and to interpolate, and what it
+    // was made from (the points, the image size, the grid): on the device in
+    // order_ and interpolation_.
+    SparsePixels plan_;
+    uint64_t planKey_ = 0;
 };
 
 }  // namespace tsis

@@ -88,5 +88,34 @@ TEST(Pyramid, DeterministicAndSeedIndependent) {
     EXPECT_EQ(a.rgb8, b.rgb8);
 }
 
+// The plan of the pixels to evaluate follows the camera: a frame that moves
+// only the light keeps it (and its buffers on the device) and is the frame
+// a fresh renderer makes; a frame that moves the camera plans again.
+TEST(Pyramid, LightMoveKeepsThePlanAndGivesTheFreshFrame) {
+    const Scene a = test::torusScene("skin1", 10.0);
+    Scene lit = a;
+    lit.lights[0].vec = glm::vec3(9, 8, 11);
+    Scene turned = lit;
+    turned.camera.eye = glm::vec3(-6, 5, 12);
+    RenderOptions opt = pyramidOptions(96, 256, 0.05f);
+    opt.method = "pyramid";
+    opt.pyramidStride = 3;  // a grid at this size: some pixels interpolated
+    opt.keepAovs = true;
+    Renderer renderer;
+    EXPECT_EQ(renderer.render(a, opt).stats.number("pyramid_plan_reused"), 0);
+    const FrameResult kept = renderer.render(lit, opt);
+    EXPECT_EQ(kept.stats.number("pyramid_plan_reused"), 1);
+    EXPECT_GT(kept.stats.number("pyramid_interpolated_pixels"), 0);
+    const FrameResult other = renderer.render(turned, opt);
+    EXPECT_EQ(other.stats.number("pyramid_plan_reused"), 0);
+    for (const Scene* s : {&lit, &turned}) {
+        Renderer fresh;
+        const FrameResult f = fresh.render(*s, opt);
+        const FrameResult& r = s == &lit ? kept : other;
+        EXPECT_EQ(f.radiosity.pixels, r.radiosity.pixels);
+        EXPECT_EQ(f.rgb8, r.rgb8);
+    }
+}
+
 }  // namespace
 }  // namespace tsis

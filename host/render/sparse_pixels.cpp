@@ -83,19 +83,25 @@ void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba)
 SparseInterpolation::SparseInterpolation(ClRuntime& cl)
     : cl_(cl), kernel_(cl.kernel("sparse_pixels.cl", "tsis_interpolate_sparse")) {}
 
-void SparseInterpolation::run(const SparsePixels& plan, cl::Buffer& rgba) {
+void SparseInterpolation::upload(const SparsePixels& plan) {
     events_.clear();
+    uploaded_ = true;
     const std::vector<TsisInterpolatedPixel>& p = plan.interpolate;
+    count_ = static_cast<int>(p.size());
     if (p.empty()) return;
     const size_t bytes = p.size() * sizeof(TsisInterpolatedPixel);
-    cl::CommandQueue& q = cl_.queue();
-    cl::Buffer& pixels = pixels_.reserve(cl_.context(), bytes);
-    // Blocking: the plan is the caller's, and may be gone before the queue runs.
     events_.emplace_back();
-    q.enqueueWriteBuffer(pixels, CL_TRUE, 0, bytes, p.data(), nullptr, &events_.back());
-    setKernelArgs(kernel_, pixels, static_cast<int>(p.size()), rgba);
+    cl_.queue().enqueueWriteBuffer(pixels_.reserve(cl_.context(), bytes), CL_TRUE, 0, bytes,
+                                   p.data(), nullptr, &events_.back());
+}
+
+void SparseInterpolation::run(cl::Buffer& rgba) {
+    if (!uploaded_) events_.clear();
+    uploaded_ = false;
+    if (count_ == 0) return;
+    setKernelArgs(kernel_, pixels_.buffer, count_, rgba);
     events_.emplace_back();
-    enqueue1D(q, kernel_, p.size(), kLocalSize, &events_.back());
+    enqueue1D(cl_.queue(), kernel_, size_t(count_), kLocalSize, &events_.back());
 }
 
 double SparseInterpolation::lastMs() const {

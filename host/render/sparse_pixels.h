@@ -40,15 +40,27 @@ void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba)
 class SparseInterpolation {
   public:
     explicit SparseInterpolation(ClRuntime& cl);
-    // rgba: float4 per packed point. Enqueues without waiting; lastMs() waits.
-    void run(const SparsePixels& plan, cl::Buffer& rgba);
-    double lastMs() const;  // CL profiling: the upload and the kernel
+    // The plan's pixels to the device (blocking: the plan may be gone before
+    // the queue runs), kept for the runs after it.
+    void upload(const SparsePixels& plan);
+    // rgba: float4 per packed point, from the last upload. Enqueues without
+    // waiting; lastMs() waits.
+    void run(cl::Buffer& rgba);
+    // Both, for a plan used once.
+    void run(const SparsePixels& plan, cl::Buffer& rgba) {
+        upload(plan);
+        run(rgba);
+    }
+    // CL profiling: the kernel, and the upload when this run's plan was new.
+    double lastMs() const;
 
   private:
     ClRuntime& cl_;
     cl::Kernel kernel_;
     GrowingBuffer pixels_;
+    int count_ = 0;
     std::vector<cl::Event> events_;
+    bool uploaded_ = false;  // an upload since the last run
 };
 
 }  // namespace tsis
