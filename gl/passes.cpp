@@ -259,6 +259,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     // The pixels to supersample follow the G-buffer (the camera), not the
     // lights: marked, read back and listed only when it changed.
     const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
+    coverageKey_ = edgesKey;
     const bool findEdges = aa > 1 && (!edgeVao_ || edgesKey != edgesKey_);
     // Only the covered pixels shaded (the G-buffer's depth, < 1 there), and
     // only they read: the radiance is not cleared, the marks only when read.
@@ -329,10 +330,13 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
     bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);
     drawFullScreenWhere(GL_GREATER);
-    if (background) {
+    // The background stays from the frame before while the coverage and the
+    // supersampled pixels do (the edge points below draw over them again).
+    if (background && coverageKey_ != backgroundKey_) {
         background->use();
         bindTexture(*background, "u_centre", 0, centreTarget_->color(0));
         drawFullScreenWhere(GL_EQUAL);
+        backgroundKey_ = coverageKey_;
     }
     // At 1× no pixel is marked and the samples are never read.
     if (aa_ > 1 && edgeCount_ > 0) {

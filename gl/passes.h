@@ -169,6 +169,9 @@ class CompositePass {
     GLuint edgeVao_ = 0, edgeVbo_ = 0;
     GLsizei edgeCount_ = 0;
     uint64_t edgesKey_ = 0;
+    // The G-buffer's coverage and supersampled pixels this frame (edgesKey_'s
+    // key), and those the tone map's background was drawn for.
+    uint64_t coverageKey_ = 0, backgroundKey_ = 0;
     void updateEdgePoints(uint64_t key);
 };
 

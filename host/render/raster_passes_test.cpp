@@ -209,7 +209,9 @@ TEST(Composite, SupersampledSilhouettesApproachTheFinelySampledImage) {
 // centres' radiance, the tone map's) hold an earlier frame's pixels where the
 // object no longer is: a frame drawn after another view, another size of
 // object and with the light elsewhere is the same, byte for byte, as that
-// frame drawn by a fresh renderer.
+// frame drawn by a fresh renderer; so is that view drawn again at --aa 1
+// (the same coverage, no pixel supersampled: the tone map keeps its
+// background while the coverage and the supersampled pixels stay).
 TEST(Composite, UnclearedTargetsLeaveNoEarlierFrameBehind) {
     Scene torus = test::torusScene("marble", 10.0);
     Scene before = torus;
@@ -228,6 +230,12 @@ TEST(Composite, UnclearedTargetsLeaveNoEarlierFrameBehind) {
             const FrameResult a = fresh.render(torus, opt), b = reused.render(torus, opt);
             EXPECT_EQ(a.rgb8, b.rgb8);
             EXPECT_EQ(a.lavg, b.lavg);
+            // Then at --aa 1, where no pixel is supersampled.
+            RenderOptions one = opt;
+            one.aa = 1;
+            const FrameResult c = Renderer().render(torus, one), d = reused.render(torus, one);
+            EXPECT_EQ(c.rgb8, d.rgb8);
+            EXPECT_EQ(c.lavg, d.lavg);
         }
     }
 }
