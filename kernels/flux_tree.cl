@@ -52,14 +52,25 @@ static inline float tsis_node_weight(const TsisFluxNode n, const int by_area) {
  * negative or NaN flux counts as 0; radius the half-diagonal of a square of
  * its area. An inner node from its children .x .. .x + .y - 1: sums, the
  * position weighted by the children's flux luminance (by area when the node
- * is dark) and a radius that bounds every child's sphere. */
+ * is dark) and a radius that bounds every child's sphere. With flux_only, a
+ * leaf keeps the position, area and radius an earlier run over the same
+ * atlas wrote and takes only the flux (a third of the texel reads, which are
+ * scattered: the leaves are in space order). */
 kernel void tsis_flux_tree_update(const __global float4* flux, const __global float4* position,
                                   const __global float4* normal, const __global int4* topology,
-                                  const int begin, const int end, __global TsisFluxNode* nodes) {
+                                  const int begin, const int end, const int flux_only,
+                                  __global TsisFluxNode* nodes) {
     const int i = begin + get_global_id(0);
     if (i >= end) return;
     const int4 t = topology[i];
     TsisFluxNode n = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+    if (t.y == 0 && flux_only && nodes[i].area > 0.0f) {
+        const float4 f = flux[t.z];
+        nodes[i].fr = fmax(f.x, 0.0f);
+        nodes[i].fg = fmax(f.y, 0.0f);
+        nodes[i].fb = fmax(f.z, 0.0f);
+        return;
+    }
     if (t.y == 0) {
         const float4 p = position[t.z];
         if (p.w > 0.0f) {

@@ -130,14 +130,16 @@ void FluxTree::setLeaves(const std::vector<float>& positionRGBA) {
     nodes_ = cl::Buffer(cl_.context(), CL_MEM_READ_WRITE, topology_.size() * sizeof(TsisFluxNode));
 }
 
-void FluxTree::build(const cl::Buffer& flux, const cl::Buffer& position, const cl::Buffer& normal) {
+void FluxTree::build(const cl::Buffer& flux, const cl::Buffer& position, const cl::Buffer& normal,
+                     bool fluxOnly) {
     TSIS_CHECK(!topology_.empty());  // setLeaves() first
     cl::CommandQueue& q = cl_.queue();
     buildEvents_.clear();
     // The deepest nodes first: each depth reads the one below it (in-order queue).
     for (size_t d = depthBegin_.size() - 1; d-- > 0;) {
         const int begin = depthBegin_[d], end = depthBegin_[d + 1];
-        setKernelArgs(update_, flux, position, normal, topologyBuffer_, begin, end, nodes_);
+        setKernelArgs(update_, flux, position, normal, topologyBuffer_, begin, end,
+                      fluxOnly ? 1 : 0, nodes_);
         buildEvents_.emplace_back();
         enqueue1D(q, update_, size_t(end - begin), kLocalSize, &buildEvents_.back());
     }

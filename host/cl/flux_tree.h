@@ -28,7 +28,10 @@ class FluxTree {
     // The node sums from this atlas: flux (float4 rgb per texel), position
     // (xyz, w > 0 where covered) and the geometry atlas' normals (w = texel
     // area, mm²), the atlas setLeaves() saw. Needs setLeaves() first.
-    void build(const cl::Buffer& flux, const cl::Buffer& position, const cl::Buffer& normal);
+    // `fluxOnly`: the last build had this position and normal atlas (the
+    // caller knows their versions), so the leaves take only the flux.
+    void build(const cl::Buffer& flux, const cl::Buffer& position, const cl::Buffer& normal,
+               bool fluxOnly = false);
 
     // out[j] = (B(points[j]).rgb, 0) = Σ over the cut flux_n ⊙ f(|x_j − p_n|),
     // the points taken in groups of kPointsPerItem in the order `order` (count

@@ -76,9 +76,13 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
     // The sums change only with the flux (a camera-only frame keeps them).
     const bool current = flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
-        tree_.build(flux.buffer, position.buffer, normal.buffer);
+        // The leaves' positions and areas stay while the geometry atlas does.
+        const bool fluxOnly =
+            leavesVersion_ == builtLeavesVersion_ && normal.version == builtNormalVersion_;
+        tree_.build(flux.buffer, position.buffer, normal.buffer, fluxOnly);
         builtFluxVersion_ = flux.version;
         builtLeavesVersion_ = leavesVersion_;
+        builtNormalVersion_ = normal.version;
     }
     stats.set("pyramid_rebuilt", current ? 0.0 : 1.0);
     stats.set("pyramid_leaves", static_cast<double>(tree_.leafTexels().size()));

@@ -54,8 +54,9 @@ class PyramidMethod : public Method {
     FluxTree tree_;
     ProfileTableCache rd_;
     uint64_t leavesVersion_ = 0;  // the position atlas' version of the leaf order (0: none)
-    // What the node sums were made from (the flux atlas' version, leavesVersion_).
-    uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0;
+    // What the node sums were made from (the flux atlas' version,
+    // leavesVersion_, the normal atlas' version: its areas).
+    uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0, builtNormalVersion_ = 0;
     SparseInterpolation interpolation_;
     GrowingBuffer order_;  // the covered pixels in tiles (FluxTree::tileOrder)
     // The last plan of the pixels to evaluate and to interpolate, and what it

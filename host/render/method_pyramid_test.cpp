@@ -89,8 +89,10 @@ TEST(Pyramid, DeterministicAndSeedIndependent) {
 }
 
 // The plan of the pixels to evaluate follows the camera: a frame that moves
-// only the light keeps it (and its buffers on the device) and is the frame
-// a fresh renderer makes; a frame that moves the camera plans again.
+// only the light keeps it (and its buffers on the device), and its node sums
+// take only the flux at the leaves (their positions and areas kept), and it
+// is the frame a fresh renderer makes; a frame that moves the camera plans
+// again.
 TEST(Pyramid, LightMoveKeepsThePlanAndGivesTheFreshFrame) {
     const Scene a = test::torusScene("skin1", 10.0);
     Scene lit = a;
