@@ -32,6 +32,8 @@ class RenderTarget {
 
     // Attachment i as RGBA floats, GL order (row 0 = bottom).
     std::vector<float> readRGBA(int i) const;
+    // The same into `out` (width · height · 4 floats), memory the caller holds.
+    void readRGBA(int i, float* out) const { read(i, GL_FLOAT, out); }
     // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
     std::vector<unsigned char> readRGBA8(int i) const;
 

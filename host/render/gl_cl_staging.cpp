@@ -47,11 +47,18 @@ void GlClStaging::addAtlasUpload(FrameGraph& graph, const FrameContext& ctx, con
         [&ctx, source, attachment, &buffer, &uploaded, out](FrameGraph::Resources& res) {
             const GlTarget& gl = res.read(source);
             if (gl.version != uploaded) {
-                const std::vector<float> texels = gl.target->readRGBA(attachment);
-                upload(ctx.cl->queue(),
-                       buffer.reserve(ctx.cl->context(), texels.size() * sizeof(float)), texels);
+                // Read straight into the CL buffer, mapped: on a CPU device
+                // its memory, with no vector of floats between.
+                const size_t bytes =
+                    size_t(gl.target->width()) * size_t(gl.target->height()) * 4 * sizeof(float);
+                cl::Buffer& b = buffer.reserve(ctx.cl->context(), bytes);
+                cl::CommandQueue& q = ctx.cl->queue();
+                void* mapped =
+                    q.enqueueMapBuffer(b, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, bytes);
+                gl.target->readRGBA(attachment, static_cast<float*>(mapped));
+                q.enqueueUnmapMemObject(b, mapped);
                 uploaded = gl.version;
-                res.addBytes(bytesOf(texels));
+                res.addBytes(static_cast<long long>(bytes));
             } else {
                 res.addBytes(0);
             }
