@@ -142,17 +142,14 @@ void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
                       const glm::mat4& viewProj, int width, int height, bool irradiance,
                       GLuint envIrradiance, bool cull) {
     current_ = irradiance ? 1 : 0;
-    Variant& v = variants_[current_];
-    if (!v.program)
-        v.program = std::make_unique<ShaderProgram>(
-            "mesh.vert", "gbuffer.frag", irradiance ? "#define TSIS_GBUFFER_IRRADIANCE 1\n" : "");
+    std::unique_ptr<RenderTarget>& target = targets_[current_];
     std::vector<GLenum> formats(irradiance ? 3 : 2, GL_RGBA32F);
-    ensureTarget(v.target, width, height, formats, true);
+    ensureTarget(target, width, height, formats, true);
     if (clearColor_)
-        v.target->bindAndClear();
+        target->bindAndClear();
     else
-        v.target->bindAndClearDepth();
-    const ShaderProgram& program = *v.program;
+        target->bindAndClearDepth();
+    const ShaderProgram& program = programs_.get(irradiance ? 1u : 0u);
     program.use();
     bindLights(program, lights, kShadowUnit, shadows);
     media.bind(program, kMediaUnit);

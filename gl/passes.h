@@ -80,14 +80,11 @@ class GBufferPass {
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
              int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false);
-    const RenderTarget& target() const { return *variants_[current_].target; }
+    const RenderTarget& target() const { return *targets_[current_]; }
 
   private:
-    struct Variant {
-        std::unique_ptr<ShaderProgram> program;
-        std::unique_ptr<RenderTarget> target;
-    };
-    Variant variants_[2];  // without, with irradiance
+    ShaderVariants programs_{"mesh.vert", "gbuffer.frag", {"TSIS_GBUFFER_IRRADIANCE"}};
+    std::unique_ptr<RenderTarget> targets_[2];  // without, with irradiance
     int current_ = 0;
     bool clearColor_;
 };

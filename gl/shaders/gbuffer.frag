@@ -1,6 +1,6 @@
 // Camera G-buffer: world position (w = the medium tag 1 + medium, 0 where
 // uncovered), normal (w: below), and with
-// TSIS_GBUFFER_IRRADIANCE the irradiance E(x) at the pixel's surface point
+// TSIS_GBUFFER_IRRADIANCE (0 or 1, gl/shader.h ShaderVariants) the irradiance E(x) at the pixel's surface point
 // (for camera-view methods such as LSS; the shadow taps cost most of the pass).
 in vec3 v_position;
 in vec3 v_normal;
@@ -8,7 +8,7 @@ in vec2 v_uv;
 flat in float v_medium;
 layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
-#ifdef TSIS_GBUFFER_IRRADIANCE
+#if TSIS_GBUFFER_IRRADIANCE
 layout(location = 2) out vec4 o_irradiance;
 // The environment's residual E per atlas texel (render/env_light.h), when
 // u_hasEnv: the flux atlas's, read at the pixel's atlas texel.
@@ -23,7 +23,7 @@ void main() {
     // host reads its exit factor there, render/albedo_atlas.h), else 1.
     vec2 texel = min(floor(v_uv * vec2(textureSize(u_albedo, 0))), vec2(textureSize(u_albedo, 0) - 1));
     o_normal = vec4(n, u_textured ? 1.0 + texel.y * float(textureSize(u_albedo, 0).x) + texel.x : 1.0);
-#ifdef TSIS_GBUFFER_IRRADIANCE
+#if TSIS_GBUFFER_IRRADIANCE
     vec3 e = irradiance(v_position, n, mediumOf(v_medium).r);
     if (u_hasEnv != 0) {
         ivec2 size = textureSize(u_envIrradiance, 0);
