@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "gl/gl_context.h"
+#include "mesh/draw_order.h"
 #include "mesh/media.h"
 #include "mesh/weld.h"
 #include "util/error.h"
@@ -60,17 +61,14 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     floatAttribute(4, 1, stride, 9);  // medium tag
     glBindVertexArray(0);
 
-    std::vector<float> vertices;
     constexpr int kIndexedStride = 9;
-    vertices.reserve(mesh.positions.size() * kIndexedStride);
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    uploadIndexed(mesh, kIndexedStride, [&](uint32_t v, std::vector<float>& out) {
         const glm::vec3& p = mesh.positions[v];
         const glm::vec3& n = mesh.normals[v];
         const glm::vec2& uv = mesh.uvs[v];
-        vertices.insert(vertices.end(),
-                        {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v]), uv.x, uv.y});
-    }
-    uploadIndexed(vertices, kIndexedStride, mesh);
+        out.insert(out.end(),
+                   {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v]), uv.x, uv.y});
+    });
     closedOutward_ = tsis::closedOutward(mesh);
     floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
     floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
@@ -80,10 +78,10 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
 }
 
 GpuMesh::GpuMesh(const Mesh& mesh, PositionsOnly) {
-    std::vector<float> vertices;
-    vertices.reserve(mesh.positions.size() * 3);
-    for (const glm::vec3& p : mesh.positions) vertices.insert(vertices.end(), {p.x, p.y, p.z});
-    uploadIndexed(vertices, 3, mesh);
+    uploadIndexed(mesh, 3, [&](uint32_t v, std::vector<float>& out) {
+        const glm::vec3& p = mesh.positions[v];
+        out.insert(out.end(), {p.x, p.y, p.z});
+    });
     closedOutward_ = tsis::closedOutward(mesh);
     count_ = mesh.triangles.size() * 3;
     glBindVertexArray(0);
@@ -91,8 +89,13 @@ GpuMesh::GpuMesh(const Mesh& mesh, PositionsOnly) {
 }
 
 // The indexed VAO bound, its vertex buffer (position first of `stride`
-// floats) and the triangles uploaded.
-void GpuMesh::uploadIndexed(const std::vector<float>& vertices, int stride, const Mesh& mesh) {
+// floats, written by `vertex`) and the triangles uploaded, both in an order
+// llvmpipe sets up faster (mesh/draw_order.h).
+void GpuMesh::uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& vertex) {
+    const DrawOrder order = coherentDrawOrder(mesh);
+    std::vector<float> vertices;
+    vertices.reserve(order.vertexOf.size() * size_t(stride));
+    for (uint32_t v : order.vertexOf) vertex(v, vertices);
     glGenVertexArrays(1, &indexedVao_);
     glBindVertexArray(indexedVao_);
     glGenBuffers(1, &indexedVbo_);
@@ -102,8 +105,8 @@ void GpuMesh::uploadIndexed(const std::vector<float>& vertices, int stride, cons
     glGenBuffers(1, &ebo_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(glm::uvec3)),
-                 mesh.triangles.data(), GL_STATIC_DRAW);
+                 static_cast<GLsizeiptr>(order.triangles.size() * sizeof(glm::uvec3)),
+                 order.triangles.data(), GL_STATIC_DRAW);
     floatAttribute(0, 3, stride * static_cast<GLsizei>(sizeof(float)), 0);  // position
 }
 

@@ -1,11 +1,13 @@
 // The mesh on the GL side, twice: indexed (positions and normals of the shared
 // vertices) for the camera and light views, where llvmpipe's vertex cache
-// shades each vertex once instead of once per triangle corner; and unindexed
+// shades each vertex once instead of once per triangle corner (both listed in
+// mesh/draw_order.h's order, which it sets up fastest); and unindexed
 // (three vertices per triangle) for the atlas pass, so that a per-triangle
 // value, the area ratio A3D/AUV of eq. 3.2, can ride along.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "gl/gl.h"
@@ -36,7 +38,9 @@ class GpuMesh {
     GLuint vao_ = 0, vbo_ = 0;                          // unindexed
     GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
-    void uploadIndexed(const std::vector<float>& vertices, int stride, const Mesh& mesh);
+    // Appends the floats of the mesh's vertex v.
+    using VertexWriter = std::function<void(uint32_t v, std::vector<float>& out)>;
+    void uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& vertex);
     uint32_t media_ = 1;
     bool closedOutward_ = false;
 };
