@@ -113,6 +113,10 @@ class EglBackend final : public GlBackend {
     EglBackend(const EglBackend&) = delete;
     EglBackend& operator=(const EglBackend&) = delete;
 
+    std::unique_ptr<GlBackend> makeShared() const override {
+        return std::unique_ptr<GlBackend>(new EglBackend(*this, Shared{}));
+    }
+
     void makeCurrent() override {
         // The API is bound per thread: another thread may make this current.
         eglBindAPI(EGL_OPENGL_API);
@@ -127,6 +131,24 @@ class EglBackend final : public GlBackend {
     std::string platform() const override { return platform_; }
 
   private:
+    struct Shared {};
+    EglBackend(const EglBackend& share, Shared)
+        : display_(share.display_), config_(share.config_), platform_(share.platform_) {
+        std::lock_guard lock(gDisplaysMutex);
+        eglBindAPI(EGL_OPENGL_API);
+        ctx_ = eglCreateContext(display_, config_, share.ctx_, kContextAttribs);
+        if (ctx_ == EGL_NO_CONTEXT) fail("EGL: no shared context (", eglErrorText(), ")");
+        ++gDisplayUsers[display_];
+    }
+
+    static constexpr EGLint kContextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                                 4,
+                                                 EGL_CONTEXT_MINOR_VERSION,
+                                                 5,
+                                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                                 EGL_NONE};
+
     // Empty when `c` gave a current context (kept), else why not.
     std::string tryDisplay(const Candidate& c) {
         std::lock_guard lock(gDisplaysMutex);
@@ -158,14 +180,7 @@ class EglBackend final : public GlBackend {
             if (!eglChooseConfig(d, want, &config, 1, &n) || n < 1)
                 return "no config that renders OpenGL";
         }
-        const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                  4,
-                                  EGL_CONTEXT_MINOR_VERSION,
-                                  5,
-                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                  EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                  EGL_NONE};
-        EGLContext ctx = eglCreateContext(d, config, EGL_NO_CONTEXT, attribs);
+        EGLContext ctx = eglCreateContext(d, config, EGL_NO_CONTEXT, kContextAttribs);
         if (ctx == EGL_NO_CONTEXT) return "no OpenGL 4.5 core context (" + eglErrorText() + ")";
         if (!eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
             std::string e = "eglMakeCurrent: " + eglErrorText();
@@ -173,6 +188,7 @@ class EglBackend final : public GlBackend {
             return e;
         }
         ctx_ = ctx;
+        config_ = config;
         // GLVND unloads its vendors at exit: keep them mapped, so what Mesa
         // keeps for the process stays reachable (util/loaded_libraries.h).
         static std::once_flag once;
@@ -188,6 +204,7 @@ class EglBackend final : public GlBackend {
     }
 
     EGLDisplay display_ = EGL_NO_DISPLAY;
+    EGLConfig config_ = EGL_NO_CONFIG_KHR;
     EGLContext ctx_ = EGL_NO_CONTEXT;
     std::string platform_;
 };

@@ -20,6 +20,10 @@ class GlBackend {
     // and EGL then skips re-binding it; so a switch releases the old first.
     virtual void release() = 0;
     virtual GlProc proc(const char* name) const = 0;
+    // A second context of the same platform sharing this one's objects
+    // (textures, buffers, programs; not framebuffers nor vertex arrays), for
+    // another thread; not current anywhere. Throws tsis::Error when refused.
+    virtual std::unique_ptr<GlBackend> makeShared() const = 0;
     // "osmesa", "egl-device" or "egl-surfaceless".
     virtual std::string platform() const = 0;
 };

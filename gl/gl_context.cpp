@@ -1,6 +1,7 @@
 #include "gl/gl_context.h"
 
 #include <cstdlib>
+#include <utility>
 
 #include "gl/gl.h"
 #include "gl/gl_backend.h"
@@ -81,6 +82,19 @@ GlContext::GlContext(GlChoice choice) {
         fail("no GL context: ", backend_->platform(), " has no ", missing);
     tCurrentBackend = backend_.get();
     tCurrentGl = &gl_;
+}
+
+GlContext::GlContext(std::unique_ptr<GlBackend> backend) : backend_(std::move(backend)) {
+    if (const char* missing = loadGlFunctions(gl_, loadFrom, backend_.get()))
+        fail("no GL context: ", backend_->platform(), " has no ", missing);
+}
+
+std::unique_ptr<GlContext> GlContext::makeShared() const {
+    try {
+        return std::unique_ptr<GlContext>(new GlContext(backend_->makeShared()));
+    } catch (const Error& e) {
+        fail("no GL context: ", e.what());
+    }
 }
 
 GlContext::~GlContext() {

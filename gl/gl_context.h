@@ -29,6 +29,10 @@ class GlContext {
 
     // Makes the context and its entry points (gl/gl.h) current on this thread.
     void makeCurrent();
+    // A context sharing this one's objects (textures, buffers, programs — not
+    // framebuffers nor vertex arrays), current nowhere: for another thread
+    // (gl/gl_worker.h). Throws tsis::Error "no GL context: ..." when refused.
+    std::unique_ptr<GlContext> makeShared() const;
     // "llvmpipe (LLVM 15.0.6, 256 bits) / 4.5 (Core Profile) Mesa ..."
     std::string renderer() const;
     std::string vendor() const;  // GL_VENDOR: "Mesa", "NVIDIA Corporation", …
@@ -38,6 +42,7 @@ class GlContext {
     int maxTextureSize() const;
 
   private:
+    explicit GlContext(std::unique_ptr<GlBackend> backend);
     std::unique_ptr<GlBackend> backend_;
     GlFunctions gl_;
 };

@@ -108,6 +108,7 @@ void GpuMesh::uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& ve
                  static_cast<GLsizeiptr>(order.triangles.size() * sizeof(glm::uvec3)),
                  order.triangles.data(), GL_STATIC_DRAW);
     floatAttribute(0, 3, stride * static_cast<GLsizei>(sizeof(float)), 0);  // position
+    indexedStride_ = stride;
 }
 
 GpuMesh::~GpuMesh() {
@@ -119,6 +120,15 @@ GpuMesh::~GpuMesh() {
 
 void GpuMesh::draw() const {
     glBindVertexArray(indexedVao_);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+void GpuMesh::drawPositionsWith(GLuint vao) const {
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, indexedVbo_);
+    floatAttribute(0, 3, indexedStride_ * static_cast<GLsizei>(sizeof(float)), 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }

@@ -28,7 +28,12 @@ class GpuMesh {
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    void draw() const;                         // indexed: positions, normals, uvs
+    void draw() const;  // indexed: positions, normals, uvs
+    // The indexed positions through `vao`, a vertex array of the current
+    // context, which need not be the one that made this mesh (vertex arrays
+    // are not shared between contexts: gl/gl_worker.h); sets its attribute 0
+    // and element buffer.
+    void drawPositionsWith(GLuint vao) const;
     void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
     // Closed and wound outward (mesh/weld.h): a light's depth may cull back faces.
@@ -38,6 +43,7 @@ class GpuMesh {
     GLuint vao_ = 0, vbo_ = 0;                          // unindexed
     GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
+    int indexedStride_ = 0;  // floats a vertex of the indexed buffer
     // Appends the floats of the mesh's vertex v.
     using VertexWriter = std::function<void(uint32_t v, std::vector<float>& out)>;
     void uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& vertex);

@@ -15,7 +15,7 @@ namespace {
 
 class OsMesaBackend final : public GlBackend {
   public:
-    OsMesaBackend() : buffer_(4) {
+    explicit OsMesaBackend(OSMesaContext share = nullptr) : buffer_(4) {
         const int attribs[] = {OSMESA_FORMAT,
                                OSMESA_RGBA,
                                OSMESA_DEPTH_BITS,
@@ -27,7 +27,7 @@ class OsMesaBackend final : public GlBackend {
                                OSMESA_CONTEXT_MINOR_VERSION,
                                5,
                                0};
-        ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
+        ctx_ = OSMesaCreateContextAttribs(attribs, share);
         if (!ctx_) fail("OSMesa could not create an OpenGL 4.5 core context");
     }
     ~OsMesaBackend() override { OSMesaDestroyContext(ctx_); }
@@ -40,6 +40,9 @@ class OsMesaBackend final : public GlBackend {
     }
     void release() override { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
     GlProc proc(const char* name) const override { return OSMesaGetProcAddress(name); }
+    std::unique_ptr<GlBackend> makeShared() const override {
+        return std::make_unique<OsMesaBackend>(ctx_);
+    }
     std::string platform() const override { return "osmesa"; }
 
   private:

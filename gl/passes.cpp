@@ -57,6 +57,19 @@ void copyDepth(const RenderTarget& from, const RenderTarget& to) {
 LightViewPass::LightViewPass()
     : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {}
 
+LightViewPass::~LightViewPass() {
+    if (!worker_ || !side_.depthProgram) return;
+    worker_->start([this] {
+        glDeleteFramebuffers(1, &side_.framebuffer);
+        glDeleteVertexArrays(1, &side_.vertexArray);
+        side_.depthProgram.reset();
+    });
+    try {
+        worker_->wait();
+    } catch (const std::exception&) {  // freeing: nothing left to report to
+    }
+}
+
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                         const MaterialTables& media) {
     std::vector<size_t> all(lights.size());
@@ -64,36 +77,87 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
     run(mesh, lights, media, all);
 }
 
+void LightViewPass::drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
+                              GLuint framebuffer, GLuint vertexArray) {
+    RenderTarget& t = *view.target;
+    if (framebuffer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.depth(), 0);
+        glViewport(0, 0, t.width(), t.height());
+        const float one = 1.0f;
+        glClearBufferfv(GL_DEPTH, 0, &one);
+    } else {
+        t.bindAndClear();
+    }
+    program.use();
+    program.set("u_viewProj", view.viewProj);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    // A closed, outward mesh: its back faces are never the nearest (a third
+    // less of llvmpipe's per-triangle work).
+    if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
+    if (vertexArray)
+        mesh.drawPositionsWith(vertexArray);
+    else
+        mesh.draw();
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+}
+
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                         const MaterialTables& media, const std::vector<size_t>& changed,
                         const GpuMesh* depthMesh) {
-    program_.use();
-    bindLights(program_, lights, kShadowUnit, shadows_);
-    media.bind(program_, kMediaUnit);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    for (size_t i : changed) {
-        RenderTarget& t = *lights[i].target;
-        t.bindAndClear();
-        const bool maps = t.colorCount() > 0;
-        const ShaderProgram& p = maps ? program_ : depthProgram_;
-        p.use();
-        p.set("u_viewProj", lights[i].viewProj);
-        if (maps) {
-            p.set("u_light", static_cast<int>(i));
-            p.set("u_tanHalf", lights[i].tanHalf);
-            p.set("u_texelAreaMm", lights[i].texelAreaMm);
-            p.set("u_resolution", glm::vec2(t.width(), t.height()));
-        }
-        // A closed, outward mesh: its back faces are never the nearest
-        // (a third less of llvmpipe's per-triangle work).
-        const GpuMesh& drawn = maps || !depthMesh ? mesh : *depthMesh;
-        if (drawn.closedOutward()) glEnable(GL_CULL_FACE);
-        drawn.draw();
-        glDisable(GL_CULL_FACE);
+    // Every other depth-only view to the worker's thread: llvmpipe sets up
+    // each thread's triangles alone, so two views take little more than one.
+    std::vector<size_t> mine, theirs;
+    for (size_t k = 0; k < changed.size(); ++k) {
+        const bool maps = lights[changed[k]].target->colorCount() > 0;
+        (worker_ && !maps && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
     }
-    glDisable(GL_DEPTH_TEST);
+    const GpuMesh& depthDrawn = depthMesh ? *depthMesh : mesh;
+    if (!theirs.empty())
+        worker_->start([this, &depthDrawn, &lights, theirs] {
+            if (!side_.depthProgram) {
+                glGenFramebuffers(1, &side_.framebuffer);
+                glBindFramebuffer(GL_FRAMEBUFFER, side_.framebuffer);
+                glDrawBuffer(GL_NONE);
+                glReadBuffer(GL_NONE);
+                glGenVertexArrays(1, &side_.vertexArray);
+                side_.depthProgram = std::make_unique<ShaderProgram>("mesh.vert", "depth.frag");
+            }
+            for (size_t i : theirs)
+                drawDepth(depthDrawn, lights[i], *side_.depthProgram, side_.framebuffer,
+                          side_.vertexArray);
+            checkGl("LightViewPass (worker)");
+        });
+    try {
+        for (size_t i : mine) {
+            if (lights[i].target->colorCount() == 0) {
+                drawDepth(depthDrawn, lights[i], depthProgram_, 0, 0);
+                continue;
+            }
+            RenderTarget& t = *lights[i].target;
+            t.bindAndClear();
+            program_.use();
+            bindLights(program_, lights, kShadowUnit, shadows_);
+            media.bind(program_, kMediaUnit);
+            program_.set("u_viewProj", lights[i].viewProj);
+            program_.set("u_light", static_cast<int>(i));
+            program_.set("u_tanHalf", lights[i].tanHalf);
+            program_.set("u_texelAreaMm", lights[i].texelAreaMm);
+            program_.set("u_resolution", glm::vec2(t.width(), t.height()));
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LESS);
+            if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
+            mesh.draw();
+            glDisable(GL_CULL_FACE);
+            glDisable(GL_DEPTH_TEST);
+        }
+    } catch (...) {
+        if (!theirs.empty()) worker_->wait();  // it reads `lights`
+        throw;
+    }
+    if (!theirs.empty()) worker_->wait();
     shadows_.update(lights, changed);
     checkGl("LightViewPass");
 }

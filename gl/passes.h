@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "gl/gl_worker.h"
 #include "gl/gpu_mesh.h"
 #include "gl/light_view.h"
 #include "gl/material_tables.h"
@@ -23,6 +24,12 @@ namespace tsis {
 class LightViewPass {
   public:
     LightViewPass();
+    ~LightViewPass();
+    LightViewPass(const LightViewPass&) = delete;
+    LightViewPass& operator=(const LightViewPass&) = delete;
+    // Depth-only views drawn half on `worker`'s thread, in parallel with the
+    // others (null: all on this one). The worker outlives this pass.
+    void setWorker(GlWorker* worker) { worker_ = worker; }
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
     // Only the views `changed` (indices into lights), the others' kept; a
     // view without maps drawn from `depthMesh` when given (a coarser copy:
@@ -33,8 +40,21 @@ class LightViewPass {
     const ShadowMapArray& shadows() const { return shadows_; }
 
   private:
+    // The worker context's own objects for the views it draws, made and
+    // freed on its thread.
+    struct WorkerSide {
+        GLuint framebuffer = 0, vertexArray = 0;
+        std::unique_ptr<ShaderProgram> depthProgram;
+    };
+    // Clears and draws depth-only view `view` with `program` into `framebuffer`
+    // (0: the view's own target).
+    static void drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
+                          GLuint framebuffer, GLuint vertexArray);
+
     ShaderProgram program_, depthProgram_;
     ShadowMapArray shadows_;
+    GlWorker* worker_ = nullptr;
+    WorkerSide side_;  // used on the worker's thread only
 };
 
 // Pass A, part 1 (once per mesh and resolution): the geometry atlas —

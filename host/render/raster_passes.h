@@ -70,6 +70,8 @@ class RasterPasses {
     FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
                                           const RasterHandles& gl,
                                           FrameGraphId<RadiosityImage> radiosity);
+    // A second GL thread for the passes that overlap (null: none).
+    void setGlWorker(GlWorker* worker) { lightPass_.setWorker(worker); }
     // Whether the light views of the last frame were drawn for `lightingKey`.
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).

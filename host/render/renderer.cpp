@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "physics/dipole.h"
 #include "render/energy_target.h"
@@ -85,13 +87,28 @@ void recordFrame(FrameStats& stats, const RenderOptions& opt, const Scene& scene
     stats.set("graph", graph.describe());
 }
 
+// The worker where a shared context is made (every Mesa platform here): the
+// frame does without one where not, and with TSIS_GL_WORKER=0 (measuring).
+std::unique_ptr<GlWorker> makeGlWorker(const GlContext& gl) {
+    const char* env = std::getenv("TSIS_GL_WORKER");
+    if (env && std::string(env) == "0") return nullptr;
+    try {
+        return std::make_unique<GlWorker>(gl);
+    } catch (const Error&) {
+        return nullptr;
+    }
+}
+
 }  // namespace
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
     : gl_(parseGlChoice(gl)),
+      glWorker_(makeGlWorker(gl_)),
       cl_(clDevice),
       sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
-                                 clSharingSide(cl_.device()))) {}
+                                 clSharingSide(cl_.device()))) {
+    raster_.setGlWorker(glWorker_.get());
+}
 
 // The passes free their GL objects in this renderer's context, whichever
 // renderer of the thread drew last.

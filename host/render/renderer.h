@@ -11,6 +11,7 @@
 
 #include "cl/cl_runtime.h"
 #include "gl/gl_context.h"
+#include "gl/gl_worker.h"
 #include "image/image_io.h"
 #include "render/accumulator.h"
 #include "render/frame_stats.h"
@@ -61,6 +62,9 @@ class Renderer {
                                    const RenderOptions& opt, uint64_t meshKey);
 
     GlContext gl_;
+    // A second GL thread for passes that overlap (gl/gl_worker.h); null where
+    // no shared context is offered or TSIS_GL_WORKER=0. Outlives raster_.
+    std::unique_ptr<GlWorker> glWorker_;
     ClRuntime cl_;
     RasterPasses raster_;
     GlClStaging staging_;

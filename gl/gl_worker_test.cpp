@@ -1,0 +1,100 @@
+// The worker thread's context shares the caller's textures, reports its
+// errors, and draws light views the caller reads as if it had drawn them.
+#include "gl/gl_worker.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "gl/gl.h"
+#include "gl/gl_context.h"
+#include "gl/gpu_mesh.h"
+#include "gl/passes.h"
+#include "mesh/builtin.h"
+#include "tsis/error.h"
+
+namespace tsis {
+namespace {
+
+TEST(GlWorker, DrawsIntoATextureTheCallerReadsOnEitherPlatform) {
+    for (GlChoice choice : {GlChoice::Egl, GlChoice::OsMesa}) {
+        GlContext gl(choice);
+        RenderTarget target(4, 4, {GL_RGBA32F}, false);
+        GlWorker worker(gl);
+        std::thread::id where;
+        worker.start([&] {
+            where = std::this_thread::get_id();
+            GLuint fbo = 0;
+            glGenFramebuffers(1, &fbo);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                   target.color(0), 0);
+            const float value[4] = {1, 2, 3, 4};
+            glClearBufferfv(GL_COLOR, 0, value);
+            glDeleteFramebuffers(1, &fbo);
+        });
+        worker.wait();
+        EXPECT_NE(where, std::this_thread::get_id());
+        const std::vector<float> texels = target.readRGBA(0);
+        ASSERT_EQ(texels.size(), 64u);
+        for (size_t i = 0; i < texels.size(); ++i)
+            EXPECT_EQ(texels[i], float(i % 4 + 1)) << glChoiceName(choice) << " " << i;
+    }
+}
+
+TEST(GlWorker, ATaskErrorReachesWaitAndTheWorkerGoesOn) {
+    GlContext gl;
+    GlWorker worker(gl);
+    worker.start([] { throw Error("no mesh"); });
+    try {
+        worker.wait();
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "no mesh");
+    }
+    bool ran = false;
+    worker.start([&] { ran = true; });
+    worker.wait();
+    EXPECT_TRUE(ran);
+}
+
+// Three lights' shadows, half drawn on the worker's thread: the flux atlas
+// they shade (the default scene's thin parts shadow its body) is the one of
+// views all drawn here, byte for byte.
+TEST(GlWorker, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
+    GlContext gl;
+    Mesh mesh = builtinDefault();
+    normalizeMesh(mesh, 10.0);
+    ensureNormals(mesh);
+    GpuMesh gpu(mesh);
+    MaterialTables tables;
+    tables.updateMedia({{1.3f, 1.0f}});
+    tables.updateAlbedo({}, 0, 0);
+    GeometryAtlasPass geometry;
+    geometry.run(gpu, 256);
+    const std::vector<Light> lights = {
+        {Light::Type::Point, glm::vec3(-6.0f, 10.0f, -13.0f), glm::vec3(300.0f)},
+        {Light::Type::Directional, glm::vec3(0.6f, -0.4f, -1.0f), glm::vec3(0.1f)},
+        {Light::Type::Point, glm::vec3(12.0f, -3.0f, 8.0f), glm::vec3(200.0f)}};
+    // Depth-only views (no maps): those the worker takes.
+    auto fluxAtlas = [&](GlWorker* worker) {
+        std::vector<LightView> views;
+        for (const Light& l : lights) views.push_back(makeLightView(l, 6.0f, 512, false));
+        LightViewPass pass;
+        pass.setWorker(worker);
+        pass.run(gpu, views, tables);
+        FluxAtlasPass atlas;
+        atlas.run(geometry.target(), views, pass.shadows(), tables);
+        return atlas.target().readRGBA(0);
+    };
+    const std::vector<float> alone = fluxAtlas(nullptr);
+    GlWorker worker(gl);
+    const std::vector<float> shared = fluxAtlas(&worker);
+    ASSERT_EQ(alone.size(), shared.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < alone.size(); ++i) differ += alone[i] != shared[i];
+    EXPECT_EQ(differ, 0u);
+}
+
+}  // namespace
+}  // namespace tsis
