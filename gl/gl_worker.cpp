@@ -29,7 +29,10 @@ GlWorker::~GlWorker() {
 }
 
 void GlWorker::start(std::function<void()> task) {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    // One task at a time: one started and never waited for (its caller
+    // threw) runs out first; its error, if any, is wait()'s.
+    changed_.wait(lock, [this] { return !busy_; });
     task_ = std::move(task);
     busy_ = true;
     changed_.notify_all();
@@ -78,6 +81,34 @@ void GlWorker::loop(std::unique_ptr<GlContext> context) {
         changed_.notify_all();
     }
     context.reset();
+}
+
+WorkerSide::WorkerSide(std::string vertexFile, std::string fragmentFile,
+                       std::vector<std::string> features)
+    : programs_(std::make_unique<ShaderVariants>(std::move(vertexFile), std::move(fragmentFile),
+                                                 std::move(features))) {}
+
+WorkerSide::~WorkerSide() {
+    if (!worker_ || (!framebuffer_ && !vertexArray_)) return;
+    worker_->start([this] {
+        if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+        if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+        programs_.reset();
+    });
+    try {
+        worker_->wait();
+    } catch (const std::exception&) {  // freeing: nothing left to report to
+    }
+}
+
+GLuint WorkerSide::framebuffer() {
+    if (!framebuffer_) glGenFramebuffers(1, &framebuffer_);
+    return framebuffer_;
+}
+
+GLuint WorkerSide::vertexArray() {
+    if (!vertexArray_) glGenVertexArrays(1, &vertexArray_);
+    return vertexArray_;
 }
 
 }  // namespace tsis

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <thread>
 
 #include "gl/gl.h"
@@ -81,7 +82,7 @@ TEST(GlWorker, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
         std::vector<LightView> views;
         for (const Light& l : lights) views.push_back(makeLightView(l, 6.0f, 512, false));
         LightViewPass pass;
-        pass.setWorker(worker);
+        pass.setWorker(worker, 0);  // whatever the mesh's size
         pass.run(gpu, views, tables);
         FluxAtlasPass atlas;
         atlas.run(geometry.target(), views, pass.shadows(), tables);
@@ -94,6 +95,47 @@ TEST(GlWorker, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
     size_t differ = 0;
     for (size_t i = 0; i < alone.size(); ++i) differ += alone[i] != shared[i];
     EXPECT_EQ(differ, 0u);
+}
+
+// The composite's samples' G-buffer (depth cleared only) drawn on the
+// worker's thread: the same texels as one drawn here, the second time too
+// (its framebuffer then holds the first draw's attachments).
+TEST(GlWorker, GBufferDrawnOnItIsTheOneDrawnHere) {
+    GlContext gl;
+    Mesh mesh = builtinDefault();
+    normalizeMesh(mesh, 10.0);
+    ensureNormals(mesh);
+    GpuMesh gpu(mesh);
+    MaterialTables tables;
+    tables.updateMedia({{1.3f, 1.0f}});
+    tables.updateAlbedo({}, 0, 0);
+    std::vector<LightView> views;
+    LightViewPass lights;
+    lights.run(gpu, views, tables);
+    const glm::mat4 viewProj = glm::perspective(0.7f, 1.0f, 1.0f, 100.0f) *
+                               glm::lookAt(glm::vec3(0, 5, 16), glm::vec3(0), glm::vec3(0, 1, 0));
+    GlWorker worker(gl);
+    GBufferPass here(false), there(false);
+    there.setWorker(&worker, 0);
+    ASSERT_TRUE(there.onWorker(gpu, true));
+    for (int size : {96, 128}) {
+        here.run(gpu, views, lights.shadows(), tables, viewProj, size, size, false, 0, true);
+        there.start(gpu, views, lights.shadows(), tables, viewProj, size, size, false, 0, true);
+        there.finish();
+        for (int i = 0; i < 2; ++i) {
+            const std::vector<float> a = here.target().readRGBA(i), b = there.target().readRGBA(i);
+            size_t covered = 0, differ = 0;
+            // Uncovered pixels keep what the target held (not cleared).
+            const std::vector<float> position = here.target().readRGBA(0);
+            for (size_t k = 0; k < a.size(); k += 4) {
+                if (position[k + 3] == 0) continue;
+                ++covered;
+                for (size_t c = 0; c < 4; ++c) differ += a[k + c] != b[k + c];
+            }
+            EXPECT_GT(covered, size_t(size * size / 8)) << size;
+            EXPECT_EQ(differ, 0u) << "attachment " << i << " at " << size;
+        }
+    }
 }
 
 }  // namespace

@@ -70,9 +70,6 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
                    {p.x, p.y, p.z, n.x, n.y, n.z, mediumTag(media.ofVertex[v]), uv.x, uv.y});
     });
     closedOutward_ = tsis::closedOutward(mesh);
-    floatAttribute(1, 3, kIndexedStride * sizeof(float), 3);  // normal
-    floatAttribute(4, 1, kIndexedStride * sizeof(float), 6);  // medium tag
-    floatAttribute(2, 2, kIndexedStride * sizeof(float), 7);  // uv (albedo atlas)
     glBindVertexArray(0);
     checkGl("GpuMesh upload");
 }
@@ -88,9 +85,9 @@ GpuMesh::GpuMesh(const Mesh& mesh, PositionsOnly) {
     checkGl("GpuMesh upload (positions)");
 }
 
-// The indexed VAO bound, its vertex buffer (position first of `stride`
-// floats, written by `vertex`) and the triangles uploaded, both in an order
-// llvmpipe sets up faster (mesh/draw_order.h).
+// The indexed VAO bound, its vertex buffer (`stride` floats a vertex, written
+// by `vertex`: indexedAttributes' layout) and the triangles uploaded, both in
+// an order llvmpipe sets up faster (mesh/draw_order.h).
 void GpuMesh::uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& vertex) {
     const DrawOrder order = coherentDrawOrder(mesh);
     std::vector<float> vertices;
@@ -107,8 +104,21 @@ void GpuMesh::uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& ve
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(order.triangles.size() * sizeof(glm::uvec3)),
                  order.triangles.data(), GL_STATIC_DRAW);
-    floatAttribute(0, 3, stride * static_cast<GLsizei>(sizeof(float)), 0);  // position
     indexedStride_ = stride;
+    indexedAttributes();
+}
+
+// The bound vertex array's attributes and element buffer from the indexed
+// buffers: position, then (all but PositionsOnly) normal, medium tag and uv.
+void GpuMesh::indexedAttributes() const {
+    glBindBuffer(GL_ARRAY_BUFFER, indexedVbo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+    const GLsizei stride = indexedStride_ * static_cast<GLsizei>(sizeof(float));
+    floatAttribute(0, 3, stride, 0);  // position
+    if (indexedStride_ == 3) return;
+    floatAttribute(1, 3, stride, 3);  // normal
+    floatAttribute(4, 1, stride, 6);  // medium tag
+    floatAttribute(2, 2, stride, 7);  // uv (albedo atlas)
 }
 
 GpuMesh::~GpuMesh() {
@@ -124,11 +134,9 @@ void GpuMesh::draw() const {
     glBindVertexArray(0);
 }
 
-void GpuMesh::drawPositionsWith(GLuint vao) const {
-    glBindVertexArray(vao);
-    glBindBuffer(GL_ARRAY_BUFFER, indexedVbo_);
-    floatAttribute(0, 3, indexedStride_ * static_cast<GLsizei>(sizeof(float)), 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+void GpuMesh::drawWith(GLuint vertexArray) const {
+    glBindVertexArray(vertexArray);
+    indexedAttributes();
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }

@@ -29,13 +29,14 @@ class GpuMesh {
     GpuMesh& operator=(const GpuMesh&) = delete;
 
     void draw() const;  // indexed: positions, normals, uvs
-    // The indexed positions through `vao`, a vertex array of the current
-    // context, which need not be the one that made this mesh (vertex arrays
-    // are not shared between contexts: gl/gl_worker.h); sets its attribute 0
-    // and element buffer.
-    void drawPositionsWith(GLuint vao) const;
+    // As draw(), through `vertexArray`: one of the current context, which
+    // need not be the one that made this mesh (vertex arrays are not shared
+    // between contexts: gl/gl_worker.h); sets its attributes.
+    void drawWith(GLuint vertexArray) const;
     void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
+    // The triangles a pass sets up: all, or with back faces culled about half.
+    size_t trianglesSetUp(bool culled) const { return count_ / 3 / (culled ? 2 : 1); }
     // Closed and wound outward (mesh/weld.h): a light's depth may cull back faces.
     bool closedOutward() const { return closedOutward_; }
 
@@ -47,6 +48,7 @@ class GpuMesh {
     // Appends the floats of the mesh's vertex v.
     using VertexWriter = std::function<void(uint32_t v, std::vector<float>& out)>;
     void uploadIndexed(const Mesh& mesh, int stride, const VertexWriter& vertex);
+    void indexedAttributes() const;
     uint32_t media_ = 1;
     bool closedOutward_ = false;
 };

@@ -57,19 +57,6 @@ void copyDepth(const RenderTarget& from, const RenderTarget& to) {
 LightViewPass::LightViewPass()
     : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {}
 
-LightViewPass::~LightViewPass() {
-    if (!worker_ || !side_.depthProgram) return;
-    worker_->start([this] {
-        glDeleteFramebuffers(1, &side_.framebuffer);
-        glDeleteVertexArrays(1, &side_.vertexArray);
-        side_.depthProgram.reset();
-    });
-    try {
-        worker_->wait();
-    } catch (const std::exception&) {  // freeing: nothing left to report to
-    }
-}
-
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                         const MaterialTables& media) {
     std::vector<size_t> all(lights.size());
@@ -79,16 +66,7 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
 
 void LightViewPass::drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
                               GLuint framebuffer, GLuint vertexArray) {
-    RenderTarget& t = *view.target;
-    if (framebuffer) {
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.depth(), 0);
-        glViewport(0, 0, t.width(), t.height());
-        const float one = 1.0f;
-        glClearBufferfv(GL_DEPTH, 0, &one);
-    } else {
-        t.bindAndClear();
-    }
+    view.target->bindAndClear(framebuffer);
     program.use();
     program.set("u_viewProj", view.viewProj);
     glEnable(GL_DEPTH_TEST);
@@ -97,37 +75,30 @@ void LightViewPass::drawDepth(const GpuMesh& mesh, LightView& view, const Shader
     // less of llvmpipe's per-triangle work).
     if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
     if (vertexArray)
-        mesh.drawPositionsWith(vertexArray);
+        mesh.drawWith(vertexArray);
     else
         mesh.draw();
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
 }
 
-void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
-                        const MaterialTables& media, const std::vector<size_t>& changed,
-                        const GpuMesh* depthMesh) {
+size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
+                          const MaterialTables& media, const std::vector<size_t>& changed,
+                          const GpuMesh* depthMesh) {
     // Every other depth-only view to the worker's thread: llvmpipe sets up
     // each thread's triangles alone, so two views take little more than one.
     std::vector<size_t> mine, theirs;
+    const GpuMesh& depthDrawn = depthMesh ? *depthMesh : mesh;
+    GlWorker* worker = side_.workerFor(depthDrawn.trianglesSetUp(depthDrawn.closedOutward()));
     for (size_t k = 0; k < changed.size(); ++k) {
         const bool maps = lights[changed[k]].target->colorCount() > 0;
-        (worker_ && !maps && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
+        (worker && !maps && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
     }
-    const GpuMesh& depthDrawn = depthMesh ? *depthMesh : mesh;
     if (!theirs.empty())
-        worker_->start([this, &depthDrawn, &lights, theirs] {
-            if (!side_.depthProgram) {
-                glGenFramebuffers(1, &side_.framebuffer);
-                glBindFramebuffer(GL_FRAMEBUFFER, side_.framebuffer);
-                glDrawBuffer(GL_NONE);
-                glReadBuffer(GL_NONE);
-                glGenVertexArrays(1, &side_.vertexArray);
-                side_.depthProgram = std::make_unique<ShaderProgram>("mesh.vert", "depth.frag");
-            }
+        worker->start([this, &depthDrawn, &lights, theirs] {
             for (size_t i : theirs)
-                drawDepth(depthDrawn, lights[i], *side_.depthProgram, side_.framebuffer,
-                          side_.vertexArray);
+                drawDepth(depthDrawn, lights[i], side_.program(), side_.framebuffer(),
+                          side_.vertexArray());
             checkGl("LightViewPass (worker)");
         });
     try {
@@ -154,12 +125,13 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
             glDisable(GL_DEPTH_TEST);
         }
     } catch (...) {
-        if (!theirs.empty()) worker_->wait();  // it reads `lights`
+        if (!theirs.empty()) worker->wait();  // it reads `lights`
         throw;
     }
-    if (!theirs.empty()) worker_->wait();
+    if (!theirs.empty()) worker->wait();
     shadows_.update(lights, changed);
     checkGl("LightViewPass");
+    return theirs.size();
 }
 
 GeometryAtlasPass::GeometryAtlasPass() : program_("atlas.vert", "atlas.frag") {}
@@ -201,34 +173,58 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
     checkGl("FluxAtlasPass");
 }
 
-void GBufferPass::run(const GpuMesh& mesh, const std::vector<LightView>& lights,
-                      const ShadowMapArray& shadows, const MaterialTables& media,
-                      const glm::mat4& viewProj, int width, int height, bool irradiance,
-                      GLuint envIrradiance, bool cull) {
+void GBufferPass::start(const GpuMesh& mesh, const std::vector<LightView>& lights,
+                        const ShadowMapArray& shadows, const MaterialTables& media,
+                        const glm::mat4& viewProj, int width, int height, bool irradiance,
+                        GLuint envIrradiance, bool cull) {
+    finish();
     current_ = irradiance ? 1 : 0;
-    std::unique_ptr<RenderTarget>& target = targets_[current_];
+    // The target's textures are made here, in the caller's context.
     std::vector<GLenum> formats(irradiance ? 3 : 2, GL_RGBA32F);
-    ensureTarget(target, width, height, formats, true);
+    ensureTarget(targets_[current_], width, height, formats, true);
+    const Draw d{&mesh, &lights, &shadows, &media, viewProj, irradiance, envIrradiance, cull};
+    GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(cull));
+    if (!worker) {
+        draw(d, programs_.get(irradiance ? 1u : 0u), 0, 0);
+        return;
+    }
+    worker->start([this, d] {
+        draw(d, side_.program(d.irradiance ? 1u : 0u), side_.framebuffer(), side_.vertexArray());
+    });
+    started_ = true;
+}
+
+void GBufferPass::finish() {
+    if (!started_) return;
+    started_ = false;
+    side_.worker()->wait();
+}
+
+void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint framebuffer,
+                       GLuint vertexArray) {
+    RenderTarget& target = *targets_[current_];
     if (clearColor_)
-        target->bindAndClear();
+        target.bindAndClear(framebuffer);
     else
-        target->bindAndClearDepth();
-    const ShaderProgram& program = programs_.get(irradiance ? 1u : 0u);
+        target.bindAndClearDepth(framebuffer);
     program.use();
-    bindLights(program, lights, kShadowUnit, shadows);
-    media.bind(program, kMediaUnit);
-    program.set("u_viewProj", viewProj);
-    if (irradiance) {
-        bindTexture(program, "u_envIrradiance", 0, envIrradiance);
-        program.set("u_hasEnv", envIrradiance != 0 ? 1 : 0);
+    bindLights(program, *d.lights, kShadowUnit, *d.shadows);
+    d.media->bind(program, kMediaUnit);
+    program.set("u_viewProj", d.viewProj);
+    if (d.irradiance) {
+        bindTexture(program, "u_envIrradiance", 0, d.envIrradiance);
+        program.set("u_hasEnv", d.envIrradiance != 0 ? 1 : 0);
     }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    if (cull)
+    if (d.cull)
         glEnable(GL_CULL_FACE);
     else
         glDisable(GL_CULL_FACE);
-    mesh.draw();
+    if (vertexArray)
+        d.mesh->drawWith(vertexArray);
+    else
+        d.mesh->draw();
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     checkGl("GBufferPass");

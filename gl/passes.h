@@ -24,37 +24,32 @@ namespace tsis {
 class LightViewPass {
   public:
     LightViewPass();
-    ~LightViewPass();
-    LightViewPass(const LightViewPass&) = delete;
-    LightViewPass& operator=(const LightViewPass&) = delete;
-    // Depth-only views drawn half on `worker`'s thread, in parallel with the
-    // others (null: all on this one). The worker outlives this pass.
-    void setWorker(GlWorker* worker) { worker_ = worker; }
+    // Depth-only views drawn every other one on `worker`'s thread, in
+    // parallel with the others, for a mesh of `minTriangles` set up or more
+    // (kWorkerMinTriangles: where it pays; else, or null, all on this one).
+    // The worker outlives this pass.
+    void setWorker(GlWorker* worker, size_t minTriangles = kWorkerMinTriangles) {
+        side_.setWorker(worker, minTriangles);
+    }
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
     // Only the views `changed` (indices into lights), the others' kept; a
     // view without maps drawn from `depthMesh` when given (a coarser copy:
     // its LightView::lodMm set by the caller).
-    void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media,
-             const std::vector<size_t>& changed, const GpuMesh* depthMesh = nullptr);
+    // Returns how many were drawn on the worker.
+    size_t run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media,
+               const std::vector<size_t>& changed, const GpuMesh* depthMesh = nullptr);
     // The shadow maps of the last run, for the passes that light.
     const ShadowMapArray& shadows() const { return shadows_; }
 
   private:
-    // The worker context's own objects for the views it draws, made and
-    // freed on its thread.
-    struct WorkerSide {
-        GLuint framebuffer = 0, vertexArray = 0;
-        std::unique_ptr<ShaderProgram> depthProgram;
-    };
-    // Clears and draws depth-only view `view` with `program` into `framebuffer`
-    // (0: the view's own target).
+    // Clears and draws depth-only view `view` with `program`; `framebuffer`
+    // and `vertexArray` a worker's (WorkerSide), 0 for this context's.
     static void drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
                           GLuint framebuffer, GLuint vertexArray);
 
     ShaderProgram program_, depthProgram_;
     ShadowMapArray shadows_;
-    GlWorker* worker_ = nullptr;
-    WorkerSide side_;  // used on the worker's thread only
+    WorkerSide side_{"mesh.vert", "depth.frag"};
 };
 
 // Pass A, part 1 (once per mesh and resolution): the geometry atlas —
@@ -97,16 +92,50 @@ class GBufferPass {
     // clearColor false: only depth is cleared, and a reader takes coverage
     // from it (< 1): an uncovered pixel's colour is an earlier frame's.
     explicit GBufferPass(bool clearColor = true) : clearColor_(clearColor) {}
+    // start() draws on `worker`'s thread for a mesh of `minTriangles` set
+    // up or more (kWorkerMinTriangles: where it pays), else (or null) here
+    // at once; finish() waits for it. The worker outlives this pass.
+    void setWorker(GlWorker* worker, size_t minTriangles = kWorkerMinTriangles) {
+        side_.setWorker(worker, minTriangles);
+    }
+    bool onWorker(const GpuMesh& mesh, bool cull) const {
+        return side_.workerFor(mesh.trianglesSetUp(cull)) != nullptr;
+    }
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
-             int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false);
+             int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false) {
+        start(mesh, lights, shadows, media, viewProj, width, height, irradiance, envIrradiance,
+              cull);
+        finish();
+    }
+    // The arguments stay alive until finish().
+    void start(const GpuMesh& mesh, const std::vector<LightView>& lights,
+               const ShadowMapArray& shadows, const MaterialTables& media,
+               const glm::mat4& viewProj, int width, int height, bool irradiance,
+               GLuint envIrradiance = 0, bool cull = false);
+    void finish();
     const RenderTarget& target() const { return *targets_[current_]; }
 
   private:
+    struct Draw {
+        const GpuMesh* mesh;
+        const std::vector<LightView>* lights;
+        const ShadowMapArray* shadows;
+        const MaterialTables* media;
+        glm::mat4 viewProj;
+        bool irradiance;
+        GLuint envIrradiance;
+        bool cull;
+    };
+    // `framebuffer` and `vertexArray`: a worker's (WorkerSide), 0 for this context's.
+    void draw(const Draw& d, const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray);
+
     ShaderVariants programs_{"mesh.vert", "gbuffer.frag", {"TSIS_GBUFFER_IRRADIANCE"}};
     std::unique_ptr<RenderTarget> targets_[2];  // without, with irradiance
     int current_ = 0;
     bool clearColor_;
+    bool started_ = false;  // on the worker, not yet finished
+    WorkerSide side_{"mesh.vert", "gbuffer.frag", {"TSIS_GBUFFER_IRRADIANCE"}};
 };
 
 // The environment's reflection for the composite (render/env_reflection.h):

@@ -27,30 +27,21 @@ void setShadowSampling(GLenum target) {
 
 RenderTarget::RenderTarget(int width, int height, std::vector<GLenum> colorFormats, bool depth)
     : width_(width), height_(height), formats_(std::move(colorFormats)) {
-    glGenFramebuffers(1, &fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     colors_.resize(formats_.size());
-    std::vector<GLenum> drawBuffers;
     for (size_t i = 0; i < formats_.size(); ++i) {
         glGenTextures(1, &colors_[i]);
         glBindTexture(GL_TEXTURE_2D, colors_[i]);
         glTexStorage2D(GL_TEXTURE_2D, 1, formats_[i], width, height);
         setNearestClamp(GL_TEXTURE_2D);
-        GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, colors_[i], 0);
-        drawBuffers.push_back(attachment);
     }
     if (depth) {
         glGenTextures(1, &depth_);
         glBindTexture(GL_TEXTURE_2D, depth_);
         glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, width, height);
         setShadowSampling(GL_TEXTURE_2D);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
     }
-    if (drawBuffers.empty())
-        glDrawBuffer(GL_NONE);
-    else
-        glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+    glGenFramebuffers(1, &fbo_);
+    attachTo(fbo_);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     TSIS_CHECK_EQ(status, static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
     checkGl("RenderTarget creation");
@@ -62,13 +53,36 @@ RenderTarget::~RenderTarget() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
 }
 
-void RenderTarget::bind() {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+// Binds `framebuffer` with exactly this target's textures attached (another
+// target's left over on a shared one detached) and its draw buffers.
+void RenderTarget::attachTo(GLuint framebuffer) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    constexpr size_t kAttachments = 8;  // GL_MAX_COLOR_ATTACHMENTS is at least 8
+    TSIS_CHECK_LE(colors_.size(), kAttachments);
+    std::vector<GLenum> drawBuffers;
+    for (size_t i = 0; i < kAttachments; ++i) {
+        const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D,
+                               i < colors_.size() ? colors_[i] : 0, 0);
+        if (i < colors_.size()) drawBuffers.push_back(attachment);
+    }
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
+    if (drawBuffers.empty())
+        glDrawBuffer(GL_NONE);
+    else
+        glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+}
+
+void RenderTarget::bind(GLuint framebuffer) {
+    if (framebuffer)
+        attachTo(framebuffer);
+    else
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, width_, height_);
 }
 
-void RenderTarget::bindAndClear() {
-    bind();
+void RenderTarget::bindAndClear(GLuint framebuffer) {
+    bind(framebuffer);
     const float zero[4] = {0, 0, 0, 0};
     for (size_t i = 0; i < colors_.size(); ++i)
         glClearBufferfv(GL_COLOR, static_cast<GLint>(i), zero);
@@ -78,9 +92,9 @@ void RenderTarget::bindAndClear() {
     }
 }
 
-void RenderTarget::bindAndClearDepth() {
+void RenderTarget::bindAndClearDepth(GLuint framebuffer) {
     TSIS_CHECK(depth_ != 0);
-    bind();
+    bind(framebuffer);
     const float one = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &one);
 }

@@ -18,12 +18,15 @@ class RenderTarget {
     RenderTarget& operator=(const RenderTarget&) = delete;
 
     // Binds, sets the viewport and clears colour (to zero) and depth.
-    void bindAndClear();
+    // `framebuffer`: one of another context (where this target's own is not
+    // valid: framebuffers are not shared, gl/gl_worker.h) to bind with this
+    // target's textures attached; 0, the target's own.
+    void bindAndClear(GLuint framebuffer = 0);
     // Binds and clears depth only, for readers that take coverage from it.
-    void bindAndClearDepth();
+    void bindAndClearDepth(GLuint framebuffer = 0);
     // Binds and sets the viewport; the contents stay (a pass that writes
     // only what it will read).
-    void bind();
+    void bind(GLuint framebuffer = 0);
     int width() const { return width_; }
     int height() const { return height_; }
     GLuint color(int i) const { return colors_[static_cast<size_t>(i)]; }
@@ -41,6 +44,7 @@ class RenderTarget {
 
   private:
     void read(int i, GLenum type, void* out) const;
+    void attachTo(GLuint framebuffer) const;
 
     int width_, height_;
     std::vector<GLenum> formats_;

@@ -49,6 +49,20 @@ bool cullsBackFaces(const FrameContext& ctx, const GpuMesh& mesh) {
 
 }  // namespace
 
+void RasterPasses::setGlWorker(GlWorker* worker) {
+    lightPass_.setWorker(worker);
+    sampleGbufferPass_.setWorker(worker);
+}
+
+// What the composite's samples' G-buffer shows: the mesh, the camera, the
+// size and --aa.
+uint64_t RasterPasses::samplesKey(const FrameContext& ctx) const {
+    Hasher key;
+    key.add(meshHash_).add(ctx.width).add(ctx.height).add(ctx.options->aa);
+    for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
+    return key.digest();
+}
+
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
     if (gpuMesh_ && hash == meshHash_) return;
     gpuMesh_ = std::make_unique<GpuMesh>(mesh);
@@ -133,13 +147,15 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 viewKeys_[i] = key;
                 changed.push_back(i);
             }
+            size_t onWorker = 0;
             if (!changed.empty()) {
-                lightPass_.run(*res.read(h.mesh), lights_, materials_, changed, depth);
+                onWorker = lightPass_.run(*res.read(h.mesh), lights_, materials_, changed, depth);
                 glFinish();
                 ++lightsVersion_;
             }
             lightViewKey_ = lighting;
             res.stats().set("light_views_drawn", static_cast<double>(changed.size()));
+            res.stats().set("light_views_on_worker", static_cast<double>(onWorker));
             res.stats().set("light_views_cull",
                             (depth ? depth : res.read(h.mesh))->closedOutward() ? 1.0 : 0.0);
             res.write(h.lights) = {&lights_, &lightPass_.shadows(), lightsVersion_};
@@ -210,15 +226,26 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             key.add(meshHash_).add(ctx.width).add(ctx.height).add(irradiance).add(ctx.albedo->key);
             for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
             if (irradiance) key.add(lighting).add(eta);
+            // The composite's samples' G-buffer, when it is to be drawn too,
+            // on the worker's thread meanwhile (gl_composite_samples waits).
+            const GlLights& lights = res.read(h.lights);
+            const GpuMesh& mesh = *res.read(h.mesh);
+            const uint64_t samples = samplesKey(ctx);
+            if (sampleGbufferPass_.onWorker(mesh, cullsBackFaces(ctx, mesh)) &&
+                ctx.options->aa > 1 && graph.isRead(h.samples) && samples != samplesKey_) {
+                sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_,
+                                         ctx.viewProj, ctx.width * ctx.options->aa,
+                                         ctx.height * ctx.options->aa, false, 0,
+                                         cullsBackFaces(ctx, mesh));
+                samplesStarted_ = samples;
+            }
             if (key.digest() != gbufferKey_) {
-                const GlLights& lights = res.read(h.lights);
                 const GLuint env =
                     irradiance && ctx.scene->env
                         ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
                         : 0;
-                gbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows, materials_,
-                                 ctx.viewProj, ctx.width, ctx.height, irradiance, env,
-                                 cullsBackFaces(ctx, *res.read(h.mesh)));
+                gbufferPass_.run(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
+                                 ctx.width, ctx.height, irradiance, env, cullsBackFaces(ctx, mesh));
                 glFinish();
                 gbufferKey_ = key.digest();
                 ++gbufferVersion_;
@@ -236,21 +263,26 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.write(h.samples);
         },
         [this, &ctx, h](FrameGraph::Resources& res) {
+            res.stats().set("samples_on_worker", 0.0);
             const int aa = ctx.options->aa;
             if (aa == 1) {
                 res.write(h.samples) = res.read(h.gbuffer);
                 return;
             }
-            Hasher key;
-            key.add(meshHash_).add(ctx.width).add(ctx.height).add(aa);
-            for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
-            if (key.digest() != samplesKey_) {
+            const uint64_t key = samplesKey(ctx);
+            if (samplesStarted_ == key) {
+                res.stats().set("samples_on_worker", 1.0);
+                sampleGbufferPass_.finish();
+                samplesStarted_ = 0;
+                samplesKey_ = key;
+                ++samplesVersion_;
+            } else if (key != samplesKey_) {
                 const GlLights& lights = res.read(h.lights);
                 sampleGbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows,
                                        materials_, ctx.viewProj, ctx.width * aa, ctx.height * aa,
                                        false, 0, cullsBackFaces(ctx, *res.read(h.mesh)));
                 glFinish();
-                samplesKey_ = key.digest();
+                samplesKey_ = key;
                 ++samplesVersion_;
             }
             res.write(h.samples) = {&sampleGbufferPass_.target(), samplesVersion_};

@@ -70,8 +70,9 @@ class RasterPasses {
     FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
                                           const RasterHandles& gl,
                                           FrameGraphId<RadiosityImage> radiosity);
-    // A second GL thread for the passes that overlap (null: none).
-    void setGlWorker(GlWorker* worker) { lightPass_.setWorker(worker); }
+    // A second GL thread for the passes that overlap (null: none): the
+    // light views, and the composite's samples' G-buffer beside the frame's.
+    void setGlWorker(GlWorker* worker);
     // Whether the light views of the last frame were drawn for `lightingKey`.
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
@@ -82,6 +83,7 @@ class RasterPasses {
 
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
+    uint64_t samplesKey(const FrameContext& ctx) const;
     // What the shadow maps are drawn from: the coarser copy (mesh/lod.h) of a
     // mesh over 2 × `budget` triangles, made once per mesh and budget; null
     // for the mesh itself.
@@ -117,8 +119,9 @@ class RasterPasses {
     // What the targets hold: lighting keys (0 = nothing) and versions.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0, residualKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)
-    uint64_t gbufferKey_ = 0;  // mesh, camera, size (and the lighting, with irradiance)
-    uint64_t samplesKey_ = 0;  // mesh, camera, size, --aa
+    uint64_t gbufferKey_ = 0;      // mesh, camera, size (and the lighting, with irradiance)
+    uint64_t samplesKey_ = 0;      // mesh, camera, size, --aa
+    uint64_t samplesStarted_ = 0;  // the key of samples on the worker, not yet waited for
     uint64_t lightsVersion_ = 0, geometryVersion_ = 0, fluxVersion_ = 0, residualVersion_ = 0,
              gbufferVersion_ = 0, samplesVersion_ = 0;
 };

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 
+#include "gl/gl_worker.h"
 #include "scene/environment.h"
 #include "support/render.h"
 
@@ -71,6 +73,37 @@ TEST(Renderer, MovingOneLightRedrawsOnlyItsView) {
         EXPECT_EQ(scratch.stats.number("light_views_drawn"), 2);
         EXPECT_EQ(scratch.radiosity.pixels, kept.radiosity.pixels);
         EXPECT_EQ(scratch.rgb8, kept.rgb8);
+    }
+}
+
+// A mesh of enough triangles draws every other light view, and with the
+// camera moving the composite's samples' G-buffer, on the GL worker's thread
+// (gl/gl_worker.h): frames byte for byte those of a renderer without one, as
+// the camera, then the lights, move.
+TEST(Renderer, PassesOnTheGlWorkerGiveTheFramesOfOneThread) {
+    Scene scene = test::torusScene("skin1", 10.0);
+    scene.mesh.triangles.pop_back();  // open: no culling, every triangle set up
+    ASSERT_GE(scene.mesh.triangles.size(), kWorkerMinTriangles);
+    scene.lights.push_back({Light::Type::Directional, glm::vec3(0.6f, -0.4f, -1), glm::vec3(0.1f)});
+    const RenderOptions opt = test::smallOptions(64, 256, 256);
+    ::setenv("TSIS_GL_WORKER", "0", 1);
+    Renderer serial;
+    ::unsetenv("TSIS_GL_WORKER");
+    Renderer threaded;
+    Scene moved = scene;
+    moved.camera.eye = glm::vec3(6, 4, 14);
+    Scene relit = moved;
+    relit.lights[0].vec = glm::vec3(12, 3, 8);  // both lights: both views drawn
+    relit.lights[1].vec = glm::vec3(-0.6f, -0.4f, -1);
+    int step = 0;
+    for (const Scene* s : {&scene, &moved, &relit}) {
+        SCOPED_TRACE(step++);
+        const FrameResult a = serial.render(*s, opt), b = threaded.render(*s, opt);
+        EXPECT_EQ(a.stats.number("light_views_on_worker"), 0);
+        EXPECT_EQ(a.stats.number("samples_on_worker"), 0);
+        EXPECT_EQ(b.stats.number("light_views_on_worker"), s == &moved ? 0 : 1);
+        EXPECT_EQ(b.stats.number("samples_on_worker"), s == &relit ? 0 : 1);
+        EXPECT_EQ(a.rgb8, b.rgb8);
     }
 }
 
