@@ -11,10 +11,12 @@ namespace tsis {
 
 namespace {
 
-// Texture units: 0–3, 5, 8 and 9 for a pass's own inputs, 4 for the shadow
-// map array, 6 and 7 for the material tables.
+// Texture units: 0–3, 5, 8, 9 and 10 for a pass's own inputs, 4 for the
+// shadow map array, 6 and 7 for the material tables.
 constexpr int kShadowUnit = 4;
 constexpr int kMediaUnit = 6;
+// The supersampled pixels' slots a row (CompositePass::edgePixels_).
+constexpr int kEdgeColumns = 64;
 
 void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
     p.set(name, unit);
@@ -233,7 +235,7 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
 CompositePass::CompositePass()
     : centrePrograms_("fullscreen.vert", "radiance.frag",
                       {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES"}),
-      samplePrograms_("edge_points.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
+      samplePrograms_("fullscreen.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
                       "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
@@ -297,6 +299,20 @@ void CompositePass::updateEdgePoints(uint64_t key) {
                  points.data(), GL_DYNAMIC_DRAW);
     edgeCount_ = static_cast<GLsizei>(points.size() / 2);
     edgesKey_ = key;
+    // The same list as a texture, edge e at (e mod kEdgeColumns, e div
+    // kEdgeColumns), rows in steps of 8 (fewer re-made targets); the slots
+    // past the list repeat its last pixel (shaded, never read).
+    const int rows = std::max(1, (edgeCount_ + kEdgeColumns * 8 - 1) / (kEdgeColumns * 8)) * 8;
+    std::vector<float> slots(size_t(kEdgeColumns) * size_t(rows) * 4, 0.0f);
+    for (size_t e = 0; e < slots.size() / 4; ++e) {
+        const size_t from = std::min(e, std::max<size_t>(points.size() / 2, 1) - 1) * 2;
+        if (from + 1 >= points.size()) break;
+        slots[e * 4] = points[from];
+        slots[e * 4 + 1] = points[from + 1];
+    }
+    if (!edgePixels_ || edgePixels_->height() != rows)
+        edgePixels_ = std::make_unique<FloatTexture>(kEdgeColumns, rows);
+    edgePixels_->upload(slots.data());
 }
 
 void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
@@ -349,25 +365,27 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
         if (findEdges) updateEdgePoints(edgesKey);
-        ensureTarget(sampleTarget_, w * aa, h * aa, {GL_RGBA32F}, false);
-        sampleTarget_->bind();
-        samples.use();
-        samples.set("u_aa", aa);
-        bindTexture(samples, "u_radiosity", 0, radiosity_->id());
-        bindTexture(samples, "u_framePosition", 1, frameGbuffer.color(0));
-        bindTexture(samples, "u_normal", 2, sampleGbuffer.color(1));
-        bindTexture(samples, "u_position", 3, sampleGbuffer.color(0));
-        // Coverage from the samples' depth (their colour is not cleared).
-        bindTexture(samples, "u_sampleDepth", 5, sampleGbuffer.depth());
-        glBindSampler(5, depthSampler_);
-        samples.set("u_frameSize", glm::vec2(w, h));
-        samples.set("u_pointSize", static_cast<float>(aa));
-        glEnable(GL_PROGRAM_POINT_SIZE);
-        glBindVertexArray(edgeVao_);
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
-        glBindSampler(5, 0);
-        glBindVertexArray(emptyVao_);
-        glDisable(GL_PROGRAM_POINT_SIZE);
+        // The marked pixels' samples, packed: edge e's aa × aa block at its
+        // slot in edgePixels_ (llvmpipe shades full 4×4 blocks, where a
+        // point per pixel filled a quarter of each).
+        if (edgeCount_ > 0) {
+            ensureTarget(sampleTarget_, kEdgeColumns * aa, edgePixels_->height() * aa, {GL_RGBA32F},
+                         false);
+            sampleTarget_->bind();
+            samples.use();
+            samples.set("u_aa", aa);
+            bindTexture(samples, "u_radiosity", 0, radiosity_->id());
+            bindTexture(samples, "u_framePosition", 1, frameGbuffer.color(0));
+            bindTexture(samples, "u_normal", 2, sampleGbuffer.color(1));
+            bindTexture(samples, "u_position", 3, sampleGbuffer.color(0));
+            // Coverage from the samples' depth (their colour is not cleared).
+            bindTexture(samples, "u_sampleDepth", 5, sampleGbuffer.depth());
+            glBindSampler(5, depthSampler_);
+            bindTexture(samples, "u_edgePixels", 10, edgePixels_->id());
+            glBindVertexArray(emptyVao_);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glBindSampler(5, 0);
+        }
     }
     checkGl("CompositePass::radiance");
 }
@@ -403,6 +421,7 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
         edges.set("u_frameSize", glm::vec2(w, h));
         bindTexture(edges, "u_centre", 0, centreTarget_->color(0));
         bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
+        edges.set("u_edgeColumns", kEdgeColumns);
         glBindVertexArray(edgeVao_);
         glDrawArrays(GL_POINTS, 0, edgeCount_);
         glBindVertexArray(emptyVao_);

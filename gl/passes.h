@@ -214,6 +214,8 @@ class CompositePass {
     // G-buffer changed: the marks follow the camera, not the lights.
     GLuint edgeVao_ = 0, edgeVbo_ = 0;
     GLsizei edgeCount_ = 0;
+    // Their (x, y) as a texture of slots, for the samples' packed layout.
+    std::unique_ptr<FloatTexture> edgePixels_;
     uint64_t edgesKey_ = 0;
     // The G-buffer's coverage and supersampled pixels this frame (edgesKey_'s
     // key), and those the tone map's background was drawn for.

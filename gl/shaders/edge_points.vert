@@ -8,8 +8,10 @@
 layout(location = 0) in vec2 a_pixel;
 uniform vec2 u_frameSize;
 uniform float u_pointSize;
+flat out int v_edge;  // the point's place in the list (its samples' slot)
 
 void main() {
+    v_edge = gl_VertexID;
     gl_PointSize = u_pointSize;
     gl_Position = vec4((a_pixel + 0.5) / u_frameSize * 2.0 - 1.0, 0.0, 1.0);
 }

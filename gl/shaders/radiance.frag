@@ -9,8 +9,9 @@
 // (the uncovered ones beside a covered one are found on the host from the
 // coverage this writes: CompositePass::updateEdgePoints). With
 // TSIS_COMPOSITE_SAMPLES: u_aa × u_aa samples per pixel from the composite's
-// own G-buffer, drawn only in the pixels marked (edge_points.vert; elsewhere
-// the centre's sample stands for the pixel). Features (0 or 1, gl/shader.h
+// own G-buffer, only for the pixels marked (elsewhere the centre's sample
+// stands for the pixel), packed: a full-screen pass over a target of one
+// u_aa × u_aa block per marked pixel, in the order of u_edgePixels. Features (0 or 1, gl/shader.h
 // ShaderVariants): TSIS_SPECULAR the lobe, TSIS_ENV_REFLECT the
 // environment's reflection with it.
 uniform sampler2D u_radiosity;      // B at the frame's pixels
@@ -69,6 +70,8 @@ bool sameSurface(vec4 a, vec4 b) {
 uniform sampler2D u_position;     // the samples'
 uniform sampler2D u_sampleDepth;  // their depth: < 1 where covered (colour not cleared)
 uniform int u_aa;
+// Marked pixel e's frame coordinates (xy) at texel (e mod width, e div width).
+uniform sampler2D u_edgePixels;
 
 // B at sample px (surface point p): the frame pixel's that holds the sample,
 // or where that pixel shows no surface or another one, the covered
@@ -95,7 +98,10 @@ vec3 radiosityAt(ivec2 px, vec4 p) {
 }
 
 void main() {
-    ivec2 px = ivec2(gl_FragCoord.xy);
+    // This fragment's slot: the marked pixel, and which of its samples.
+    ivec2 slot = ivec2(gl_FragCoord.xy);
+    ivec2 pixel = ivec2(texelFetch(u_edgePixels, slot / u_aa, 0).xy);
+    ivec2 px = pixel * u_aa + slot % u_aa;
     vec4 p = texelFetch(u_position, px, 0);
     bool covered = texelFetch(u_sampleDepth, px, 0).r < 1.0 && p.w != 0.0;
     o_radiance = covered ? vec4(shade(p, px, radiosityAt(px, p)), 1.0) : vec4(0.0);
