@@ -39,6 +39,7 @@
 #define glEnableVertexAttribArray (::tsis::tCurrentGl->EnableVertexAttribArray)
 #define glFinish (::tsis::tCurrentGl->Finish)
 #define glFramebufferTexture2D (::tsis::tCurrentGl->FramebufferTexture2D)
+#define glFramebufferTextureLayer (::tsis::tCurrentGl->FramebufferTextureLayer)
 #define glGenBuffers (::tsis::tCurrentGl->GenBuffers)
 #define glGenFramebuffers (::tsis::tCurrentGl->GenFramebuffers)
 #define glGenSamplers (::tsis::tCurrentGl->GenSamplers)

@@ -47,6 +47,7 @@ namespace tsis {
     X(EnableVertexAttribArray, ENABLEVERTEXATTRIBARRAY) \
     X(Finish, FINISH)                                   \
     X(FramebufferTexture2D, FRAMEBUFFERTEXTURE2D)       \
+    X(FramebufferTextureLayer, FRAMEBUFFERTEXTURELAYER) \
     X(GenBuffers, GENBUFFERS)                           \
     X(GenFramebuffers, GENFRAMEBUFFERS)                 \
     X(GenSamplers, GENSAMPLERS)                         \

@@ -19,40 +19,46 @@ void updateLightView(LightView& lv, const Light& light, float radius, int resolu
     lv.tanHalf = lp.tanHalf;
     lv.texelAreaMm = lp.texelAreaMm;
     lv.texelMm = lp.texelMm;
+    lv.resolution = resolution;
     const int colours = maps ? (normals ? 3 : 2) : 0;
-    if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != colours)
+    if (colours == 0)
+        lv.target.reset();
+    else if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != colours)
         lv.target = std::make_unique<RenderTarget>(
-            resolution, resolution, std::vector<GLenum>(size_t(colours), GL_RGBA32F), true);
+            resolution, resolution, std::vector<GLenum>(size_t(colours), GL_RGBA32F), false);
 }
 
 ShadowMapArray::~ShadowMapArray() {
     if (id_) glDeleteTextures(1, &id_);
 }
 
-void ShadowMapArray::update(const std::vector<LightView>& lights,
-                            const std::vector<size_t>& changed) {
-    if (lights.empty()) return;
-    int res = lights[0].target->width();
-    int layers = static_cast<int>(lights.size());
-    bool all = false;
-    if (!id_ || res != resolution_ || layers != layers_) {
-        if (id_) glDeleteTextures(1, &id_);
-        glGenTextures(1, &id_);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
-        glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, res, res, layers);
-        setShadowSampling(GL_TEXTURE_2D_ARRAY);
-        resolution_ = res;
-        layers_ = layers;
-        all = true;
+bool ShadowMapArray::ensure(int resolution, int layers) {
+    if (id_ && resolution == resolution_ && layers == layers_) return false;
+    if (id_) glDeleteTextures(1, &id_);
+    glGenTextures(1, &id_);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, id_);
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
+    setShadowSampling(GL_TEXTURE_2D_ARRAY);
+    resolution_ = resolution;
+    layers_ = layers;
+    return true;
+}
+
+void bindAndClearLightView(GLuint framebuffer, const LightView& view, const ShadowMapArray& shadows,
+                           int layer) {
+    if (view.target) {
+        view.target->bindAndClear(framebuffer);  // its maps (it has no depth)
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        // A framebuffer may have held a view with maps before.
+        for (GLenum i = 0; i < 3; ++i)
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, 0, 0);
+        glDrawBuffer(GL_NONE);
+        glViewport(0, 0, view.resolution, view.resolution);
     }
-    auto copy = [&](size_t i) {
-        glCopyImageSubData(lights[i].target->depth(), GL_TEXTURE_2D, 0, 0, 0, 0, id_,
-                           GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<int>(i), res, res, 1);
-    };
-    if (all)
-        for (size_t i = 0; i < lights.size(); ++i) copy(i);
-    else
-        for (size_t i : changed) copy(i);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadows.id(), 0, layer);
+    const float one = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &one);
 }
 
 void bindLights(const ShaderProgram& program, const std::vector<LightView>& lights, int unit,

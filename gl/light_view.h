@@ -15,15 +15,18 @@ namespace tsis {
 struct LightView {
     Light light;
     glm::mat4 viewProj{1.0f};
-    float tanHalf = 0;                     // point lights: tan of half the field of view
-    float texelAreaMm = 0;                 // directional: area of one texel (mm²)
-    float texelMm = 0;                     // a texel's size at the object centre (shadow offsets)
-    std::unique_ptr<RenderTarget> target;  // flux, position (, normal); depth = shadow map
+    float tanHalf = 0;      // point lights: tan of half the field of view
+    float texelAreaMm = 0;  // directional: area of one texel (mm²)
+    float texelMm = 0;      // a texel's size at the object centre (shadow offsets)
+    int resolution = 0;     // texels a side
+    // With maps: flux, position (, normal); no depth of its own, the shadow
+    // map is drawn into the light's layer of ShadowMapArray. Null without.
+    std::unique_ptr<RenderTarget> target;
 };
 
 // The light's projection (scene/projection.h) with its render target.
-// maps: the target also has the flux and position maps (the light-view
-// methods read them); without, it is depth only. Throws tsis::Error for a
+// maps: a target of the flux and position maps (the light-view methods read
+// them); without, none (depth only). Throws tsis::Error for a
 // point light inside that sphere or a zero direction.
 // normals: with maps, a third map of the surface normal (w = the medium tag),
 // for the single-scattering term (render/single_scatter.h).
@@ -35,22 +38,27 @@ void updateLightView(LightView& view, const Light& light, float boundingRadius, 
                      bool maps, bool normals = false);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
-// form the shaders sample.
+// form the shaders sample; the light views draw into their layers.
 class ShadowMapArray {
   public:
     ShadowMapArray() = default;
     ~ShadowMapArray();
     ShadowMapArray(const ShadowMapArray&) = delete;
     ShadowMapArray& operator=(const ShadowMapArray&) = delete;
-    // Copies the depth of the lights `changed` (indices) into their layers;
-    // all of them when the array is made again (a new size or light count).
-    void update(const std::vector<LightView>& lights, const std::vector<size_t>& changed);
+    // Makes the array for `layers` maps of resolution² when it has another
+    // shape; true then (every layer to draw again).
+    bool ensure(int resolution, int layers);
     GLuint id() const { return id_; }
 
   private:
     GLuint id_ = 0;
     int resolution_ = 0, layers_ = 0;
 };
+
+// Binds `framebuffer` for drawing view `view`: its maps' textures (if any)
+// and layer `layer` of `shadows` as depth, viewport set; clears them.
+void bindAndClearLightView(GLuint framebuffer, const LightView& view, const ShadowMapArray& shadows,
+                           int layer);
 
 // Sets u_lightCount, u_light* and u_shadow* on `program`, binding the
 // shadow map array to texture unit `unit`.

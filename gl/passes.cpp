@@ -57,7 +57,13 @@ void copyDepth(const RenderTarget& from, const RenderTarget& to) {
 }  // namespace
 
 LightViewPass::LightViewPass()
-    : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {}
+    : program_("mesh.vert", "light_view.frag"), depthProgram_("mesh.vert", "depth.frag") {
+    glGenFramebuffers(1, &framebuffer_);
+}
+
+LightViewPass::~LightViewPass() {
+    if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+}
 
 void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                         const MaterialTables& media) {
@@ -66,9 +72,10 @@ void LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
     run(mesh, lights, media, all);
 }
 
-void LightViewPass::drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
-                              GLuint framebuffer, GLuint vertexArray) {
-    view.target->bindAndClear(framebuffer);
+void LightViewPass::drawDepth(const GpuMesh& mesh, const LightView& view, int layer,
+                              const ShaderProgram& program, GLuint framebuffer,
+                              GLuint vertexArray) const {
+    bindAndClearLightView(framebuffer, view, shadows_, layer);
     program.use();
     program.set("u_viewProj", view.viewProj);
     glEnable(GL_DEPTH_TEST);
@@ -87,38 +94,49 @@ void LightViewPass::drawDepth(const GpuMesh& mesh, LightView& view, const Shader
 size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
                           const MaterialTables& media, const std::vector<size_t>& changed,
                           const GpuMesh* depthMesh) {
+    if (lights.empty()) return 0;
+    // Each view draws its depth straight into its layer; a new array (size or
+    // count) has every layer to draw.
+    std::vector<size_t> views = changed;
+    if (shadows_.ensure(lights[0].resolution, static_cast<int>(lights.size()))) {
+        views.resize(lights.size());
+        for (size_t i = 0; i < views.size(); ++i) views[i] = i;
+    }
     // Every other depth-only view to the worker's thread: llvmpipe sets up
     // each thread's triangles alone, so two views take little more than one.
     std::vector<size_t> mine, theirs;
     const GpuMesh& depthDrawn = depthMesh ? *depthMesh : mesh;
     GlWorker* worker = side_.workerFor(depthDrawn.trianglesSetUp(depthDrawn.closedOutward()));
-    for (size_t k = 0; k < changed.size(); ++k) {
-        const bool maps = lights[changed[k]].target->colorCount() > 0;
-        (worker && !maps && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
+    for (size_t k = 0; k < views.size(); ++k) {
+        const bool maps = lights[views[k]].target != nullptr;
+        (worker && !maps && k % 2 == 1 ? theirs : mine).push_back(views[k]);
     }
     if (!theirs.empty())
         worker->start([this, &depthDrawn, &lights, theirs] {
             for (size_t i : theirs)
-                drawDepth(depthDrawn, lights[i], side_.program(), side_.framebuffer(),
-                          side_.vertexArray());
+                drawDepth(depthDrawn, lights[i], static_cast<int>(i), side_.program(),
+                          side_.framebuffer(), side_.vertexArray());
             checkGl("LightViewPass (worker)");
         });
     try {
         for (size_t i : mine) {
-            if (lights[i].target->colorCount() == 0) {
-                drawDepth(depthDrawn, lights[i], depthProgram_, 0, 0);
+            if (!lights[i].target) {
+                drawDepth(depthDrawn, lights[i], static_cast<int>(i), depthProgram_, framebuffer_,
+                          0);
                 continue;
             }
-            RenderTarget& t = *lights[i].target;
-            t.bindAndClear();
+            bindAndClearLightView(framebuffer_, lights[i], shadows_, static_cast<int>(i));
             program_.use();
             bindLights(program_, lights, kShadowUnit, shadows_);
+            // The array is drawn into, not read: no texture of it bound.
+            glActiveTexture(GL_TEXTURE0 + kShadowUnit);
+            glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
             media.bind(program_, kMediaUnit);
             program_.set("u_viewProj", lights[i].viewProj);
             program_.set("u_light", static_cast<int>(i));
             program_.set("u_tanHalf", lights[i].tanHalf);
             program_.set("u_texelAreaMm", lights[i].texelAreaMm);
-            program_.set("u_resolution", glm::vec2(t.width(), t.height()));
+            program_.set("u_resolution", glm::vec2(lights[i].resolution));
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
             if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
@@ -131,7 +149,6 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
         throw;
     }
     if (!theirs.empty()) worker->wait();
-    shadows_.update(lights, changed);
     checkGl("LightViewPass");
     return theirs.size();
 }

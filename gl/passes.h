@@ -24,6 +24,9 @@ namespace tsis {
 class LightViewPass {
   public:
     LightViewPass();
+    ~LightViewPass();
+    LightViewPass(const LightViewPass&) = delete;
+    LightViewPass& operator=(const LightViewPass&) = delete;
     // Depth-only views drawn every other one on `worker`'s thread, in
     // parallel with the others, for a mesh of `minTriangles` set up or more
     // (kWorkerMinTriangles: where it pays; else, or null, all on this one).
@@ -32,9 +35,9 @@ class LightViewPass {
         side_.setWorker(worker, minTriangles);
     }
     void run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media);
-    // Only the views `changed` (indices into lights), the others' kept; a
-    // view without maps drawn from `depthMesh` when given (a coarser copy:
-    // its LightView::lodMm set by the caller).
+    // Only the views `changed` (indices into lights), the others' kept
+    // (all, when the shadow map array is made again); a view without maps
+    // drawn from `depthMesh` when given (a coarser copy, mesh/lod.h).
     // Returns how many were drawn on the worker.
     size_t run(const GpuMesh& mesh, std::vector<LightView>& lights, const MaterialTables& media,
                const std::vector<size_t>& changed, const GpuMesh* depthMesh = nullptr);
@@ -42,13 +45,15 @@ class LightViewPass {
     const ShadowMapArray& shadows() const { return shadows_; }
 
   private:
-    // Clears and draws depth-only view `view` with `program`; `framebuffer`
-    // and `vertexArray` a worker's (WorkerSide), 0 for this context's.
-    static void drawDepth(const GpuMesh& mesh, LightView& view, const ShaderProgram& program,
-                          GLuint framebuffer, GLuint vertexArray);
+    // Clears and draws depth-only view `view` into layer `layer` with
+    // `program` through `framebuffer`, this context's or a worker's
+    // (WorkerSide) as `vertexArray` (0: the mesh's own).
+    void drawDepth(const GpuMesh& mesh, const LightView& view, int layer,
+                   const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray) const;
 
     ShaderProgram program_, depthProgram_;
     ShadowMapArray shadows_;
+    GLuint framebuffer_ = 0;  // this context's, for any view (bindAndClearLightView)
     WorkerSide side_{"mesh.vert", "depth.frag"};
 };
 

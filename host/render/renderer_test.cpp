@@ -76,6 +76,26 @@ TEST(Renderer, MovingOneLightRedrawsOnlyItsView) {
     }
 }
 
+// The views draw straight into the shadow map array's layers: a light added
+// makes a new array, and every light's layer is drawn again (the others'
+// views unchanged): the frame of a renderer that drew them all afresh.
+TEST(Renderer, ALightAddedDrawsEveryShadowLayerAgain) {
+    Scene a =
+        test::sphereScene("skin1", {Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)});
+    a.lights.push_back({Light::Type::Directional, glm::vec3(0.3f, -1, -0.5f), glm::vec3(0.5f)});
+    Scene more = a;
+    more.lights.push_back({Light::Type::Point, glm::vec3(9, -4, 8), glm::vec3(150.0f)});
+    const RenderOptions opt = test::smallOptions(48, 256, 256);
+    RenderOptions fresh = opt;
+    fresh.reuseLighting = false;
+    test::renderWith(a, opt, "pyramid");
+    const FrameResult added = test::renderWith(more, opt, "pyramid");
+    EXPECT_EQ(added.stats.number("light_views_drawn"), 1);
+    const FrameResult scratch = test::renderWith(more, fresh, "pyramid");
+    EXPECT_EQ(scratch.radiosity.pixels, added.radiosity.pixels);
+    EXPECT_EQ(scratch.rgb8, added.rgb8);
+}
+
 // A mesh of enough triangles draws every other light view, and with the
 // camera moving the composite's samples' G-buffer, on the GL worker's thread
 // (gl/gl_worker.h): frames byte for byte those of a renderer without one, as
