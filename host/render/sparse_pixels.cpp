@@ -1,5 +1,6 @@
 #include "render/sparse_pixels.h"
 
+#include <array>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -28,40 +29,64 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
     auto pointAt = [&](int x, int y) {
         return x < width && y < height ? packed[static_cast<size_t>(y) * width + x] : -1;
     };
+    enum : char { kPending, kEvaluated, kInterpolated };
+    std::vector<char> state(pixels.size(), kPending);
 
     SparsePixels plan;
     std::vector<int> grid, gridCells, rest, restPixels;
     for (size_t k = 0; k < pixels.size(); ++k) {
         const int x = pixels[k] % width, y = pixels[k] / width;
-        const int x0 = x - x % stride, y0 = y - y % stride;
-        if (x == x0 && y == y0) {
+        if (x % stride == 0 && y % stride == 0) {
+            state[k] = kEvaluated;
             grid.push_back(int(k));
             // The grid in its own coordinates, so its tiles are 4×2 grid points.
-            gridCells.push_back((y0 / stride) * ((width + stride - 1) / stride) + x0 / stride);
-            continue;
+            gridCells.push_back((y / stride) * ((width + stride - 1) / stride) + x / stride);
         }
-        const std::array<int, 4> c = {pointAt(x0, y0), pointAt(x0 + stride, y0),
-                                      pointAt(x0, y0 + stride), pointAt(x0 + stride, y0 + stride)};
-        bool ok = true;
-        for (int corner : c)
-            ok = ok && corner >= 0 && glm::distance(at(corner), at(int(k))) <= maxCornerMm;
-        if (!ok) {
-            rest.push_back(int(k));
-            restPixels.push_back(pixels[k]);
-            continue;
+    }
+    // A pixel whose cell fails at one level tries the cell of half the side,
+    // down to 2: its corners evaluated, or interpolated at a level above.
+    // Near silhouettes and on curved parts a smaller cell often passes, where
+    // evaluating every such pixel cost a third of the frame's evaluations.
+    for (int s = stride; s >= 2; s /= 2) {
+        if (s < stride)
+            for (size_t k = 0; k < pixels.size(); ++k)
+                if (state[k] == kPending && pixels[k] % width % s == 0 &&
+                    pixels[k] / width % s == 0)
+                    state[k] = kEvaluated;
+        for (size_t k = 0; k < pixels.size(); ++k) {
+            if (state[k] != kPending) continue;
+            const int x = pixels[k] % width, y = pixels[k] / width;
+            const int x0 = x - x % s, y0 = y - y % s;
+            const std::array<int, 4> c = {pointAt(x0, y0), pointAt(x0 + s, y0), pointAt(x0, y0 + s),
+                                          pointAt(x0 + s, y0 + s)};
+            bool ok = true;
+            // A corner interpolated at a coarser level counts: its range of
+            // the list is interpolated before this one.
+            for (int corner : c)
+                ok = ok && corner >= 0 && state[size_t(corner)] != kPending &&
+                     glm::distance(at(corner), at(int(k))) <= maxCornerMm;
+            if (!ok) continue;
+            const float fx = float(x - x0) / float(s), fy = float(y - y0) / float(s);
+            const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+            // The corners' positions interpolated must land near the pixel's
+            // own: the cell is close to flat, so B's interpolation follows the
+            // surface.
+            glm::vec3 p(0.0f);
+            for (int j = 0; j < 4; ++j) p += w[size_t(j)] * at(c[size_t(j)]);
+            if (glm::distance(p, at(int(k))) > kFlatness * maxCornerMm) continue;
+            plan.interpolate.push_back(
+                {int(k), {c[0], c[1], c[2], c[3]}, {w[0], w[1], w[2], w[3]}});
+            state[k] = kInterpolated;
         }
-        const float fx = float(x - x0) / stride, fy = float(y - y0) / stride;
-        const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-        // The corners' positions interpolated must land near the pixel's own:
-        // the cell is close to flat, so B's interpolation follows the surface.
-        glm::vec3 p(0.0f);
-        for (int j = 0; j < 4; ++j) p += w[size_t(j)] * at(c[size_t(j)]);
-        if (glm::distance(p, at(int(k))) > kFlatness * maxCornerMm) {
-            rest.push_back(int(k));
-            restPixels.push_back(pixels[k]);
-            continue;
-        }
-        plan.interpolate.push_back({int(k), {c[0], c[1], c[2], c[3]}, {w[0], w[1], w[2], w[3]}});
+        plan.levelEnds.push_back(static_cast<int>(plan.interpolate.size()));
+    }
+    // The rest, evaluated below the grid's level or in no cell at all, in
+    // pixel order (tileOrder's input).
+    for (size_t k = 0; k < pixels.size(); ++k) {
+        const int x = pixels[k] % width, y = pixels[k] / width;
+        if (state[k] == kInterpolated || (x % stride == 0 && y % stride == 0)) continue;
+        rest.push_back(int(k));
+        restPixels.push_back(pixels[k]);
     }
     for (int i : FluxTree::tileOrder(gridCells, (width + stride - 1) / stride))
         plan.evaluate.push_back(grid[static_cast<size_t>(i)]);
@@ -88,6 +113,7 @@ void SparseInterpolation::upload(const SparsePixels& plan) {
     uploaded_ = true;
     const std::vector<TsisInterpolatedPixel>& p = plan.interpolate;
     count_ = static_cast<int>(p.size());
+    levelEnds_ = plan.levelEnds;
     if (p.empty()) return;
     const size_t bytes = p.size() * sizeof(TsisInterpolatedPixel);
     events_.emplace_back();
@@ -98,10 +124,15 @@ void SparseInterpolation::upload(const SparsePixels& plan) {
 void SparseInterpolation::run(cl::Buffer& rgba) {
     if (!uploaded_) events_.clear();
     uploaded_ = false;
-    if (count_ == 0) return;
-    setKernelArgs(kernel_, pixels_.buffer, count_, rgba);
-    events_.emplace_back();
-    enqueue1D(cl_.queue(), kernel_, size_t(count_), kLocalSize, &events_.back());
+    // A level's pixels read the ones above: a launch each, in order.
+    int begin = 0;
+    for (int end : levelEnds_) {
+        if (end == begin) continue;
+        setKernelArgs(kernel_, pixels_.buffer, begin, end, rgba);
+        events_.emplace_back();
+        enqueue1D(cl_.queue(), kernel_, size_t(end - begin), kLocalSize, &events_.back());
+        begin = end;
+    }
 }
 
 double SparseInterpolation::lastMs() const {

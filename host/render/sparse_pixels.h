@@ -5,8 +5,9 @@
 // pixel is interpolated only when all four corners of its grid cell are
 // covered and lie within `maxCornerMm` of it in 3D (the same surface, no
 // silhouette or depth jump between) and their positions interpolated land
-// within a tenth of that of its own (a nearly flat cell); otherwise it is
-// evaluated itself.
+// within a tenth of that of its own (a nearly flat cell); otherwise it tries
+// the cell of half the side, whose corners are evaluated for it (down to 2
+// pixels), and failing every level it is evaluated itself.
 #pragma once
 
 #include <vector>
@@ -21,8 +22,12 @@ struct SparsePixels {
     // Indices into the packed covered points to evaluate, grouped so runs of
     // 8 are neighbours on screen: the grid's points first, then the rest.
     std::vector<int> evaluate;
-    // Packed indices of the point and of its cell's corners, and the weights.
+    // Packed indices of the point and of its cell's corners, and the weights,
+    // by level (cell side stride, stride/2, … 2): level i is
+    // interpolate[levelEnds[i-1], levelEnds[i]), its corners evaluated or in
+    // a level before it.
     std::vector<TsisInterpolatedPixel> interpolate;
+    std::vector<int> levelEnds;
 };
 
 // pixels: the GL pixel index (y·width + x) of each packed point, ascending;
@@ -31,8 +36,8 @@ struct SparsePixels {
 SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<float>& positions,
                               int width, int height, int stride, float maxCornerMm);
 
-// rgba: 4 floats per packed point, the evaluated ones filled; fills the rest.
-// The reference for SparseInterpolation.
+// rgba: 4 floats per packed point, the evaluated ones filled; fills the rest
+// (in the list's order: level by level). The reference for SparseInterpolation.
 void interpolateSparsePixels(const SparsePixels& plan, std::vector<float>& rgba);
 
 // The same on the device (kernels/sparse_pixels.cl), in place in the CL
@@ -59,6 +64,7 @@ class SparseInterpolation {
     cl::Kernel kernel_;
     GrowingBuffer pixels_;
     int count_ = 0;
+    std::vector<int> levelEnds_;  // the plan's (SparsePixels::levelEnds)
     std::vector<cl::Event> events_;
     bool uploaded_ = false;  // an upload since the last run
 };

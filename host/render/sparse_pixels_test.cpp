@@ -57,9 +57,12 @@ TEST(SparsePixels, LinearFieldIsExactOnAPlane) {
             EXPECT_NEAR(rgba[size_t(k) * 4 + c], field(k) * float(c + 1), 1e-4f) << k << " " << c;
 }
 
-// A depth jump (another surface 5 mm behind) and a missing corner: the
-// pixels of those cells are evaluated, not interpolated across.
-TEST(SparsePixels, DepthJumpsAndHolesAreEvaluated) {
+// A depth jump (another surface 5 mm behind) and a missing corner: no pixel
+// is interpolated across them. The cells of 4 at x0 = 4 span the jump (x =
+// 6), at x0 = 8 have the hole as a corner, at x0 = 12 reach past the image;
+// their pixels try cells of 2, whose corners lie on one side (x = 6, 7, 8
+// behind the jump pass), and are evaluated where those fail too.
+TEST(SparsePixels, DepthJumpsAndHolesAreNotInterpolatedAcross) {
     const int w = 16, h = 8, stride = 4;
     Image img(w, h, [](int x, int) { return x >= 6 ? 5.0f : 0.0f; });
     // A hole at grid point (12, 4).
@@ -67,11 +70,24 @@ TEST(SparsePixels, DepthJumpsAndHolesAreEvaluated) {
     img.pixels.erase(img.pixels.begin() + hole);
     img.positions.erase(img.positions.begin() + hole * 4, img.positions.begin() + hole * 4 + 4);
     const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 1.0f);
-    // Cells at x0 = 4 span the jump (x = 6); cells at x0 = 8 have the hole as a
-    // corner; cells at x0 = 12 reach past the image. Only x0 = 0 is interpolated.
-    ASSERT_FALSE(plan.interpolate.empty());
-    for (const TsisInterpolatedPixel& p : plan.interpolate)
-        EXPECT_LT(img.pixels[size_t(p.point)] % w, 4) << "pixel " << img.pixels[size_t(p.point)];
+    ASSERT_EQ(plan.levelEnds.size(), 2u);
+    EXPECT_EQ(plan.levelEnds.back(), int(plan.interpolate.size()));
+    auto x = [&](int k) { return img.pixels[size_t(k)] % w; };
+    std::vector<bool> ready(img.pixels.size(), false);
+    for (int k : plan.evaluate) ready[size_t(k)] = true;
+    bool halfCells = false;
+    for (size_t i = 0; i < plan.interpolate.size(); ++i) {
+        const TsisInterpolatedPixel& p = plan.interpolate[i];
+        const bool coarse = int(i) < plan.levelEnds[0];
+        halfCells = halfCells || (!coarse && x(p.point) > 6 && x(p.point) < 8);
+        EXPECT_TRUE(!coarse || x(p.point) < 4) << "pixel " << img.pixels[size_t(p.point)];
+        for (int c : p.corners) {
+            EXPECT_TRUE(ready[size_t(c)]) << "corner " << c << " not yet made";
+            EXPECT_EQ(x(c) >= 6, x(p.point) >= 6) << "across the jump";
+        }
+        ready[size_t(p.point)] = true;
+    }
+    EXPECT_TRUE(halfCells);
     EXPECT_EQ(plan.evaluate.size() + plan.interpolate.size(), img.pixels.size());
 }
 
@@ -82,9 +98,15 @@ class SparseInterpolationTest : public test::ClTest {};
 
 TEST_F(SparseInterpolationTest, DeviceEqualsHost) {
     const int w = 37, h = 29, stride = 4;
-    const Image img(w, h, [](int x, int y) { return 0.01f * float(x * x) + 0.02f * float(y); });
+    // Curved, with a step at x = 18 the cells of 4 at x0 = 16 span.
+    const Image img(w, h, [](int x, int y) {
+        return 0.01f * float(x * x) + 0.02f * float(y) + (x >= 18 ? 5.0f : 0.0f);
+    });
     const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 3.0f);
     ASSERT_GT(plan.interpolate.size(), size_t(w * h) / 2);
+    // The cells of 2 beside the step read the level of 4's pixels.
+    ASSERT_EQ(plan.levelEnds.size(), 2u);
+    ASSERT_GT(plan.levelEnds[1], plan.levelEnds[0]);
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 10.0f);
     std::vector<float> host(size_t(w * h) * 4, -1.0f);
