@@ -13,6 +13,21 @@ namespace {
 
 constexpr float kFlatness = 0.1f;  // of maxCornerMm
 
+// Barycentric weights of (fx, fy) in the unit cell's triangle without corner
+// `missing` (0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1)); one is negative outside it.
+std::array<float, 4> triangleWeights(int missing, float fx, float fy) {
+    switch (missing) {
+        case 0:
+            return {0.0f, 1 - fy, 1 - fx, fx + fy - 1};
+        case 1:
+            return {1 - fy, 0.0f, fy - fx, fx};
+        case 2:
+            return {1 - fx, fx - fy, 0.0f, fy};
+        default:
+            return {1 - fx - fy, fx, fy, 0.0f};
+    }
+}
+
 }  // namespace
 
 SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<float>& positions,
@@ -57,17 +72,30 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
             if (state[k] != kPending) continue;
             const int x = pixels[k] % width, y = pixels[k] / width;
             const int x0 = x - x % s, y0 = y - y % s;
-            const std::array<int, 4> c = {pointAt(x0, y0), pointAt(x0 + s, y0), pointAt(x0, y0 + s),
-                                          pointAt(x0 + s, y0 + s)};
-            bool ok = true;
+            std::array<int, 4> c = {pointAt(x0, y0), pointAt(x0 + s, y0), pointAt(x0, y0 + s),
+                                    pointAt(x0 + s, y0 + s)};
             // A corner interpolated at a coarser level counts: its range of
-            // the list is interpolated before this one.
-            for (int corner : c)
-                ok = ok && corner >= 0 && state[size_t(corner)] != kPending &&
-                     glm::distance(at(corner), at(int(k))) <= maxCornerMm;
-            if (!ok) continue;
+            // the list is interpolated before this one. One corner off the
+            // surface (a silhouette through the cell): the triangle of the
+            // other three, where the pixel lies in it.
+            int missing = -1, usable = 0;
+            for (int j = 0; j < 4; ++j) {
+                const int corner = c[size_t(j)];
+                if (corner < 0)
+                    missing = j;
+                else if (state[size_t(corner)] != kPending &&
+                         glm::distance(at(corner), at(int(k))) <= maxCornerMm)
+                    ++usable;
+            }
             const float fx = float(x - x0) / float(s), fy = float(y - y0) / float(s);
-            const float w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+            std::array<float, 4> w = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+            if (usable == 3 && missing >= 0) {
+                w = triangleWeights(missing, fx, fy);
+                if (w[0] < 0 || w[1] < 0 || w[2] < 0 || w[3] < 0) continue;
+                c[size_t(missing)] = c[size_t(missing ^ 3)];  // read with weight 0
+            } else if (usable < 4) {
+                continue;
+            }
             // The corners' positions interpolated must land near the pixel's
             // own: the cell is close to flat, so B's interpolation follows the
             // surface.

@@ -80,7 +80,10 @@ TEST(SparsePixels, DepthJumpsAndHolesAreNotInterpolatedAcross) {
         const TsisInterpolatedPixel& p = plan.interpolate[i];
         const bool coarse = int(i) < plan.levelEnds[0];
         halfCells = halfCells || (!coarse && x(p.point) > 6 && x(p.point) < 8);
-        EXPECT_TRUE(!coarse || x(p.point) < 4) << "pixel " << img.pixels[size_t(p.point)];
+        // Not from a cell of 4 across the jump (those at x0 = 8 lack only the
+        // hole: the triangle of their other corners).
+        EXPECT_TRUE(!coarse || x(p.point) < 4 || x(p.point) >= 8)
+            << "pixel " << img.pixels[size_t(p.point)];
         for (int c : p.corners) {
             EXPECT_TRUE(ready[size_t(c)]) << "corner " << c << " not yet made";
             EXPECT_EQ(x(c) >= 6, x(p.point) >= 6) << "across the jump";
@@ -89,6 +92,40 @@ TEST(SparsePixels, DepthJumpsAndHolesAreNotInterpolatedAcross) {
     }
     EXPECT_TRUE(halfCells);
     EXPECT_EQ(plan.evaluate.size() + plan.interpolate.size(), img.pixels.size());
+}
+
+// A silhouette through a cell (its corner (8, 8) off the surface): the
+// pixels in the triangle of the other three corners are interpolated from
+// them (the missing one's weight 0), exactly for a linear field; the others
+// try the cells of 2.
+TEST(SparsePixels, ACellMissingACornerUsesTheTriangleOfTheOtherThree) {
+    const int w = 9, h = 9, stride = 4;
+    Image img(w, h, [](int, int) { return 0.0f; });
+    const int corner = 8 * w + 8;
+    img.pixels.erase(img.pixels.begin() + corner);
+    img.positions.erase(img.positions.begin() + corner * 4, img.positions.begin() + corner * 4 + 4);
+    const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 2.0f);
+    auto field = [&](int k) {
+        const int pixel = img.pixels[size_t(k)];
+        return 1.0f + 0.5f * float(pixel % w) + 0.25f * float(pixel / w);
+    };
+    std::vector<float> rgba(img.pixels.size() * 4, -1.0f);
+    for (int k : plan.evaluate)
+        for (int c = 0; c < 4; ++c) rgba[size_t(k) * 4 + c] = field(k);
+    interpolateSparsePixels(plan, rgba);
+    int triangles = 0;
+    for (size_t i = 0; i < plan.interpolate.size(); ++i) {
+        const TsisInterpolatedPixel& p = plan.interpolate[i];
+        const int x = img.pixels[size_t(p.point)] % w, y = img.pixels[size_t(p.point)] / w;
+        if (x > 4 && y > 4 && int(i) < plan.levelEnds[0]) {
+            ++triangles;
+            EXPECT_LE(x + y, 12) << "outside the triangle";
+            EXPECT_EQ(p.weights[3], 0.0f);
+        }
+    }
+    EXPECT_GT(triangles, 0);
+    for (size_t k = 0; k < img.pixels.size(); ++k)
+        EXPECT_NEAR(rgba[k * 4], field(int(k)), 1e-4f) << "pixel " << img.pixels[k];
 }
 
 // The device's interpolation gives the host reference's values bit for bit
