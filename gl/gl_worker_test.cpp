@@ -59,18 +59,28 @@ TEST(GlWorker, ATaskErrorReachesWaitAndTheWorkerGoesOn) {
     EXPECT_TRUE(ran);
 }
 
+// The default scene's mesh on the GL side, η = 1.3, no albedo atlas.
+class GlWorkerScene : public ::testing::Test {
+  protected:
+    static Mesh defaultMesh() {
+        Mesh mesh = builtinDefault();
+        normalizeMesh(mesh, 10.0);
+        ensureNormals(mesh);
+        return mesh;
+    }
+    void SetUp() override {
+        tables.updateMedia({{1.3f, 1.0f}});
+        tables.updateAlbedo({}, 0, 0);
+    }
+    GlContext gl;
+    GpuMesh gpu{defaultMesh()};
+    MaterialTables tables;
+};
+
 // Three lights' shadows, half drawn on the worker's thread: the flux atlas
 // they shade (the default scene's thin parts shadow its body) is the one of
 // views all drawn here, byte for byte.
-TEST(GlWorker, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
-    GlContext gl;
-    Mesh mesh = builtinDefault();
-    normalizeMesh(mesh, 10.0);
-    ensureNormals(mesh);
-    GpuMesh gpu(mesh);
-    MaterialTables tables;
-    tables.updateMedia({{1.3f, 1.0f}});
-    tables.updateAlbedo({}, 0, 0);
+TEST_F(GlWorkerScene, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
     GeometryAtlasPass geometry;
     geometry.run(gpu, 256);
     const std::vector<Light> lights = {
@@ -100,15 +110,7 @@ TEST(GlWorker, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
 // The composite's samples' G-buffer (depth cleared only) drawn on the
 // worker's thread: the same texels as one drawn here, the second time too
 // (its framebuffer then holds the first draw's attachments).
-TEST(GlWorker, GBufferDrawnOnItIsTheOneDrawnHere) {
-    GlContext gl;
-    Mesh mesh = builtinDefault();
-    normalizeMesh(mesh, 10.0);
-    ensureNormals(mesh);
-    GpuMesh gpu(mesh);
-    MaterialTables tables;
-    tables.updateMedia({{1.3f, 1.0f}});
-    tables.updateAlbedo({}, 0, 0);
+TEST_F(GlWorkerScene, GBufferDrawnOnItIsTheOneDrawnHere) {
     std::vector<LightView> views;
     LightViewPass lights;
     lights.run(gpu, views, tables);
