@@ -90,6 +90,7 @@ TEST_F(GlWorkerScene, LightViewsDrawnOnItShadeTheSameFluxAtlas) {
     // Depth-only views (no maps): those the worker takes.
     auto fluxAtlas = [&](GlWorker* worker) {
         std::vector<LightView> views;
+        views.reserve(lights.size());
         for (const Light& l : lights) views.push_back(makeLightView(l, 6.0f, 512, false));
         LightViewPass pass;
         pass.setWorker(worker, 0);  // whatever the mesh's size

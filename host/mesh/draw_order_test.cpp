@@ -53,6 +53,7 @@ TEST(DrawOrder, EveryTriangleOnceWithVerticesNumberedByFirstUse) {
 
     auto corners = [](const std::vector<glm::uvec3>& ts, auto vertex) {
         std::vector<std::array<uint32_t, 3>> out;
+        out.reserve(ts.size());
         for (const glm::uvec3& t : ts) out.push_back({vertex(t.x), vertex(t.y), vertex(t.z)});
         std::sort(out.begin(), out.end());
         return out;

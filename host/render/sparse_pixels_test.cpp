@@ -107,7 +107,8 @@ TEST(SparsePixels, ACellMissingACornerUsesTheTriangleOfTheOtherThree) {
     const SparsePixels plan = planSparsePixels(img.pixels, img.positions, w, h, stride, 2.0f);
     auto field = [&](int k) {
         const int pixel = img.pixels[size_t(k)];
-        return 1.0f + 0.5f * float(pixel % w) + 0.25f * float(pixel / w);
+        const int x = pixel % w, y = pixel / w;
+        return 1.0f + 0.5f * float(x) + 0.25f * float(y);
     };
     std::vector<float> rgba(img.pixels.size() * 4, -1.0f);
     for (int k : plan.evaluate)
