@@ -44,14 +44,18 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
     auto pointAt = [&](int x, int y) {
         return x < width && y < height ? packed[static_cast<size_t>(y) * width + x] : -1;
     };
+    // Whether point k is on the grid of every s-th pixel.
+    auto onGrid = [&](size_t k, int s) {
+        return pixels[k] % width % s == 0 && pixels[k] / width % s == 0;
+    };
     enum : char { kPending, kEvaluated, kInterpolated };
     std::vector<char> state(pixels.size(), kPending);
 
     SparsePixels plan;
     std::vector<int> grid, gridCells, rest, restPixels;
     for (size_t k = 0; k < pixels.size(); ++k) {
-        const int x = pixels[k] % width, y = pixels[k] / width;
-        if (x % stride == 0 && y % stride == 0) {
+        if (onGrid(k, stride)) {
+            const int x = pixels[k] % width, y = pixels[k] / width;
             state[k] = kEvaluated;
             grid.push_back(int(k));
             // The grid in its own coordinates, so its tiles are 4×2 grid points.
@@ -65,9 +69,7 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
     for (int s = stride; s >= 2; s /= 2) {
         if (s < stride)
             for (size_t k = 0; k < pixels.size(); ++k)
-                if (state[k] == kPending && pixels[k] % width % s == 0 &&
-                    pixels[k] / width % s == 0)
-                    state[k] = kEvaluated;
+                if (state[k] == kPending && onGrid(k, s)) state[k] = kEvaluated;
         for (size_t k = 0; k < pixels.size(); ++k) {
             if (state[k] != kPending) continue;
             const int x = pixels[k] % width, y = pixels[k] / width;
@@ -111,8 +113,7 @@ SparsePixels planSparsePixels(const std::vector<int>& pixels, const std::vector<
     // The rest, evaluated below the grid's level or in no cell at all, in
     // pixel order (tileOrder's input).
     for (size_t k = 0; k < pixels.size(); ++k) {
-        const int x = pixels[k] % width, y = pixels[k] / width;
-        if (state[k] == kInterpolated || (x % stride == 0 && y % stride == 0)) continue;
+        if (state[k] == kInterpolated || onGrid(k, stride)) continue;
         rest.push_back(int(k));
         restPixels.push_back(pixels[k]);
     }
@@ -140,7 +141,6 @@ void SparseInterpolation::upload(const SparsePixels& plan) {
     events_.clear();
     uploaded_ = true;
     const std::vector<TsisInterpolatedPixel>& p = plan.interpolate;
-    count_ = static_cast<int>(p.size());
     levelEnds_ = plan.levelEnds;
     if (p.empty()) return;
     const size_t bytes = p.size() * sizeof(TsisInterpolatedPixel);

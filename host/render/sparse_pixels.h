@@ -63,7 +63,6 @@ class SparseInterpolation {
     ClRuntime& cl_;
     cl::Kernel kernel_;
     GrowingBuffer pixels_;
-    int count_ = 0;
     std::vector<int> levelEnds_;  // the plan's (SparsePixels::levelEnds)
     std::vector<cl::Event> events_;
     bool uploaded_ = false;  // an upload since the last run
