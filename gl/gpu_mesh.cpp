@@ -128,15 +128,13 @@ GpuMesh::~GpuMesh() {
         if (a) glDeleteVertexArrays(1, &a);
 }
 
-void GpuMesh::draw() const {
-    glBindVertexArray(indexedVao_);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
-    glBindVertexArray(0);
-}
-
-void GpuMesh::drawWith(GLuint vertexArray) const {
-    glBindVertexArray(vertexArray);
-    indexedAttributes();
+void GpuMesh::draw(GLuint vertexArray) const {
+    if (vertexArray) {
+        glBindVertexArray(vertexArray);
+        indexedAttributes();
+    } else {
+        glBindVertexArray(indexedVao_);
+    }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }

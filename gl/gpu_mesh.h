@@ -28,11 +28,11 @@ class GpuMesh {
     GpuMesh(const GpuMesh&) = delete;
     GpuMesh& operator=(const GpuMesh&) = delete;
 
-    void draw() const;  // indexed: positions, normals, uvs
-    // As draw(), through `vertexArray`: one of the current context, which
-    // need not be the one that made this mesh (vertex arrays are not shared
-    // between contexts: gl/gl_worker.h); sets its attributes.
-    void drawWith(GLuint vertexArray) const;
+    // Indexed: positions, normals, uvs. `vertexArray`: 0 for the mesh's own;
+    // else one of the current context, which need not be the one that made
+    // this mesh (vertex arrays are not shared between contexts:
+    // gl/gl_worker.h), its attributes set here.
+    void draw(GLuint vertexArray = 0) const;
     void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
     // The triangles a pass sets up: all, or with back faces culled about half.

@@ -48,6 +48,20 @@ void drawFullScreenWhere(GLenum depthFunc) {
     glDisable(GL_DEPTH_TEST);
 }
 
+// `mesh` with the depth test, back faces culled when `cull`, through
+// `vertexArray` (GpuMesh::draw); both tests off after.
+void drawDepthTested(const GpuMesh& mesh, bool cull, GLuint vertexArray = 0) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    if (cull)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
+    mesh.draw(vertexArray);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+}
+
 // Copies `from`'s depth into `to`'s (same size).
 void copyDepth(const RenderTarget& from, const RenderTarget& to) {
     glCopyImageSubData(from.depth(), GL_TEXTURE_2D, 0, 0, 0, 0, to.depth(), GL_TEXTURE_2D, 0, 0, 0,
@@ -78,17 +92,9 @@ void LightViewPass::drawDepth(const GpuMesh& mesh, const LightView& view, int la
     bindAndClearLightView(framebuffer, view, shadows_, layer);
     program.use();
     program.set("u_viewProj", view.viewProj);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     // A closed, outward mesh: its back faces are never the nearest (a third
     // less of llvmpipe's per-triangle work).
-    if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
-    if (vertexArray)
-        mesh.drawWith(vertexArray);
-    else
-        mesh.draw();
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DEPTH_TEST);
+    drawDepthTested(mesh, mesh.closedOutward(), vertexArray);
 }
 
 size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
@@ -137,12 +143,7 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
             program_.set("u_tanHalf", lights[i].tanHalf);
             program_.set("u_texelAreaMm", lights[i].texelAreaMm);
             program_.set("u_resolution", glm::vec2(lights[i].resolution));
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            if (mesh.closedOutward()) glEnable(GL_CULL_FACE);
-            mesh.draw();
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_DEPTH_TEST);
+            drawDepthTested(mesh, mesh.closedOutward());
         }
     } catch (...) {
         if (!theirs.empty()) worker->wait();  // it reads `lights`
@@ -234,18 +235,7 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
         bindTexture(program, "u_envIrradiance", 0, d.envIrradiance);
         program.set("u_hasEnv", d.envIrradiance != 0 ? 1 : 0);
     }
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    if (d.cull)
-        glEnable(GL_CULL_FACE);
-    else
-        glDisable(GL_CULL_FACE);
-    if (vertexArray)
-        d.mesh->drawWith(vertexArray);
-    else
-        d.mesh->draw();
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DEPTH_TEST);
+    drawDepthTested(*d.mesh, d.cull, vertexArray);
     checkGl("GBufferPass");
 }
 
