@@ -63,6 +63,13 @@ uint64_t RasterPasses::samplesKey(const FrameContext& ctx) const {
     return key.digest();
 }
 
+void RasterPasses::startSamples(const FrameContext& ctx, const GpuMesh& mesh,
+                                const GlLights& lights) {
+    const int aa = ctx.options->aa;
+    sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
+                             ctx.width * aa, ctx.height * aa, false, 0, cullsBackFaces(ctx, mesh));
+}
+
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
     if (gpuMesh_ && hash == meshHash_) return;
     gpuMesh_ = std::make_unique<GpuMesh>(mesh);
@@ -233,10 +240,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             const uint64_t samples = samplesKey(ctx);
             if (sampleGbufferPass_.onWorker(mesh, cullsBackFaces(ctx, mesh)) &&
                 ctx.options->aa > 1 && graph.isRead(h.samples) && samples != samplesKey_) {
-                sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_,
-                                         ctx.viewProj, ctx.width * ctx.options->aa,
-                                         ctx.height * ctx.options->aa, false, 0,
-                                         cullsBackFaces(ctx, mesh));
+                startSamples(ctx, mesh, lights);
                 samplesStarted_ = samples;
             }
             if (key.digest() != gbufferKey_) {
@@ -270,18 +274,14 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 return;
             }
             const uint64_t key = samplesKey(ctx);
-            if (samplesStarted_ == key) {
-                res.stats().set("samples_on_worker", 1.0);
+            if (key != samplesKey_) {
+                // Started by gl_gbuffer on the worker's thread, or drawn now.
+                const bool started = samplesStarted_ == key;
+                res.stats().set("samples_on_worker", started ? 1.0 : 0.0);
+                if (!started) startSamples(ctx, *res.read(h.mesh), res.read(h.lights));
                 sampleGbufferPass_.finish();
-                samplesStarted_ = 0;
-                samplesKey_ = key;
-                ++samplesVersion_;
-            } else if (key != samplesKey_) {
-                const GlLights& lights = res.read(h.lights);
-                sampleGbufferPass_.run(*res.read(h.mesh), *lights.views, *lights.shadows,
-                                       materials_, ctx.viewProj, ctx.width * aa, ctx.height * aa,
-                                       false, 0, cullsBackFaces(ctx, *res.read(h.mesh)));
                 glFinish();
+                samplesStarted_ = 0;
                 samplesKey_ = key;
                 ++samplesVersion_;
             }

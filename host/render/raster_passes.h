@@ -84,6 +84,9 @@ class RasterPasses {
   private:
     void uploadMesh(const Mesh& mesh, uint64_t hash);
     uint64_t samplesKey(const FrameContext& ctx) const;
+    // The composite's samples' G-buffer (GBufferPass::start: on the worker's
+    // thread where it pays, else drawn at once).
+    void startSamples(const FrameContext& ctx, const GpuMesh& mesh, const GlLights& lights);
     // What the shadow maps are drawn from: the coarser copy (mesh/lod.h) of a
     // mesh over 2 × `budget` triangles, made once per mesh and budget; null
     // for the mesh itself.
