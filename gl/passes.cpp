@@ -262,8 +262,6 @@ CompositePass::CompositePass()
 
 CompositePass::~CompositePass() {
     if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
-    if (edgeVbo_) glDeleteBuffers(1, &edgeVbo_);
-    if (edgeVao_) glDeleteVertexArrays(1, &edgeVao_);
 }
 
 // The centre pass' marks read back and listed: the covered pixels it marked
@@ -288,34 +286,21 @@ void CompositePass::updateEdgePoints(uint64_t key) {
             if (rowNear[size_t(v) * size_t(w) + size_t(x)]) return true;
         return false;
     };
-    std::vector<float> points;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if (at(x, y, 1) ? at(x, y, 0) : besideCovered(x, y))
-                points.insert(points.end(), {float(x), float(y)});
-    if (!edgeVao_) {
-        glGenVertexArrays(1, &edgeVao_);
-        glGenBuffers(1, &edgeVbo_);
-        glBindVertexArray(edgeVao_);
-        glBindBuffer(GL_ARRAY_BUFFER, edgeVbo_);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, edgeVbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(points.size() * sizeof(float)),
-                 points.data(), GL_DYNAMIC_DRAW);
-    edgeCount_ = static_cast<GLsizei>(points.size() / 2);
-    edgesKey_ = key;
-    // The same list as a texture, edge e at (e mod kEdgeColumns, e div
+    // The list as a texture of slots, pixel e's at (e mod kEdgeColumns, e div
     // kEdgeColumns), rows in steps of 8 (fewer re-made targets); the slots
     // past the list repeat its last pixel (shaded, never read).
+    std::vector<glm::vec2> points;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (at(x, y, 1) ? at(x, y, 0) : besideCovered(x, y)) points.emplace_back(x, y);
+    edgeCount_ = static_cast<GLsizei>(points.size());
+    edgesKey_ = key;
     const int rows = std::max(1, (edgeCount_ + kEdgeColumns * 8 - 1) / (kEdgeColumns * 8)) * 8;
     std::vector<float> slots(size_t(kEdgeColumns) * size_t(rows) * 4, 0.0f);
-    for (size_t e = 0; e < slots.size() / 4; ++e) {
-        const size_t from = std::min(e, std::max<size_t>(points.size() / 2, 1) - 1) * 2;
-        if (from + 1 >= points.size()) break;
-        slots[e * 4] = points[from];
-        slots[e * 4 + 1] = points[from + 1];
+    for (size_t e = 0; !points.empty() && e < slots.size() / 4; ++e) {
+        const glm::vec2 p = points[std::min(e, points.size() - 1)];
+        slots[e * 4] = p.x;
+        slots[e * 4 + 1] = p.y;
     }
     if (!edgePixels_ || edgePixels_->height() != rows)
         edgePixels_ = std::make_unique<FloatTexture>(kEdgeColumns, rows);
@@ -340,7 +325,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     // lights: marked, read back and listed only when it changed.
     const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
     coverageKey_ = edgesKey;
-    const bool findEdges = aa > 1 && (!edgeVao_ || edgesKey != edgesKey_);
+    const bool findEdges = aa > 1 && (!edgePixels_ || edgesKey != edgesKey_);
     // Only the covered pixels shaded (the G-buffer's depth, < 1 there), and
     // only they read: the radiance is not cleared, the marks only when read.
     ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, true);
@@ -424,14 +409,12 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
     if (aa_ > 1 && edgeCount_ > 0) {
         edges.use();
         edges.set("u_aa", aa_);
-        edges.set("u_pointSize", 1.0f);
         edges.set("u_frameSize", glm::vec2(w, h));
         bindTexture(edges, "u_centre", 0, centreTarget_->color(0));
         bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
-        edges.set("u_edgeColumns", kEdgeColumns);
-        glBindVertexArray(edgeVao_);
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
         glBindVertexArray(emptyVao_);
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
     }
     logLuminance_ = target.get();
 }

@@ -215,11 +215,11 @@ class CompositePass {
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     int aa_ = 1;
     GLuint emptyVao_ = 0, depthSampler_ = 0;
-    // The supersampled pixels as points (x, y), listed again only when the
-    // G-buffer changed: the marks follow the camera, not the lights.
-    GLuint edgeVao_ = 0, edgeVbo_ = 0;
+    // The supersampled pixels, (x, y) in a texture of slots (the samples'
+    // packed layout; the resolve's points read it by gl_VertexID), listed
+    // again only when the G-buffer changed: the marks follow the camera, not
+    // the lights.
     GLsizei edgeCount_ = 0;
-    // Their (x, y) as a texture of slots, for the samples' packed layout.
     std::unique_ptr<FloatTexture> edgePixels_;
     uint64_t edgesKey_ = 0;
     // The G-buffer's coverage and supersampled pixels this frame (edgesKey_'s

@@ -1,17 +1,16 @@
-// One point per supersampled frame pixel (CompositePass keeps their list,
-// made from the centre pass' marks when the G-buffer changes), u_pointSize
-// wide: on the composite's sample grid (u_aa) it covers the pixel's u_aa ×
-// u_aa samples, so only they are shaded; on the frame's (1), the pixel, for
-// resolve.frag's average of them (a fullscreen pass that discards the
-// others costs llvmpipe nearly as much as shading every sample, and a point
-// for every pixel costs its vertex pipeline 262K vertices at 512²).
-layout(location = 0) in vec2 a_pixel;
+// One point per supersampled frame pixel, the pixel read from its slot in
+// u_edgePixels (CompositePass keeps the list, made from the centre pass'
+// marks when the G-buffer changes), for resolve.frag's average of its
+// samples (a fullscreen pass that discards the others costs llvmpipe nearly
+// as much as shading every sample, and a point for every pixel costs its
+// vertex pipeline 262K vertices at 512²).
+uniform sampler2D u_edgePixels;  // pixel e's (x, y) at texel (e mod width, e div width)
 uniform vec2 u_frameSize;
-uniform float u_pointSize;
-flat out int v_edge;  // the point's place in the list (its samples' slot)
+flat out ivec2 v_slot;  // the point's slot: its samples' block (radiance.frag)
 
 void main() {
-    v_edge = gl_VertexID;
-    gl_PointSize = u_pointSize;
-    gl_Position = vec4((a_pixel + 0.5) / u_frameSize * 2.0 - 1.0, 0.0, 1.0);
+    int columns = textureSize(u_edgePixels, 0).x;
+    v_slot = ivec2(gl_VertexID % columns, gl_VertexID / columns);
+    vec2 pixel = texelFetch(u_edgePixels, v_slot, 0).xy;
+    gl_Position = vec4((pixel + 0.5) / u_frameSize * 2.0 - 1.0, 0.0, 1.0);
 }

@@ -18,13 +18,12 @@
 // over them — llvmpipe runs both sides of a branch, so one pass with all
 // three would average samples and tone-map at every pixel.
 uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
-// The supersampled pixels' samples, packed (radiance.frag): pixel v_edge's
-// u_aa × u_aa block at slot (v_edge mod u_edgeColumns, v_edge div u_edgeColumns).
+// The supersampled pixels' samples, packed (radiance.frag): a pixel's u_aa ×
+// u_aa block at its slot v_slot (edge_points.vert).
 uniform sampler2D u_samples;
 uniform int u_aa;
 #ifdef TSIS_RESOLVE_EDGES
-uniform int u_edgeColumns;
-flat in int v_edge;
+flat in ivec2 v_slot;
 #endif
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_logLuminance;
@@ -68,13 +67,11 @@ void main() {
 #endif
 #else
     {
-        // The pixel's samples: its slot's block (radiance.frag's packed layout).
-        ivec2 slot = ivec2(v_edge % u_edgeColumns, v_edge / u_edgeColumns);
         vec3 sum = vec3(0.0);
         float covered = 0.0;
         for (int j = 0; j < u_aa; ++j)
             for (int i = 0; i < u_aa; ++i) {
-                vec4 l = texelFetch(u_samples, slot * u_aa + ivec2(i, j), 0);
+                vec4 l = texelFetch(u_samples, v_slot * u_aa + ivec2(i, j), 0);
                 sum += l.rgb * l.a;
                 covered += l.a;
 #ifdef TSIS_TONE_MAP
