@@ -31,8 +31,9 @@ GlWorker::~GlWorker() {
 void GlWorker::start(std::function<void()> task) {
     std::unique_lock lock(mutex_);
     // One task at a time: one started and never waited for (its caller
-    // threw) runs out first; its error, if any, is wait()'s.
+    // threw) runs out first; its error, if any, goes with that frame.
     changed_.wait(lock, [this] { return !busy_; });
+    error_ = nullptr;
     task_ = std::move(task);
     busy_ = true;
     changed_.notify_all();
@@ -51,7 +52,7 @@ void GlWorker::loop(std::unique_ptr<GlContext> context) {
     } catch (...) {
         std::lock_guard lock(mutex_);
         error_ = std::current_exception();
-        quit_ = ready_ = true;
+        quit_ = true;
     }
     {
         std::lock_guard lock(mutex_);
