@@ -6,13 +6,14 @@
 #include "gl/gpu_mesh.h"
 #include "gl/passes.h"
 #include "mesh/builtin.h"
+#include "mesh/uv_texels.h"
 #include "support/flux_reference.h"
 
 namespace tsis {
 namespace {
 
-double atlasFlux(const RenderTarget& t, int channel) {
-    std::vector<float> flux = t.readRGBA(0);
+double channelSum(const RenderTarget& t, int channel, int attachment = 0) {
+    std::vector<float> flux = t.readRGBA(attachment);
     double sum = 0;
     for (size_t i = channel; i < flux.size(); i += 4) sum += flux[i];
     return sum;
@@ -36,7 +37,7 @@ class AtlasPassTest : public ::testing::Test {
         FluxAtlasPass atlas;
         atlas.run(geometry.target(), views, lightPass.shadows(), materials());
         double expected = test::hostFlux(mesh, light, 1.3, 1);
-        double got = atlasFlux(atlas.target(), 1);
+        double got = channelSum(atlas.target(), 1);
         return std::abs(got - expected) / expected;
     }
     // η = 1.3 everywhere, no albedo atlas.
@@ -64,6 +65,20 @@ TEST_F(AtlasPassTest, PointFluxEqualsIntegralOfIrradiance) {
     EXPECT_LT(err, 0.01);
 }
 
+// The texels' areas (normal.w) sum to the surface area once each chart's
+// ratio is set for the resolution: GL covers the texel centres that
+// rasterUVTriangles counts.
+TEST_F(AtlasPassTest, TexelAreasSumToTheSurfaceAreaAtAnyResolution) {
+    GpuMesh gpu(mesh);
+    GeometryAtlasPass geometry;
+    for (int res : {32, 128, 1024}) {
+        gpu.setAreaRatios(texelAreaRatios(mesh, res));
+        geometry.run(gpu, res);
+        const double area = channelSum(geometry.target(), 3, 1);
+        EXPECT_NEAR(area / mesh.surfaceArea(), 1.0, 1e-4) << res;
+    }
+}
+
 TEST_F(AtlasPassTest, LightViewMapHoldsTheSameFlux) {
     // The light-view flux map stores flux per texel too: it must sum to the same
     // total (up to its coarser sampling of the silhouette).
@@ -73,7 +88,7 @@ TEST_F(AtlasPassTest, LightViewMapHoldsTheSameFlux) {
     views.push_back(makeLightView(dir, 5.0f, 1024));
     LightViewPass pass;
     pass.run(gpu, views, materials());
-    double got = atlasFlux(*views[0].target, 0);
+    double got = channelSum(*views[0].target, 0);
     double expected = test::hostFlux(mesh, dir, 1.3, 0);
     EXPECT_NEAR(got / expected, 1.0, 0.01);
 }

@@ -30,22 +30,18 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     // write positions: the kernels sum light only within a medium.
     const Media media = findMedia(mesh);
     media_ = media.count;
-    constexpr int kStride = 10;
+    constexpr int kStride = 9;
     std::vector<float> data;
     data.reserve(mesh.triangles.size() * 3 * kStride);
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        double uvArea = mesh.triangleUVArea(t);
-        // A triangle without UV area holds no texel; its ratio is never read.
-        float ratio = uvArea > 0 ? static_cast<float>(mesh.triangleArea(t) / uvArea) : 0.0f;
+    for (const glm::uvec3& tri : mesh.triangles)
         for (int k = 0; k < 3; ++k) {
-            unsigned v = mesh.triangles[t][k];
+            unsigned v = tri[k];
             const glm::vec3& p = mesh.positions[v];
             const glm::vec3& n = mesh.normals[v];
             const glm::vec2& uv = mesh.uvs[v];
-            data.insert(data.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, ratio,
-                                     mediumTag(media.ofVertex[v])});
+            data.insert(data.end(),
+                        {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, mediumTag(media.ofVertex[v])});
         }
-    }
     count_ = mesh.triangles.size() * 3;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -57,8 +53,17 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     floatAttribute(0, 3, stride, 0);  // position
     floatAttribute(1, 3, stride, 3);  // normal
     floatAttribute(2, 2, stride, 6);  // uv
-    floatAttribute(3, 1, stride, 8);  // area ratio
-    floatAttribute(4, 1, stride, 9);  // medium tag
+    floatAttribute(4, 1, stride, 8);  // medium tag
+    glGenBuffers(1, &ratioVbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, ratioVbo_);
+    floatAttribute(3, 1, sizeof(float), 0);  // area ratio
+    std::vector<float> ratios(mesh.triangles.size());
+    for (size_t t = 0; t < ratios.size(); ++t) {
+        const double uvArea = mesh.triangleUVArea(t);
+        // A triangle without UV area holds no texel; its ratio is never read.
+        ratios[t] = uvArea > 0 ? static_cast<float>(mesh.triangleArea(t) / uvArea) : 0.0f;
+    }
+    setAreaRatios(ratios);
     glBindVertexArray(0);
 
     constexpr int kIndexedStride = 9;
@@ -122,7 +127,7 @@ void GpuMesh::indexedAttributes() const {
 }
 
 GpuMesh::~GpuMesh() {
-    for (GLuint b : {vbo_, indexedVbo_, ebo_})
+    for (GLuint b : {vbo_, ratioVbo_, indexedVbo_, ebo_})
         if (b) glDeleteBuffers(1, &b);
     for (GLuint a : {vao_, indexedVao_})
         if (a) glDeleteVertexArrays(1, &a);
@@ -137,6 +142,18 @@ void GpuMesh::draw(GLuint vertexArray) const {
     }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
+}
+
+void GpuMesh::setAreaRatios(const std::vector<float>& perTriangle) {
+    TSIS_CHECK_EQ(perTriangle.size() * 3, count_);
+    std::vector<float> corners;
+    corners.reserve(count_);
+    for (float r : perTriangle) corners.insert(corners.end(), {r, r, r});
+    glBindBuffer(GL_ARRAY_BUFFER, ratioVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)),
+                 corners.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    checkGl("GpuMesh area ratios");
 }
 
 void GpuMesh::drawUnrolled() const {

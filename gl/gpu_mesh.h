@@ -3,7 +3,8 @@
 // shades each vertex once instead of once per triangle corner (both listed in
 // mesh/draw_order.h's order, which it sets up fastest); and unindexed
 // (three vertices per triangle) for the atlas pass, so that a per-triangle
-// value, the area ratio A3D/AUV of eq. 3.2, can ride along.
+// value, the area ratio A3D/AUV of eq. 3.2, can ride along (in a buffer of
+// its own: the atlas' resolution corrects it, mesh/uv_texels.h).
 #pragma once
 
 #include <cstdint>
@@ -33,7 +34,10 @@ class GpuMesh {
     // this mesh (vertex arrays are not shared between contexts:
     // gl/gl_worker.h), its attributes set here.
     void draw(GLuint vertexArray = 0) const;
-    void drawUnrolled() const;                 // unindexed, with uv and area ratio (the atlas pass)
+    void drawUnrolled() const;  // unindexed, with uv and area ratio (the atlas pass)
+    // The area ratio of each triangle for drawUnrolled (A3D/AUV until set:
+    // texelAreaRatios gives the one for an atlas resolution).
+    void setAreaRatios(const std::vector<float>& perTriangle);
     uint32_t media() const { return media_; }  // separate solids (mesh/media.h)
     // The triangles a pass sets up: all, or with back faces culled about half.
     size_t trianglesSetUp(bool culled) const { return count_ / 3 / (culled ? 2 : 1); }
@@ -41,7 +45,7 @@ class GpuMesh {
     bool closedOutward() const { return closedOutward_; }
 
   private:
-    GLuint vao_ = 0, vbo_ = 0;                          // unindexed
+    GLuint vao_ = 0, vbo_ = 0, ratioVbo_ = 0;           // unindexed
     GLuint indexedVao_ = 0, indexedVbo_ = 0, ebo_ = 0;  // indexed
     size_t count_ = 0;
     int indexedStride_ = 0;  // floats a vertex of the indexed buffer

@@ -20,6 +20,7 @@
 #include "atlas/chart.h"
 #include "atlas/pack.h"
 #include "mesh/mesh_io.h"
+#include "mesh/uv_texels.h"
 #include "support/atlas_meshes.h"
 #include "support/scoped_env.h"
 #include "util/error.h"
@@ -66,7 +67,7 @@ double pointSegment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 // Smallest distance in texels between UV border edges of different charts
 // (charts: triangles connected through shared vertices).
 double minChartGap(const Mesh& m, int resolution) {
-    UnionFind charts = atlas::uvCharts(m);
+    UnionFind charts = uvCharts(m);
     std::map<std::pair<uint32_t, uint32_t>, int> count;
     for (const auto& t : m.triangles)
         for (int e = 0; e < 3; ++e)

@@ -21,10 +21,6 @@ namespace tsis::atlas {
 
 using Tri = std::array<int, 3>;
 
-// The mesh's UV charts: its vertices joined when a triangle shares them (a
-// chart's id is its root, the smallest vertex index in it).
-UnionFind uvCharts(const Mesh& mesh);
-
 // Face adjacency of a triangle soup. Edge e of face f runs from corner e to
 // corner (e+1)%3. Two faces are neighbours across an edge only when exactly two
 // usable faces use it, in opposite directions (a consistently oriented manifold
@@ -164,11 +160,5 @@ struct Segment {
     uint32_t ia, ib;  // endpoint ids
 };
 std::vector<size_t> intersectingSegments(const std::vector<Segment>& segs);
-
-// Calls fn(triangle, x, y) for every texel centre ((x+½)/res, (y+½)/res) inside
-// a triangle's UV image; a centre on an edge shared by two triangles goes to
-// one of them (a top-left-style rule). y counts up from v = 0.
-void rasterTriangles(const Mesh& mesh, int resolution,
-                     const std::function<void(size_t tri, int x, int y)>& fn);
 
 }  // namespace tsis::atlas

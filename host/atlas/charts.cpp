@@ -841,13 +841,4 @@ void splitElongatedCharts(std::vector<Chart>& charts, double maxAspect) {
     charts = std::move(done);
 }
 
-UnionFind uvCharts(const Mesh& mesh) {
-    UnionFind sets(mesh.positions.size());
-    for (const glm::uvec3& t : mesh.triangles) {
-        sets.unite(t.x, t.y);
-        sets.unite(t.x, t.z);
-    }
-    return sets;
-}
-
 }  // namespace tsis::atlas

@@ -6,46 +6,10 @@
 
 #include "atlas/atlas.h"
 #include "atlas/chart.h"
+#include "mesh/uv_texels.h"
 #include "util/error.h"
 
 namespace tsis {
-
-namespace atlas {
-
-void rasterTriangles(const Mesh& mesh, int resolution,
-                     const std::function<void(size_t, int, int)>& fn) {
-    const double res = resolution;
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const glm::uvec3 tri = mesh.triangles[t];
-        glm::dvec2 v[3] = {glm::dvec2(mesh.uvs[tri.x]) * res, glm::dvec2(mesh.uvs[tri.y]) * res,
-                           glm::dvec2(mesh.uvs[tri.z]) * res};
-        double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-        if (!(area != 0) || !std::isfinite(area)) continue;
-        if (area < 0) std::swap(v[1], v[2]);  // counter-clockwise
-        const double xmin = std::min({v[0].x, v[1].x, v[2].x}),
-                     xmax = std::max({v[0].x, v[1].x, v[2].x});
-        const double ymin = std::min({v[0].y, v[1].y, v[2].y}),
-                     ymax = std::max({v[0].y, v[1].y, v[2].y});
-        const int x0 = std::max(0, int(std::ceil(xmin - 0.5))),
-                  x1 = std::min(resolution - 1, int(std::floor(xmax - 0.5)));
-        const int y0 = std::max(0, int(std::ceil(ymin - 0.5))),
-                  y1 = std::min(resolution - 1, int(std::floor(ymax - 0.5)));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const glm::dvec2 p(x + 0.5, y + 0.5);
-                bool inside = true;
-                for (int k = 0; k < 3 && inside; ++k) {
-                    const glm::dvec2 a = v[k], b = v[(k + 1) % 3];
-                    const double e = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-                    // On the edge: the edge owns the point for one of its two directions.
-                    inside = e > 0 || (e == 0 && (b.y > a.y || (b.y == a.y && b.x < a.x)));
-                }
-                if (inside) fn(t, x, y);
-            }
-    }
-}
-
-}  // namespace atlas
 
 AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
     TSIS_CHECK_GT(resolution, 0);
@@ -67,7 +31,7 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
 
     // UV charts: triangles connected through shared vertices; a chart's
     // orientation is the sign of its total signed UV area.
-    UnionFind charts = atlas::uvCharts(mesh);
+    UnionFind charts = uvCharts(mesh);
     std::vector<double> chartSign(mesh.positions.size(), 0);
     std::vector<char> isRoot(mesh.positions.size(), 0);
     for (size_t t = 0; t < n; ++t) {
@@ -122,7 +86,7 @@ AtlasStats measureAtlas(const Mesh& mesh, int resolution) {
     std::vector<char> overlapped(n, 0);
     std::vector<int32_t> owner(size_t(resolution) * size_t(resolution), -1);
     size_t covered = 0;
-    atlas::rasterTriangles(mesh, resolution, [&](size_t t, int x, int y) {
+    rasterUVTriangles(mesh, resolution, [&](size_t t, int x, int y) {
         int32_t& o = owner[size_t(y) * resolution + x];
         if (o < 0) {
             o = int32_t(t);

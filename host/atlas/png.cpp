@@ -7,6 +7,7 @@
 #include "atlas/atlas.h"
 #include "atlas/chart.h"
 #include "image/image_io.h"
+#include "mesh/uv_texels.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -41,7 +42,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
     const size_t n = mesh.triangles.size();
 
     // Chart id per triangle (connected through shared vertices) and r.
-    UnionFind charts = atlas::uvCharts(mesh);
+    UnionFind charts = uvCharts(mesh);
     std::vector<double> ratio(n, 0);
     double s3 = 0, suv = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -64,7 +65,7 @@ void writeAtlasPng(const std::string& path, const Mesh& mesh, int resolution) {
         uint8_t* p = &pixels[(size_t(H - 1 - y) * W + x) * 3];
         for (int i = 0; i < 3; ++i) p[i] = uint8_t(std::lround(std::clamp(c[i], 0.0f, 1.0f) * 255));
     };
-    atlas::rasterTriangles(mesh, resolution, [&](size_t t, int x, int y) {
+    rasterUVTriangles(mesh, resolution, [&](size_t t, int x, int y) {
         const uint32_t chart = charts.find(mesh.triangles[t].x);
         const float h = float((chart * 2654435761u) % 1000u) / 1000.0f;
         put(x, y, hsv(h, 0.55f, 0.95f));

@@ -5,6 +5,7 @@
 
 #include "image/image_io.h"
 #include "mesh/lod.h"
+#include "mesh/uv_texels.h"
 #include "physics/ggx.h"
 #include "render/env_reflection.h"
 #include "render/frame_keys.h"
@@ -176,7 +177,9 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         },
         [this, &ctx, h](FrameGraph::Resources& res) {
             if (geometryKey_ != std::make_pair(meshHash_, ctx.atlasResolution)) {
-                geometryAtlasPass_.run(*res.read(h.mesh), ctx.atlasResolution);
+                // Each chart's texels sum to its area at this resolution.
+                gpuMesh_->setAreaRatios(texelAreaRatios(ctx.scene->mesh, ctx.atlasResolution));
+                geometryAtlasPass_.run(*gpuMesh_, ctx.atlasResolution);
                 glFinish();
                 geometryKey_ = {meshHash_, ctx.atlasResolution};
                 ++geometryVersion_;
