@@ -195,22 +195,24 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
 
 void GBufferPass::start(const GpuMesh& mesh, const std::vector<LightView>& lights,
                         const ShadowMapArray& shadows, const MaterialTables& media,
-                        const glm::mat4& viewProj, int width, int height, bool irradiance,
+                        const glm::mat4& viewProj, int width, int height, unsigned outputs,
                         GLuint envIrradiance, bool cull) {
+    TSIS_CHECK_LT(outputs, 4u);
     finish();
-    current_ = irradiance ? 1 : 0;
+    current_ = static_cast<int>(outputs);
     // The target's textures are made here, in the caller's context.
-    std::vector<GLenum> formats(irradiance ? 3 : 2, GL_RGBA32F);
+    std::vector<GLenum> formats(2, GL_RGBA32F);
+    if (outputs & kIrradiance) formats.push_back(GL_RGBA32F);
+    if (outputs & kUv) formats.push_back(GL_RG32F);
     ensureTarget(targets_[current_], width, height, formats, true);
-    const Draw d{&mesh, &lights, &shadows, &media, viewProj, irradiance, envIrradiance, cull};
+    const Draw d{&mesh, &lights, &shadows, &media, viewProj, outputs, envIrradiance, cull};
     GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(cull));
     if (!worker) {
-        draw(d, programs_.get(irradiance ? 1u : 0u), 0, 0);
+        draw(d, programs_.get(outputs), 0, 0);
         return;
     }
-    worker->start([this, d] {
-        draw(d, side_.program(d.irradiance ? 1u : 0u), side_.framebuffer(), side_.vertexArray());
-    });
+    worker->start(
+        [this, d] { draw(d, side_.program(d.outputs), side_.framebuffer(), side_.vertexArray()); });
     started_ = true;
 }
 
@@ -231,7 +233,7 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
     bindLights(program, *d.lights, kShadowUnit, *d.shadows);
     d.media->bind(program, kMediaUnit);
     program.set("u_viewProj", d.viewProj);
-    if (d.irradiance) {
+    if (d.outputs & kIrradiance) {
         bindTexture(program, "u_envIrradiance", 0, d.envIrradiance);
         program.set("u_hasEnv", d.envIrradiance != 0 ? 1 : 0);
     }

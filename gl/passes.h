@@ -86,10 +86,11 @@ class FluxAtlasPass {
     GLuint emptyVao_ = 0;
 };
 
-// Pass C: camera G-buffer: position (w = coverage), normal and, with
-// `irradiance` (for the camera-view methods), E at each pixel's surface point
-// (attachments 0, 1, 2), to which `envIrradiance` (0: none; FluxAtlasPass's)
-// adds the environment's residual at each pixel's atlas texel. Each variant
+// Pass C: camera G-buffer: position (w = coverage), normal and, by
+// `outputs`: kIrradiance (for the camera-view methods), E at each pixel's
+// surface point (attachment 2), to which `envIrradiance` (0: none;
+// FluxAtlasPass's) adds the environment's residual at each pixel's atlas
+// texel; kUv, the atlas coordinates (RG, the attachment after). Each variant
 // is compiled on first use. `cull`: back faces culled (the caller knows the
 // mesh is closed and outward and the eye outside it).
 class GBufferPass {
@@ -97,6 +98,7 @@ class GBufferPass {
     // clearColor false: only depth is cleared, and a reader takes coverage
     // from it (< 1): an uncovered pixel's colour is an earlier frame's.
     explicit GBufferPass(bool clearColor = true) : clearColor_(clearColor) {}
+    static constexpr unsigned kIrradiance = 1, kUv = 2;  // outputs
     // start() draws on `worker`'s thread for a mesh of `minTriangles` set
     // up or more (kWorkerMinTriangles: where it pays), else (or null) here
     // at once; finish() waits for it. The worker outlives this pass.
@@ -108,15 +110,14 @@ class GBufferPass {
     }
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
-             int width, int height, bool irradiance, GLuint envIrradiance = 0, bool cull = false) {
-        start(mesh, lights, shadows, media, viewProj, width, height, irradiance, envIrradiance,
-              cull);
+             int width, int height, unsigned outputs, GLuint envIrradiance = 0, bool cull = false) {
+        start(mesh, lights, shadows, media, viewProj, width, height, outputs, envIrradiance, cull);
         finish();
     }
     // The arguments stay alive until finish().
     void start(const GpuMesh& mesh, const std::vector<LightView>& lights,
                const ShadowMapArray& shadows, const MaterialTables& media,
-               const glm::mat4& viewProj, int width, int height, bool irradiance,
+               const glm::mat4& viewProj, int width, int height, unsigned outputs,
                GLuint envIrradiance = 0, bool cull = false);
     void finish();
     const RenderTarget& target() const { return *targets_[current_]; }
@@ -128,19 +129,22 @@ class GBufferPass {
         const ShadowMapArray* shadows;
         const MaterialTables* media;
         glm::mat4 viewProj;
-        bool irradiance;
+        unsigned outputs;
         GLuint envIrradiance;
         bool cull;
     };
     // `framebuffer` and `vertexArray`: a worker's (WorkerSide), 0 for this context's.
     void draw(const Draw& d, const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray);
 
-    ShaderVariants programs_{"mesh.vert", "gbuffer.frag", {"TSIS_GBUFFER_IRRADIANCE"}};
-    std::unique_ptr<RenderTarget> targets_[2];  // without, with irradiance
+    // The outputs' bits, in order.
+    static inline const std::vector<std::string> kVariants{"TSIS_GBUFFER_IRRADIANCE",
+                                                           "TSIS_GBUFFER_UV"};
+    ShaderVariants programs_{"mesh.vert", "gbuffer.frag", kVariants};
+    std::unique_ptr<RenderTarget> targets_[4];  // by outputs
     int current_ = 0;
     bool clearColor_;
     bool started_ = false;  // on the worker, not yet finished
-    WorkerSide side_{"mesh.vert", "gbuffer.frag", {"TSIS_GBUFFER_IRRADIANCE"}};
+    WorkerSide side_{"mesh.vert", "gbuffer.frag", kVariants};
 };
 
 // The environment's reflection for the composite (render/env_reflection.h):

@@ -99,23 +99,29 @@ void RenderTarget::bindAndClearDepth(GLuint framebuffer) {
     glClearBufferfv(GL_DEPTH, 0, &one);
 }
 
-void RenderTarget::read(int i, GLenum type, void* out) const {
+void RenderTarget::read(int i, GLenum format, GLenum type, void* out) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, type, out);
+    glReadPixels(0, 0, width_, height_, format, type, out);
     checkGl("RenderTarget::read");
 }
 
 std::vector<float> RenderTarget::readRGBA(int i) const {
     std::vector<float> out(static_cast<size_t>(width_) * height_ * 4);
-    read(i, GL_FLOAT, out.data());
+    read(i, GL_RGBA, GL_FLOAT, out.data());
+    return out;
+}
+
+std::vector<float> RenderTarget::readRG(int i) const {
+    std::vector<float> out(static_cast<size_t>(width_) * height_ * 2);
+    read(i, GL_RG, GL_FLOAT, out.data());
     return out;
 }
 
 std::vector<unsigned char> RenderTarget::readRGBA8(int i) const {
     std::vector<unsigned char> out(static_cast<size_t>(width_) * height_ * 4);
-    read(i, GL_UNSIGNED_BYTE, out.data());
+    read(i, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
     return out;
 }
 
@@ -124,6 +130,7 @@ size_t RenderTarget::bytesPerTexel(int i) const {
         case GL_RGBA32F:
             return 16;
         case GL_RGBA16F:
+        case GL_RG32F:
             return 8;
         default:  // GL_R32F, GL_RGBA8
             return 4;

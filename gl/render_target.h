@@ -36,14 +36,16 @@ class RenderTarget {
     // Attachment i as RGBA floats, GL order (row 0 = bottom).
     std::vector<float> readRGBA(int i) const;
     // The same into `out` (width · height · 4 floats), memory the caller holds.
-    void readRGBA(int i, float* out) const { read(i, GL_FLOAT, out); }
+    void readRGBA(int i, float* out) const { read(i, GL_RGBA, GL_FLOAT, out); }
+    // Attachment i's first two channels as floats (for GL_RG32F), GL order.
+    std::vector<float> readRG(int i) const;
     // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
     std::vector<unsigned char> readRGBA8(int i) const;
 
     size_t bytesPerTexel(int i) const;
 
   private:
-    void read(int i, GLenum type, void* out) const;
+    void read(int i, GLenum format, GLenum type, void* out) const;
     void attachTo(GLuint framebuffer) const;
 
     int width_, height_;

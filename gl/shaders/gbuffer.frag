@@ -1,7 +1,9 @@
 // Camera G-buffer: world position (w = the medium tag 1 + medium, 0 where
 // uncovered), normal (w: below), and with
 // TSIS_GBUFFER_IRRADIANCE (0 or 1, gl/shader.h ShaderVariants) the irradiance E(x) at the pixel's surface point
-// (for camera-view methods such as LSS; the shadow taps cost most of the pass).
+// (for camera-view methods such as LSS; the shadow taps cost most of the pass),
+// and with TSIS_GBUFFER_UV the pixel's atlas coordinates (the pyramid reads B
+// from its texture-space copy there, render/method_pyramid.h).
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -14,6 +16,11 @@ layout(location = 2) out vec4 o_irradiance;
 // u_hasEnv: the flux atlas's, read at the pixel's atlas texel.
 uniform sampler2D u_envIrradiance;
 uniform int u_hasEnv;
+#endif
+#if TSIS_GBUFFER_UV && TSIS_GBUFFER_IRRADIANCE
+layout(location = 3) out vec2 o_uv;
+#elif TSIS_GBUFFER_UV
+layout(location = 2) out vec2 o_uv;
 #endif
 
 void main() {
@@ -30,5 +37,8 @@ void main() {
         e += texelFetch(u_envIrradiance, min(ivec2(v_uv * vec2(size)), size - 1), 0).rgb;
     }
     o_irradiance = vec4(e * albedoFactor(v_uv), 1.0);
+#endif
+#if TSIS_GBUFFER_UV
+    o_uv = v_uv;
 #endif
 }

@@ -49,6 +49,10 @@ struct SurfacePoints {
     // The albedo's exit factor of each point, rgb (render/albedo_atlas.h);
     // empty where every albedo is its medium's.
     std::vector<float> exitAlbedo;
+    // Each point's atlas coordinates (u, v), when a method asked for them
+    // (FrameContext::pointUvs); else empty.
+    std::vector<float> uvs;
+    cl::Buffer uv;  // count float2, the same
 };
 
 // The camera's G-buffer on the CL side: width*height float4 each, GL row order.

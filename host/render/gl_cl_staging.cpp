@@ -29,6 +29,7 @@ void GlClStaging::declare(FrameGraph& graph, FrameContext& ctx) {
     ctx.positionAtlas = graph.create<AtlasCl>("position_atlas_cl");
     ctx.normalAtlas = graph.create<AtlasCl>("normal_atlas_cl");
     ctx.points = graph.create<SurfacePoints>("points_cl");
+    ctx.pointUvs = graph.create<Marker>("point_uvs");
     ctx.gbuffer = graph.create<CameraBuffersCl>("gbuffer_cl");
     ctx.lightMaps = graph.create<LightMapsCl>("light_maps_cl");
     ctx.radiosity = graph.create<RadiosityCl>("radiosity_cl", RadiosityCl{&radiosity_});
@@ -85,7 +86,7 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             b.read(gl.gbuffer);
             b.write(ctx.points);
         },
-        [this, &ctx, gl](FrameGraph::Resources& res) {
+        [this, &graph, &ctx, gl](FrameGraph::Resources& res) {
             const GlTarget& gbuffer = res.read(gl.gbuffer);
             SurfacePoints& p = res.write(ctx.points);
             if (gbuffer.version == pointsOf_) {
@@ -93,6 +94,11 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
                 return;
             }
             const std::vector<float> position = gbuffer.target->readRGBA(0);
+            // The atlas coordinates, when drawn: the G-buffer's last attachment.
+            const std::vector<float> uv =
+                graph.isRead(ctx.pointUvs)
+                    ? gbuffer.target->readRG(gbuffer.target->colorCount() - 1)
+                    : std::vector<float>();
             // With an albedo atlas, the normal's w holds each pixel's texel + 1.
             const AlbedoAtlas& albedo = *ctx.albedo;
             const std::vector<float> normal =
@@ -102,6 +108,8 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
                     p.pixel.push_back(i);
                     p.host.insert(p.host.end(), position.begin() + i * 4,
                                   position.begin() + i * 4 + 4);
+                    if (!uv.empty())
+                        p.uvs.insert(p.uvs.end(), uv.begin() + i * 2, uv.begin() + i * 2 + 2);
                     if (albedo.empty()) continue;
                     const float texel = normal[static_cast<size_t>(i) * 4 + 3] - 1.0f;
                     const glm::vec3 f =
@@ -111,7 +119,11 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
             p.count = static_cast<int>(p.pixel.size());
             p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
             upload(ctx.cl->queue(), p.xyz, p.host);
-            res.addBytes(bytesOf(p.host));
+            if (!p.uvs.empty()) {
+                p.uv = pointUvs_.reserve(ctx.cl->context(), p.uvs.size() * sizeof(float));
+                upload(ctx.cl->queue(), p.uv, p.uvs);
+            }
+            res.addBytes(bytesOf(p.host) + bytesOf(p.uvs));
             cachedPoints_ = p;
             pointsOf_ = gbuffer.version;
         });
@@ -180,6 +192,7 @@ std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& 
     for (size_t k = 0; k < slots; ++k)
         out.push_back(graph.create<SurfacePoints>(concat("points_cl_", k)));
     while (slotXyz_.size() < slots) slotXyz_.push_back(std::make_unique<GrowingBuffer>());
+    while (slotUv_.size() < slots) slotUv_.push_back(std::make_unique<GrowingBuffer>());
     graph.addPass(
         "split_points",
         [&](FrameGraph::Builder& b) {
@@ -202,6 +215,9 @@ std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& 
                         p.exitAlbedo.insert(p.exitAlbedo.end(),
                                             all.exitAlbedo.begin() + static_cast<long>(i * 3),
                                             all.exitAlbedo.begin() + static_cast<long>(i * 3 + 3));
+                    if (!all.uvs.empty())
+                        p.uvs.insert(p.uvs.end(), all.uvs.begin() + static_cast<long>(i * 2),
+                                     all.uvs.begin() + static_cast<long>(i * 2 + 2));
                 }
                 long long bytes = 0;
                 for (size_t k = 0; k < slots; ++k) {
@@ -210,7 +226,11 @@ std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& 
                     p.xyz = slotXyz_[k]->reserve(
                         ctx.cl->context(), std::max<size_t>(p.host.size(), 4) * sizeof(float));
                     upload(ctx.cl->queue(), p.xyz, p.host);
-                    bytes += bytesOf(p.host);
+                    if (!p.uvs.empty()) {
+                        p.uv = slotUv_[k]->reserve(ctx.cl->context(), p.uvs.size() * sizeof(float));
+                        upload(ctx.cl->queue(), p.uv, p.uvs);
+                    }
+                    bytes += bytesOf(p.host) + bytesOf(p.uvs);
                 }
                 res.addBytes(bytes);
                 slotPointsOf_ = pointsOf_;

@@ -43,12 +43,12 @@ class GlClStaging {
                         FrameGraphId<GlTarget> source, int attachment, GrowingBuffer& buffer,
                         uint64_t& uploaded, FrameGraphId<AtlasCl> out);
 
-    GrowingBuffer fluxAtlas_, residualFluxAtlas_, positionAtlas_, normalAtlas_, points_, radiosity_,
-        gbuffer_[3];
+    GrowingBuffer fluxAtlas_, residualFluxAtlas_, positionAtlas_, normalAtlas_, points_, pointUvs_,
+        radiosity_, gbuffer_[3];
     std::vector<std::unique_ptr<GrowingBuffer>> slotRadiosity_;  // slots 1, 2, …
     // The points of each slot (addSlotPoints), of the G-buffer version slotPointsOf_.
     std::vector<SurfacePoints> slotPoints_;
-    std::vector<std::unique_ptr<GrowingBuffer>> slotXyz_;
+    std::vector<std::unique_ptr<GrowingBuffer>> slotXyz_, slotUv_;
     uint64_t slotPointsOf_ = 0;
     std::vector<uint32_t> slotOfMedium_;
     std::vector<GrowingBuffer> lightMaps_;

@@ -60,6 +60,9 @@ struct FrameContext {
     FrameGraphId<AtlasCl> positionAtlas;  // xyz, w = 1 where covered
     FrameGraphId<AtlasCl> normalAtlas;    // normal, w = texel area mm²
     FrameGraphId<SurfacePoints> points;   // the covered camera pixels
+    // Read by a method that wants its points' atlas coordinates
+    // (SurfacePoints::uv): the camera's G-buffer draws them then.
+    FrameGraphId<Marker> pointUvs;
     FrameGraphId<CameraBuffersCl> gbuffer;
     FrameGraphId<LightMapsCl> lightMaps;
     // The method's output: points.count float4 (rgb B). Reserve it with

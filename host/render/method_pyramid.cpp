@@ -12,7 +12,7 @@
 
 namespace tsis {
 
-PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl), interpolation_(cl) {}
+PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl), interpolation_(cl), atlas_(cl) {}
 
 namespace {
 
@@ -24,11 +24,14 @@ double pixelMm(const Camera& camera, int height) {
 
 }  // namespace
 
-int PyramidMethod::autoStride(const Camera& camera, int height, double ell) {
-    const double pixel = pixelMm(camera, height);
+int PyramidMethod::strideFor(double cellMm, double ell) {
     int stride = 1;
-    while (stride < kMaxAutoStride && 2 * stride * pixel <= kGridSpacing * ell) stride *= 2;
+    while (stride < kMaxAutoStride && 2 * stride * cellMm <= kGridSpacing * ell) stride *= 2;
     return stride;
+}
+
+int PyramidMethod::autoStride(const Camera& camera, int height, double ell) {
+    return strideFor(pixelMm(camera, height), ell);
 }
 
 void PyramidMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
@@ -50,6 +53,7 @@ void PyramidMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
         [&](FrameGraph::Builder& b) {
             b.read(tree);
             b.read(ctx.points);
+            if (ctx.options->pyramidCache != PyramidCache::Pixels) b.read(ctx.pointUvs);
             b.write(ctx.radiosity);
         },
         [this, &ctx](FrameGraph::Resources& res) {
@@ -71,8 +75,14 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
                                       positions.data());
         tree_.setLeaves(positions);
         leavesVersion_ = position.version;
+        // The mean texel's side, for the grid of B over the atlas.
+        size_t covered = 0;
+        for (size_t i = 0; i < texels; ++i) covered += positions[i * 4 + 3] > 0 ? 1 : 0;
+        texelMm_ = covered > 0 ? std::sqrt(ctx.scene->mesh.surfaceArea() / double(covered)) : 0;
+        atlasPositions_ = std::move(positions);
         stats.addStage("pyramid_order", t.ms());
     }
+    positionAtlas_ = position.buffer;
     // The sums change only with the flux (a camera-only frame keeps them).
     const bool current = flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
@@ -93,9 +103,37 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
 
 double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& points,
                              cl::Buffer& radiosity, FrameStats& stats) {
-    rd_.update(ctx.profile(), ctx.maxDistance());
+    if (rd_.update(ctx.profile(), ctx.maxDistance())) ++tableVersion_;
     const RenderOptions& o = *ctx.options;
     const double ell = smallestMeanFreePath(*ctx.material);
+    // B on the surface: what the node sums, the table and the descent make.
+    const uint64_t surfaceKey = Hasher()
+                                    .add(builtFluxVersion_)
+                                    .add(builtLeavesVersion_)
+                                    .add(builtNormalVersion_)
+                                    .add(tableVersion_)
+                                    .add(o.pyramidEpsilon)
+                                    .add(ell)
+                                    .digest();
+    const uint64_t pointsKey =
+        Hasher().addAll(points.pixel).addAll(points.host).add(ctx.width).add(ctx.height).digest();
+    // Only the camera moved: B on the surface is the last frame's.
+    const bool cameraOnly = surfaceKey == lastSurfaceKey_ && pointsKey != lastPointsKey_;
+    lastSurfaceKey_ = surfaceKey;
+    lastPointsKey_ = pointsKey;
+    const bool fromAtlas =
+        !points.uvs.empty() && (o.pyramidCache == PyramidCache::Texture ||
+                                (o.pyramidCache == PyramidCache::Camera && cameraOnly));
+    stats.set("pyramid_from_atlas", fromAtlas ? 1.0 : 0.0);
+    stats.set("pyramid_epsilon", o.pyramidEpsilon);
+    return fromAtlas ? gatherFromAtlas(ctx, points, surfaceKey, ell, radiosity, stats)
+                     : gatherAtPixels(ctx, points, pointsKey, ell, radiosity, stats);
+}
+
+double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points,
+                                     uint64_t pointsKey, double ell, cl::Buffer& radiosity,
+                                     FrameStats& stats) {
+    const RenderOptions& o = *ctx.options;
     const int stride =
         o.pyramidStride > 0 ? o.pyramidStride : autoStride(ctx.scene->camera, ctx.height, ell);
     // Corners farther than twice a frontal cell's diagonal: a grazing or broken
@@ -106,14 +144,7 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
     // The plan follows the points (the camera's G-buffer), not the lights: a
     // frame that moves only a light keeps it, and its buffers on the device
     // (planning is ~1.3 ms of host time at 512², the device idle meanwhile).
-    const uint64_t planKey = Hasher()
-                                 .addAll(points.pixel)
-                                 .addAll(points.host)
-                                 .add(ctx.width)
-                                 .add(ctx.height)
-                                 .add(stride)
-                                 .add(maxCornerMm)
-                                 .digest();
+    const uint64_t planKey = Hasher(pointsKey).add(stride).add(maxCornerMm).digest();
     const SparsePixels& plan = plan_;
     const bool replan = planKey != planKey_;
     if (replan) {
@@ -134,11 +165,49 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
     interpolation_.run(radiosity);
     const double ms = tree_.lastGatherMs();
     if (!plan.interpolate.empty()) stats.addStage("pyramid_interpolate", interpolation_.lastMs());
-    stats.set("pyramid_epsilon", o.pyramidEpsilon);
     stats.set("pyramid_stride", stride);
     stats.set("pyramid_evaluated_pixels", static_cast<double>(order.size()));
     stats.set("pyramid_interpolated_pixels", static_cast<double>(plan.interpolate.size()));
     stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
+    return ms;
+}
+
+double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoints& points,
+                                      uint64_t surfaceKey, double ell, cl::Buffer& radiosity,
+                                      FrameStats& stats) {
+    const RenderOptions& o = *ctx.options;
+    // The grid over the atlas by the same rule as the pixels', the texel's
+    // side for the pixel's.
+    const int stride = o.pyramidStride > 0 ? o.pyramidStride : strideFor(texelMm_, ell);
+    const double cellDiagonal = std::sqrt(2.0) * stride * texelMm_;
+    const float maxCornerMm =
+        static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal));
+    const uint64_t planKey =
+        Hasher().add(leavesVersion_).add(ctx.atlasResolution).add(stride).add(maxCornerMm).digest();
+    atlas_.plan(atlasPositions_, ctx.atlasResolution, stride, maxCornerMm, planKey);
+    double ms = 0;
+    const uint64_t atlasKey = Hasher(surfaceKey).add(planKey).digest();
+    const bool made = atlasKey != atlasKey_;
+    if (made) {
+        tree_.gather(positionAtlas_, atlas_.order(), atlas_.evaluated(), o.pyramidEpsilon,
+                     static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
+                     atlas_.values());
+        atlas_.interpolate();
+        ms += tree_.lastGatherMs();
+        stats.addStage("pyramid_atlas_interpolate", atlas_.lastInterpolateMs());
+        stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
+        atlasKey_ = atlasKey;
+    }
+    // A texel more than a few texels' sides away in space is another surface
+    // packed beside the point's chart.
+    const auto maxMm =
+        static_cast<float>(std::min(kMaxCornerDistance * ell, kLookupTexels * texelMm_));
+    atlas_.lookup(points, positionAtlas_, maxMm, radiosity);
+    stats.addStage("pyramid_atlas_lookup", atlas_.lastLookupMs());
+    stats.set("pyramid_atlas_made", made ? 1.0 : 0.0);
+    stats.set("pyramid_stride", stride);
+    stats.set("pyramid_evaluated_pixels", made ? static_cast<double>(atlas_.evaluated()) : 0.0);
+    stats.set("pyramid_atlas_texels", static_cast<double>(atlas_.covered()));
     return ms;
 }
 

@@ -26,6 +26,7 @@
 #include "cl/flux_tree.h"
 #include "render/method.h"
 #include "render/profile_table_cache.h"
+#include "render/radiosity_atlas.h"
 #include "render/sparse_pixels.h"
 
 namespace tsis {
@@ -38,10 +39,14 @@ class PyramidMethod : public Method {
 
     // The default grid stride for a camera, image height and mean free path ℓ.
     static int autoStride(const Camera& camera, int height, double ell);
+    // The same for a cell (pixel or texel) of this side, mm.
+    static int strideFor(double cellMm, double ell);
     static constexpr int kMaxAutoStride = 4;
     static constexpr double kGridSpacing = 0.25;  // grid spacing ≤ kGridSpacing·ℓ
     // Corners within this·ℓ in 3D and within 2 frontal cell diagonals.
     static constexpr double kMaxCornerDistance = 0.5;
+    // B over the atlas: a point reads texels within this many texel sides.
+    static constexpr double kLookupTexels = 4;
 
   private:
     // Each returns its device milliseconds.
@@ -49,6 +54,11 @@ class PyramidMethod : public Method {
                  const AtlasCl& normal, FrameStats& stats);
     double gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity,
                   FrameStats& stats);
+    double gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points, uint64_t pointsKey,
+                          double ell, cl::Buffer& radiosity, FrameStats& stats);
+    double gatherFromAtlas(const FrameContext& ctx, const SurfacePoints& points,
+                           uint64_t surfaceKey, double ell, cl::Buffer& radiosity,
+                           FrameStats& stats);
 
     ClRuntime& cl_;
     FluxTree tree_;
@@ -64,6 +74,17 @@ class PyramidMethod : public Method {
     // order_ and interpolation_.
     SparsePixels plan_;
     uint64_t planKey_ = 0;
+    // What the last frame's B was made of (the surface's B: sums, table,
+    // ε, ℓ) and at (its points): a frame with the same surface key and
+    // other points only moved the camera.
+    uint64_t lastSurfaceKey_ = 0, lastPointsKey_ = 0, tableVersion_ = 0;
+    // B over the atlas (render/radiosity_atlas.h), made for atlasKey_ from
+    // the position atlas' host copy; texelMm_ the mean texel's side.
+    RadiosityAtlas atlas_;
+    std::vector<float> atlasPositions_;
+    cl::Buffer positionAtlas_;  // the one build() saw, on the device
+    double texelMm_ = 0;
+    uint64_t atlasKey_ = 0;
 };
 
 }  // namespace tsis

@@ -68,7 +68,7 @@ void RasterPasses::startSamples(const FrameContext& ctx, const GpuMesh& mesh,
                                 const GlLights& lights) {
     const int aa = ctx.options->aa;
     sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
-                             ctx.width * aa, ctx.height * aa, false, 0, cullsBackFaces(ctx, mesh));
+                             ctx.width * aa, ctx.height * aa, 0, 0, cullsBackFaces(ctx, mesh));
 }
 
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
@@ -226,14 +226,17 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             // The environment's residual per atlas texel, for the irradiance.
             if (ctx.scene->env) b.read(h.geometryAtlas);
             b.write(h.gbuffer);
+            b.write(ctx.pointUvs);
         },
         [this, &graph, &ctx, eta, gbufferCl, lighting, h](FrameGraph::Resources& res) {
             // Redrawn only when what it shows changed: a frame that only moves
             // the light keeps it (irradiance, for image-space methods, moves
             // with the lighting).
             const bool irradiance = graph.isRead(gbufferCl);
+            const unsigned outputs = (irradiance ? GBufferPass::kIrradiance : 0u) |
+                                     (graph.isRead(ctx.pointUvs) ? GBufferPass::kUv : 0u);
             Hasher key;
-            key.add(meshHash_).add(ctx.width).add(ctx.height).add(irradiance).add(ctx.albedo->key);
+            key.add(meshHash_).add(ctx.width).add(ctx.height).add(outputs).add(ctx.albedo->key);
             for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
             if (irradiance) key.add(lighting).add(eta);
             // The composite's samples' G-buffer, when it is to be drawn too,
@@ -252,7 +255,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                         ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
                         : 0;
                 gbufferPass_.run(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
-                                 ctx.width, ctx.height, irradiance, env, cullsBackFaces(ctx, mesh));
+                                 ctx.width, ctx.height, outputs, env, cullsBackFaces(ctx, mesh));
                 glFinish();
                 gbufferKey_ = key.digest();
                 ++gbufferVersion_;

@@ -16,6 +16,9 @@ namespace {
 template <typename E>
 using Choice = std::pair<E, const char*>;
 
+constexpr Choice<PyramidCache> kPyramidCaches[] = {{PyramidCache::Pixels, "off"},
+                                                   {PyramidCache::Camera, "camera"},
+                                                   {PyramidCache::Texture, "always"}};
 constexpr Choice<RdPart> kRdParts[] = {
     {RdPart::Full, "full"}, {RdPart::Local, "local"}, {RdPart::Global, "global"}};
 constexpr Choice<ProfileModel> kProfileModels[] = {{ProfileModel::Dipole, "dipole"},
@@ -50,6 +53,13 @@ const char* choiceName(E value, const Choice<E> (&choices)[N]) {
 }
 
 }  // namespace
+
+PyramidCache parsePyramidCache(const std::string& name) {
+    return parseChoice("--pyramid-cache", name, kPyramidCaches);
+}
+const char* pyramidCacheName(PyramidCache cache) {
+    return choiceName(cache, kPyramidCaches);
+}
 
 RdPart parseRdPart(const std::string& name) {
     return parseChoice("--rd-part", name, kRdParts);

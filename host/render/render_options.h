@@ -6,6 +6,14 @@
 
 namespace tsis {
 
+// Where the pyramid reads B (render/method_pyramid.h): at the frame's pixels
+// always (Pixels), from its texture-space copy when only the camera moved
+// (Camera), or from that copy always (Texture).
+enum class PyramidCache { Pixels, Camera, Texture };
+// "off", "camera" or "always"; throws tsis::Error for anything else.
+PyramidCache parsePyramidCache(const std::string& name);
+const char* pyramidCacheName(PyramidCache cache);
+
 // What tsis and ltsm integrate: Rd, Rd·Wl or Rd·Wg (the hybrid's split).
 enum class RdPart { Full, Local, Global };
 // "full", "local" or "global"; throws tsis::Error for anything else.
@@ -96,6 +104,7 @@ struct RenderOptions {
     // pyramid: evaluate every s-th pixel, interpolate between; 0 = by ℓ and the
     // pixel's size (method_pyramid.h), 1 = every pixel
     int pyramidStride = 0;
+    PyramidCache pyramidCache = PyramidCache::Camera;
     double tsmRadius = 2.0;  // tsm: filter radius in 1/σtr of the widest channel
     // volumetric: paths per pixel (0 = 16, or unbounded with timeSeconds) and
     // a time budget in seconds (0 = none); render/method_volumetric.h.

@@ -105,6 +105,11 @@ std::vector<RenderParam> makeParams() {
                 "surface; 0 = from the mean free path and the pixel size, 1 = every pixel",
                 M{"pyramid"}, kRadiosity},
                &O::pyramidStride, {0, 16}),
+        choice({"pyramid-cache",
+                "C  read B from its copy over the atlas, made once per lighting: on frames "
+                "where only the camera moved (camera), never (off) or always",
+                M{"pyramid"}, kRadiosity},
+               &O::pyramidCache, parsePyramidCache, pyramidCacheName, PyramidCache::Texture),
         // tsis and ltsm split Rd at Rp too when --rd-part is local or global.
         number({"rp-bound",
                 "B  Rp is the largest r where Rd(r)·2πr crosses B (tsis, ltsm: with --rd-part "
