@@ -82,7 +82,6 @@ double PyramidMethod::build(const FrameContext& ctx, const AtlasCl& flux, const 
         atlasPositions_ = std::move(positions);
         stats.addStage("pyramid_order", t.ms());
     }
-    positionAtlas_ = position.buffer;
     // The sums change only with the flux (a camera-only frame keeps them).
     const bool current = flux.version == builtFluxVersion_ && leavesVersion_ == builtLeavesVersion_;
     if (!current) {
@@ -182,14 +181,23 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
     const double cellDiagonal = std::sqrt(2.0) * stride * texelMm_;
     const float maxCornerMm =
         static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal));
-    const uint64_t planKey =
-        Hasher().add(leavesVersion_).add(ctx.atlasResolution).add(stride).add(maxCornerMm).digest();
-    atlas_.plan(atlasPositions_, ctx.atlasResolution, stride, maxCornerMm, planKey);
+    // A texel more than a few texels' sides away in space is another surface
+    // packed beside the point's chart.
+    const auto maxMm =
+        static_cast<float>(std::min(kMaxCornerDistance * ell, kLookupTexels * texelMm_));
+    const uint64_t planKey = Hasher()
+                                 .add(leavesVersion_)
+                                 .add(ctx.atlasResolution)
+                                 .add(stride)
+                                 .add(maxCornerMm)
+                                 .add(maxMm)
+                                 .digest();
+    atlas_.plan(atlasPositions_, ctx.atlasResolution, stride, maxCornerMm, maxMm, planKey);
     double ms = 0;
     const uint64_t atlasKey = Hasher(surfaceKey).add(planKey).digest();
     const bool made = atlasKey != atlasKey_;
     if (made) {
-        tree_.gather(positionAtlas_, atlas_.order(), atlas_.evaluated(), o.pyramidEpsilon,
+        tree_.gather(atlas_.points(), atlas_.order(), atlas_.evaluated(), o.pyramidEpsilon,
                      static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
                      atlas_.values());
         atlas_.interpolate();
@@ -198,12 +206,19 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
         stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
         atlasKey_ = atlasKey;
     }
-    // A texel more than a few texels' sides away in space is another surface
-    // packed beside the point's chart.
-    const auto maxMm =
-        static_cast<float>(std::min(kMaxCornerDistance * ell, kLookupTexels * texelMm_));
-    atlas_.lookup(points, positionAtlas_, maxMm, radiosity);
+    const std::vector<int> none = atlas_.lookup(points, maxMm, radiosity);
     stats.addStage("pyramid_atlas_lookup", atlas_.lastLookupMs());
+    // The points no texel of their surface is around: gathered at their pixel.
+    if (!none.empty()) {
+        cl_.queue().enqueueWriteBuffer(order_.reserve(cl_.context(), none.size() * sizeof(int)),
+                                       CL_TRUE, 0, none.size() * sizeof(int), none.data());
+        planKey_ = 0;  // order_ holds these now
+        tree_.gather(points.xyz, order_.buffer, static_cast<int>(none.size()), o.pyramidEpsilon,
+                     static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
+                     radiosity);
+        ms += tree_.lastGatherMs();
+    }
+    stats.set("pyramid_gathered_off_atlas", static_cast<double>(none.size()));
     stats.set("pyramid_atlas_made", made ? 1.0 : 0.0);
     stats.set("pyramid_stride", stride);
     stats.set("pyramid_evaluated_pixels", made ? static_cast<double>(atlas_.evaluated()) : 0.0);

@@ -82,7 +82,6 @@ class PyramidMethod : public Method {
     // the position atlas' host copy; texelMm_ the mean texel's side.
     RadiosityAtlas atlas_;
     std::vector<float> atlasPositions_;
-    cl::Buffer positionAtlas_;  // the one build() saw, on the device
     double texelMm_ = 0;
     uint64_t atlasKey_ = 0;
 };

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <vector>
 
 #include "cl/cl_runtime.h"
@@ -21,13 +22,24 @@ class RadiosityAtlas {
     explicit RadiosityAtlas(ClRuntime& cl);
 
     // The covered texels of the position atlas (res² float4 on the host,
-    // w = medium tag, 0 uncovered) and the grid they are evaluated on,
-    // made again when `key` changed. Blocking uploads.
+    // w = medium tag, 0 uncovered) and a ring around each chart (withRing),
+    // and the grid they are evaluated on, made again when `key` changed.
+    // Blocking uploads.
     void plan(const std::vector<float>& positions, int resolution, int stride, float maxCornerMm,
-              uint64_t key);
-    // What the gather writes, over the position atlas as its points: the
-    // texels to evaluate (in groups of 8 neighbours) and B, an image of the
-    // atlas' texels (float4; uncovered ones undefined).
+              float sameSurfaceMm, uint64_t key);
+    // The position atlas with the uncovered texels beside a chart given the
+    // chart's surface continued straight on: p1 + (p1 − p2) through the two
+    // texels next to it in a row, column or diagonal (within sameSurfaceMm
+    // of each other: one surface), averaged over the directions that agree.
+    // B is then evaluated there too, and a point in a chart's outermost half
+    // texel reads B interpolated, not held at the last texel's value.
+    static std::vector<float> withRing(const std::vector<float>& positions, int resolution,
+                                       float sameSurfaceMm);
+    // What the gather reads and writes: the texels' positions (the atlas
+    // with its ring, float4), the texels to evaluate (in groups of 8
+    // neighbours) and B, an image of the same texels (float4; those without
+    // a position undefined).
+    const cl::Buffer& points() const { return xyz_.buffer; }
     const cl::Buffer& order() const { return order_.buffer; }
     int evaluated() const { return static_cast<int>(plan_.evaluate.size()); }
     int covered() const { return covered_; }
@@ -35,12 +47,22 @@ class RadiosityAtlas {
     // After the gather: B of the texels between the grid's, on the device.
     void interpolate() { interpolation_.run(b_.buffer); }
 
-    // B of each point (float4, count of them) from its atlas coordinates
-    // (points.uv) and position, to `out`; texels of the position atlas (the
-    // one planned) farther than maxMm from a point are not its surface.
-    // Enqueues without waiting.
-    void lookup(const SurfacePoints& points, const cl::Buffer& positionAtlas, float maxMm,
-                cl::Buffer& out);
+    // Per point (atlas coordinates uvs, 2 floats each; positions xyz(w),
+    // 4 floats each, w = its medium tag), bit j set when texel j of the 2×2
+    // around its coordinates (x0 y0, x1 y0, x0 y1, x1 y1) holds its surface:
+    // covered, of its medium and within maxMm in space (a texel of another
+    // chart packed beside it is not). `atlas`: the position atlas (res²
+    // float4, w = medium tag, 0 uncovered).
+    static std::vector<uint8_t> surfaceTexels(const std::vector<float>& uvs,
+                                              const std::vector<float>& positions,
+                                              const std::vector<float>& atlas, int resolution,
+                                              float maxMm);
+    // B of each point (float4, to `out`) bilinearly from its surface's
+    // texels (surfaceTexels, of the atlas planned, with its ring); returns the
+    // points with none, which it leaves for the caller to gather (a sliver
+    // chart holds no texel centre, nor a chart's outermost half texel
+    // always). Enqueues without waiting.
+    std::vector<int> lookup(const SurfacePoints& points, float maxMm, cl::Buffer& out);
     double lastInterpolateMs() const { return interpolation_.lastMs(); }
     double lastLookupMs() const;
 
@@ -49,7 +71,8 @@ class RadiosityAtlas {
     cl::Kernel lookup_;
     SparsePixels plan_;
     SparseInterpolation interpolation_;
-    GrowingBuffer order_, b_;
+    GrowingBuffer xyz_, order_, b_, mask_;
+    std::vector<float> positions_;  // the planned atlas with its ring
     int resolution_ = 0, covered_ = 0;
     uint64_t key_ = 0;
     cl::Event lookupEvent_;

@@ -10,37 +10,21 @@
 namespace tsis {
 namespace {
 
-// B at a point from an atlas image, in double: bilinear over the 2×2 texels
-// around its coordinates that count (covered, its medium, within maxMm),
-// renormalised; else the nearest that counts of the 4×4 around; else 0.
-glm::dvec3 hostLookup(const std::vector<float>& xyz, const std::vector<float>& b, int res,
-                      glm::dvec2 uv, glm::dvec4 p, double maxMm) {
+// B at a point from an atlas image, in double: bilinear over the 2×2
+// texels around its coordinates that `mask` names, renormalised.
+glm::dvec3 hostLookup(const std::vector<float>& b, int res, glm::dvec2 uv, uint8_t mask) {
     const glm::dvec2 f = uv * double(res) - 0.5;
     const glm::dvec2 f0 = glm::floor(f), t = f - f0;
-    glm::dvec3 sum(0), nearest(0);
-    double weights = 0, best = INFINITY;
-    for (int pass = 0; pass < 2 && weights == 0; ++pass)
-        for (int dy = pass ? -1 : 0; dy <= (pass ? 2 : 1); ++dy)
-            for (int dx = pass ? -1 : 0; dx <= (pass ? 2 : 1); ++dx) {
-                const int x = int(f0.x) + dx, y = int(f0.y) + dy;
-                if (x < 0 || y < 0 || x >= res || y >= res) continue;
-                const size_t k = size_t(y) * res + x;
-                const glm::dvec3 q(xyz[k * 4], xyz[k * 4 + 1], xyz[k * 4 + 2]);
-                const double d2 = glm::dot(q - glm::dvec3(p), q - glm::dvec3(p));
-                if (double(xyz[k * 4 + 3]) != p.w || !(d2 < maxMm * maxMm)) continue;
-                const glm::dvec3 v(b[k * 4], b[k * 4 + 1], b[k * 4 + 2]);
-                if (pass == 0) {
-                    const double w = (dx ? t.x : 1 - t.x) * (dy ? t.y : 1 - t.y);
-                    if (w > 0) {
-                        sum += w * v;
-                        weights += w;
-                    }
-                } else if (d2 < best) {
-                    best = d2;
-                    nearest = v;
-                }
-            }
-    return weights > 0 ? sum / weights : nearest;
+    glm::dvec3 sum(0);
+    double weights = 0;
+    for (int j = 0; j < 4; ++j) {
+        if (!((mask >> j) & 1)) continue;
+        const size_t k = size_t(int(f0.y) + (j >> 1)) * res + size_t(int(f0.x) + (j & 1));
+        const double w = (j & 1 ? t.x : 1 - t.x) * (j >> 1 ? t.y : 1 - t.y);
+        sum += w * glm::dvec3(b[k * 4], b[k * 4 + 1], b[k * 4 + 2]);
+        weights += w;
+    }
+    return sum / weights;
 }
 
 class RadiosityAtlasTest : public test::ClTest {};
@@ -48,8 +32,8 @@ class RadiosityAtlasTest : public test::ClTest {};
 // An 8² atlas: a chart in columns 0–3 (a plane, 0.1 mm a texel, B linear
 // in the texel), an empty gutter column 4, another chart in columns 5–7
 // far away in space. Points inside, at the gutter (renormalised), with
-// only the other chart and the gutter around (the nearest texel of their
-// own chart), and of another medium (nothing: 0).
+// only the gutter and the other chart around, of another medium (both
+// left to the gather) and on the atlas' top row.
 TEST_F(RadiosityAtlasTest, LookupIsTheHostsBilinearOverTheTexelsOfThePointsSurface) {
     constexpr int kRes = 8;
     std::vector<float> xyz(kRes * kRes * 4, 0.0f), b(kRes * kRes * 4, 0.0f);
@@ -77,26 +61,74 @@ TEST_F(RadiosityAtlasTest, LookupIsTheHostsBilinearOverTheTexelsOfThePointsSurfa
         points.insert(points.end(), {0.1f * x, 0.1f * float(at[i].y), 0.0f, i == 3 ? 2.0f : 1.0f});
     }
     const float maxMm = 0.3f;
+    const std::vector<uint8_t> mask = RadiosityAtlas::surfaceTexels(uvs, points, xyz, kRes, maxMm);
+    EXPECT_EQ(mask[0], 0xf);  // inside
+    EXPECT_EQ(mask[1], 0x5);  // at the gutter: column 3's two
+    EXPECT_EQ(mask[2], 0);    // only the gutter and the other chart around
+    EXPECT_EQ(mask[3], 0);    // another medium
+    EXPECT_EQ(mask[4], 0x3);  // the top row: the two below it
     cl::Kernel lookup = rt.kernel("radiosity_atlas.cl", "tsis_radiosity_atlas_lookup");
-    cl::Buffer out = buffer(at.size() * 16);
-    run(lookup, at.size(), upload(uvs), upload(points), int(at.size()), upload(xyz), upload(b),
-        kRes, maxMm * maxMm, out);
+    const std::vector<float> untouched(at.size() * 4, -7.0f);
+    cl::Buffer out = upload(untouched);
+    run(lookup, at.size(), upload(uvs), upload(mask), int(at.size()), upload(b), kRes, out);
     const std::vector<float> got = download<float>(out, at.size() * 4);
     for (size_t i = 0; i < at.size(); ++i) {
-        const glm::dvec4 p(points[i * 4], points[i * 4 + 1], points[i * 4 + 2], points[i * 4 + 3]);
+        if (mask[i] == 0) {
+            // Left for the gather.
+            for (int c = 0; c < 4; ++c) EXPECT_EQ(got[i * 4 + c], -7.0f) << i;
+            continue;
+        }
         const glm::dvec3 want =
-            hostLookup(xyz, b, kRes, glm::dvec2(uvs[i * 2], uvs[i * 2 + 1]), p, maxMm);
+            hostLookup(b, kRes, glm::dvec2(uvs[i * 2], uvs[i * 2 + 1]), mask[i]);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[i * 4 + c], want[c], 1e-4) << i << " " << c;
         EXPECT_EQ(got[i * 4 + 3], 0.0f);
     }
     // Linear B inside the chart: exact. At the gutter: column 3's, linear in y.
     EXPECT_NEAR(got[0], 2.3 + 2 * 3.6, 1e-4);
     EXPECT_NEAR(got[4], 3 + 2 * 1.2, 1e-4);
-    // Beside the gutter and the other chart: the nearest texel of its own
-    // (column 3), never the other chart's 100.
-    EXPECT_LT(got[8], 50.0f);
-    EXPECT_GT(got[8], 0.0f);
-    EXPECT_EQ(got[12], 0.0f);  // another medium
+}
+
+// The ring: the texels beside a chart continue its surface straight on
+// (a plane: exactly), a texel beside two charts far apart in space takes
+// the first one's continuation alone, and a texel beside nothing stays
+// uncovered.
+TEST(RadiosityAtlasRing, ContinuesEachChartsSurfaceStraightOn) {
+    constexpr int kRes = 12;
+    std::vector<float> atlas(kRes * kRes * 4, 0.0f);
+    auto set = [&](int x, int y, glm::vec3 p) {
+        float* q = &atlas[size_t(y * kRes + x) * 4];
+        q[0] = p.x;
+        q[1] = p.y;
+        q[2] = p.z;
+        q[3] = 1.0f;
+    };
+    // A tilted plane in columns 2–5, rows 2–9; another in columns 7–9 far away.
+    auto plane = [](int x, int y) { return glm::vec3(0.1f * x, 0.1f * y, 0.05f * x + 0.02f * y); };
+    for (int y = 2; y <= 9; ++y) {
+        for (int x = 2; x <= 5; ++x) set(x, y, plane(x, y));
+        for (int x = 7; x <= 9; ++x) set(x, y, glm::vec3(40.0f + 0.1f * x, 0.1f * y, 9.0f));
+    }
+    const std::vector<float> ring = RadiosityAtlas::withRing(atlas, kRes, 0.3f);
+    auto p = [&](int x, int y) {
+        const float* q = &ring[size_t(y * kRes + x) * 4];
+        return glm::vec4(q[0], q[1], q[2], q[3]);
+    };
+    for (const glm::ivec2 t :
+         {glm::ivec2(1, 5), glm::ivec2(1, 1), glm::ivec2(3, 10), glm::ivec2(1, 10)}) {
+        const glm::vec4 q = p(t.x, t.y);
+        EXPECT_EQ(q.w, 1.0f) << t.x << "," << t.y;
+        const glm::vec3 want = plane(t.x, t.y);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(q[c], want[c], 1e-5) << t.x << "," << t.y;
+    }
+    // Column 6: between the two; the first direction found is +x (the far
+    // chart), whose continuation the near chart's does not agree with.
+    const glm::vec4 between = p(6, 5);
+    EXPECT_EQ(between.w, 1.0f);
+    EXPECT_NEAR(between.x, 40.0f + 0.6f, 1e-4);
+    // Covered texels are kept, a texel two away from every chart stays empty.
+    EXPECT_EQ(p(3, 3), glm::vec4(plane(3, 3), 1.0f));
+    EXPECT_EQ(p(0, 0).w, 0.0f);
+    EXPECT_EQ(p(11, 11).w, 0.0f);
 }
 
 }  // namespace
