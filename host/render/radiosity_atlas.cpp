@@ -67,14 +67,14 @@ void RadiosityAtlas::plan(const std::vector<float>& positions, int resolution, i
     if (key == key_ && key_ != 0) return;
     const size_t texels = static_cast<size_t>(resolution) * resolution;
     TSIS_CHECK_EQ(positions.size(), texels * 4);
-    positions_ = withRing(positions, resolution, sameSurfaceMm);
+    const std::vector<float> ring = withRing(positions, resolution, sameSurfaceMm);
     std::vector<int> pixels;
     std::vector<float> xyz;
     for (size_t i = 0; i < texels; ++i)
-        if (positions_[i * 4 + 3] > 0) {
+        if (ring[i * 4 + 3] > 0) {
             pixels.push_back(static_cast<int>(i));
-            xyz.insert(xyz.end(), positions_.begin() + static_cast<long>(i * 4),
-                       positions_.begin() + static_cast<long>(i * 4 + 4));
+            xyz.insert(xyz.end(), ring.begin() + static_cast<long>(i * 4),
+                       ring.begin() + static_cast<long>(i * 4 + 4));
         }
     covered_ = static_cast<int>(pixels.size());
     // Planned over the texels with a position; run over the whole image
@@ -86,8 +86,7 @@ void RadiosityAtlas::plan(const std::vector<float>& positions, int resolution, i
         for (int& c : p.corners) c = pixels[static_cast<size_t>(c)];
     }
     cl::Buffer& dense = xyz_.reserve(cl_.context(), texels * 4 * sizeof(float));
-    cl_.queue().enqueueWriteBuffer(dense, CL_TRUE, 0, texels * 4 * sizeof(float),
-                                   positions_.data());
+    cl_.queue().enqueueWriteBuffer(dense, CL_TRUE, 0, texels * 4 * sizeof(float), ring.data());
     const size_t bytes = plan_.evaluate.size() * sizeof(int);
     cl::Buffer& order = order_.reserve(cl_.context(), bytes);
     if (bytes > 0) cl_.queue().enqueueWriteBuffer(order, CL_TRUE, 0, bytes, plan_.evaluate.data());
@@ -97,44 +96,22 @@ void RadiosityAtlas::plan(const std::vector<float>& positions, int resolution, i
     key_ = key;
 }
 
-std::vector<uint8_t> RadiosityAtlas::surfaceTexels(const std::vector<float>& uvs,
-                                                   const std::vector<float>& positions,
-                                                   const std::vector<float>& atlas, int resolution,
-                                                   float maxMm) {
-    const size_t count = uvs.size() / 2;
-    TSIS_CHECK_EQ(positions.size(), count * 4);
-    TSIS_CHECK_EQ(atlas.size(), size_t(resolution) * size_t(resolution) * 4);
-    const float maxMm2 = maxMm * maxMm;
-    std::vector<uint8_t> mask(count, 0);
-    for (size_t i = 0; i < count; ++i) {
-        const glm::vec2 f = glm::vec2(uvs[i * 2], uvs[i * 2 + 1]) * float(resolution) - 0.5f;
-        const int x0 = static_cast<int>(std::floor(f.x)), y0 = static_cast<int>(std::floor(f.y));
-        const float* p = &positions[i * 4];
-        for (int j = 0; j < 4; ++j) {
-            const int x = x0 + (j & 1), y = y0 + (j >> 1);
-            if (x < 0 || y < 0 || x >= resolution || y >= resolution) continue;
-            const float* q = &atlas[(size_t(y) * size_t(resolution) + size_t(x)) * 4];
-            const float dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-            if (q[3] == p[3] && dx * dx + dy * dy + dz * dz < maxMm2)
-                mask[i] |= static_cast<uint8_t>(1u << j);
-        }
-    }
-    return mask;
-}
-
 std::vector<int> RadiosityAtlas::lookup(const SurfacePoints& points, float maxMm, cl::Buffer& out) {
     TSIS_CHECK_EQ(points.uvs.size(), static_cast<size_t>(points.count) * 2);
     if (points.count == 0) return {};
-    const std::vector<uint8_t> mask =
-        surfaceTexels(points.uvs, points.host, positions_, resolution_, maxMm);
-    std::vector<int> none;
-    for (size_t i = 0; i < mask.size(); ++i)
-        if (mask[i] == 0) none.push_back(static_cast<int>(i));
-    cl::Buffer& m = mask_.reserve(cl_.context(), mask.size());
-    cl_.queue().enqueueWriteBuffer(m, CL_TRUE, 0, mask.size(), mask.data());
-    setKernelArgs(lookup_, points.uv, m, points.count, b_.buffer, resolution_, out);
-    enqueue1D(cl_.queue(), lookup_, static_cast<size_t>(points.count), kLocalSize, &lookupEvent_);
-    return none;
+    const auto count = static_cast<size_t>(points.count);
+    cl::Buffer& none = none_.reserve(cl_.context(), count);
+    setKernelArgs(lookup_, points.uv, points.xyz, points.count, xyz_.buffer, b_.buffer, resolution_,
+                  maxMm * maxMm, out, none);
+    enqueue1D(cl_.queue(), lookup_, count, kLocalSize, &lookupEvent_);
+    // The few points with no texel of their surface around: a small read
+    // the frame's read-back of B would wait for anyway.
+    std::vector<uint8_t> flags(count);
+    cl_.queue().enqueueReadBuffer(none, CL_TRUE, 0, count, flags.data());
+    std::vector<int> left;
+    for (size_t i = 0; i < count; ++i)
+        if (flags[i]) left.push_back(static_cast<int>(i));
+    return left;
 }
 
 double RadiosityAtlas::lastLookupMs() const {

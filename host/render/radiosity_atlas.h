@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstdint>
-#include <glm/vec2.hpp>
 #include <vector>
 
 #include "cl/cl_runtime.h"
@@ -47,21 +46,12 @@ class RadiosityAtlas {
     // After the gather: B of the texels between the grid's, on the device.
     void interpolate() { interpolation_.run(b_.buffer); }
 
-    // Per point (atlas coordinates uvs, 2 floats each; positions xyz(w),
-    // 4 floats each, w = its medium tag), bit j set when texel j of the 2×2
-    // around its coordinates (x0 y0, x1 y0, x0 y1, x1 y1) holds its surface:
-    // covered, of its medium and within maxMm in space (a texel of another
-    // chart packed beside it is not). `atlas`: the position atlas (res²
-    // float4, w = medium tag, 0 uncovered).
-    static std::vector<uint8_t> surfaceTexels(const std::vector<float>& uvs,
-                                              const std::vector<float>& positions,
-                                              const std::vector<float>& atlas, int resolution,
-                                              float maxMm);
-    // B of each point (float4, to `out`) bilinearly from its surface's
-    // texels (surfaceTexels, of the atlas planned, with its ring); returns the
-    // points with none, which it leaves for the caller to gather (a sliver
-    // chart holds no texel centre, nor a chart's outermost half texel
-    // always). Enqueues without waiting.
+    // B of each point (float4, to `out`) bilinearly from the 2×2 texels
+    // around its atlas coordinates that hold its surface (of the atlas
+    // planned, with its ring: of its medium, within maxMm in space, so a
+    // chart packed beside it is not read); returns the points with none,
+    // which it leaves for the caller to gather (a sliver chart holds no texel
+    // centre). Waits for the kernel.
     std::vector<int> lookup(const SurfacePoints& points, float maxMm, cl::Buffer& out);
     double lastInterpolateMs() const { return interpolation_.lastMs(); }
     double lastLookupMs() const;
@@ -71,8 +61,7 @@ class RadiosityAtlas {
     cl::Kernel lookup_;
     SparsePixels plan_;
     SparseInterpolation interpolation_;
-    GrowingBuffer xyz_, order_, b_, mask_;
-    std::vector<float> positions_;  // the planned atlas with its ring
+    GrowingBuffer xyz_, order_, b_, none_;
     int resolution_ = 0, covered_ = 0;
     uint64_t key_ = 0;
     cl::Event lookupEvent_;

@@ -10,6 +10,22 @@
 namespace tsis {
 namespace {
 
+// Bit j when texel j of the 2×2 around a point's coordinates (x0 y0, x1 y0,
+// x0 y1, x1 y1) holds its surface: a position of its medium within maxMm.
+uint8_t hostMask(const std::vector<float>& atlas, int res, glm::dvec2 uv, glm::dvec4 p,
+                 double maxMm) {
+    const glm::dvec2 f0 = glm::floor(uv * double(res) - 0.5);
+    uint8_t mask = 0;
+    for (int j = 0; j < 4; ++j) {
+        const int x = int(f0.x) + (j & 1), y = int(f0.y) + (j >> 1);
+        if (x < 0 || y < 0 || x >= res || y >= res) continue;
+        const float* q = &atlas[(size_t(y) * res + x) * 4];
+        const glm::dvec3 d = glm::dvec3(q[0], q[1], q[2]) - glm::dvec3(p);
+        if (double(q[3]) == p.w && glm::dot(d, d) < maxMm * maxMm) mask |= uint8_t(1u << j);
+    }
+    return mask;
+}
+
 // B at a point from an atlas image, in double: bilinear over the 2×2
 // texels around its coordinates that `mask` names, renormalised.
 glm::dvec3 hostLookup(const std::vector<float>& b, int res, glm::dvec2 uv, uint8_t mask) {
@@ -61,7 +77,12 @@ TEST_F(RadiosityAtlasTest, LookupIsTheHostsBilinearOverTheTexelsOfThePointsSurfa
         points.insert(points.end(), {0.1f * x, 0.1f * float(at[i].y), 0.0f, i == 3 ? 2.0f : 1.0f});
     }
     const float maxMm = 0.3f;
-    const std::vector<uint8_t> mask = RadiosityAtlas::surfaceTexels(uvs, points, xyz, kRes, maxMm);
+    std::vector<uint8_t> mask;
+    for (size_t i = 0; i < at.size(); ++i)
+        mask.push_back(hostMask(
+            xyz, kRes, glm::dvec2(uvs[i * 2], uvs[i * 2 + 1]),
+            glm::dvec4(points[i * 4], points[i * 4 + 1], points[i * 4 + 2], points[i * 4 + 3]),
+            maxMm));
     EXPECT_EQ(mask[0], 0xf);  // inside
     EXPECT_EQ(mask[1], 0x5);  // at the gutter: column 3's two
     EXPECT_EQ(mask[2], 0);    // only the gutter and the other chart around
@@ -69,10 +90,13 @@ TEST_F(RadiosityAtlasTest, LookupIsTheHostsBilinearOverTheTexelsOfThePointsSurfa
     EXPECT_EQ(mask[4], 0x3);  // the top row: the two below it
     cl::Kernel lookup = rt.kernel("radiosity_atlas.cl", "tsis_radiosity_atlas_lookup");
     const std::vector<float> untouched(at.size() * 4, -7.0f);
-    cl::Buffer out = upload(untouched);
-    run(lookup, at.size(), upload(uvs), upload(mask), int(at.size()), upload(b), kRes, out);
+    cl::Buffer out = upload(untouched), none = buffer(at.size());
+    run(lookup, at.size(), upload(uvs), upload(points), int(at.size()), upload(xyz), upload(b),
+        kRes, maxMm * maxMm, out, none);
     const std::vector<float> got = download<float>(out, at.size() * 4);
+    const std::vector<uint8_t> left = download<uint8_t>(none, at.size());
     for (size_t i = 0; i < at.size(); ++i) {
+        EXPECT_EQ(left[i], mask[i] == 0 ? 1 : 0) << i;
         if (mask[i] == 0) {
             // Left for the gather.
             for (int c = 0; c < 4; ++c) EXPECT_EQ(got[i * 4 + c], -7.0f) << i;
