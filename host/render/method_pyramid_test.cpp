@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <vector>
 
 #include "support/render.h"
 
@@ -13,6 +14,14 @@ namespace {
 RenderOptions pyramidOptions(int size, int resolution, float epsilon) {
     RenderOptions opt = test::smallOptions(size, resolution);
     opt.pyramidEpsilon = epsilon;
+    return opt;
+}
+
+// For a Renderer kept across frames: 96², atlas 256², the radiosity kept.
+RenderOptions frameSequenceOptions() {
+    RenderOptions opt = pyramidOptions(96, 256, 0.05f);
+    opt.method = "pyramid";
+    opt.keepAovs = true;
     return opt;
 }
 
@@ -99,11 +108,9 @@ TEST(Pyramid, LightMoveKeepsThePlanAndGivesTheFreshFrame) {
     lit.lights[0].vec = glm::vec3(9, 8, 11);
     Scene turned = lit;
     turned.camera.eye = glm::vec3(-6, 5, 12);
-    RenderOptions opt = pyramidOptions(96, 256, 0.05f);
-    opt.method = "pyramid";
+    RenderOptions opt = frameSequenceOptions();
     opt.pyramidStride = 3;  // a grid at this size: some pixels interpolated
     opt.pyramidCache = PyramidCache::Pixels;
-    opt.keepAovs = true;
     Renderer renderer;
     EXPECT_EQ(renderer.render(a, opt).stats.number("pyramid_plan_reused"), 0);
     const FrameResult kept = renderer.render(lit, opt);
@@ -127,23 +134,25 @@ TEST(Pyramid, LightMoveKeepsThePlanAndGivesTheFreshFrame) {
 // first frame too, as close.
 TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
     const Scene a = test::torusScene("skin1", 10.0);
-    Scene turned = a, again = a, lit = a;
+    Scene turned = a, again = a;
     turned.camera.eye = glm::vec3(-6, 5, 12);
     again.camera.eye = glm::vec3(-8, 4, 11);
-    lit = again;
+    Scene lit = again;
     lit.lights[0].vec = glm::vec3(9, 8, 11);
-    RenderOptions opt = pyramidOptions(96, 256, 0.05f);
-    opt.method = "pyramid";
-    opt.keepAovs = true;
+    const RenderOptions opt = frameSequenceOptions();
+    // Each frame in turn: did it read the copy, did it make it.
+    const struct {
+        const Scene* scene;
+        double fromAtlas, made;
+    } frames[] = {{&a, 0, 0}, {&turned, 1, 1}, {&again, 1, 0}, {&lit, 0, 0}};
     Renderer renderer;
-    EXPECT_EQ(renderer.render(a, opt).stats.number("pyramid_from_atlas"), 0);
-    const FrameResult first = renderer.render(turned, opt);
-    EXPECT_EQ(first.stats.number("pyramid_from_atlas"), 1);
-    EXPECT_EQ(first.stats.number("pyramid_atlas_made"), 1);
-    const FrameResult second = renderer.render(again, opt);
-    EXPECT_EQ(second.stats.number("pyramid_from_atlas"), 1);
-    EXPECT_EQ(second.stats.number("pyramid_atlas_made"), 0);
-    EXPECT_EQ(renderer.render(lit, opt).stats.number("pyramid_from_atlas"), 0);
+    std::vector<FrameResult> results;
+    for (const auto& f : frames) {
+        results.push_back(renderer.render(*f.scene, opt));
+        EXPECT_EQ(results.back().stats.number("pyramid_from_atlas"), f.fromAtlas);
+        if (f.fromAtlas > 0) EXPECT_EQ(results.back().stats.number("pyramid_atlas_made"), f.made);
+    }
+    const FrameResult &first = results[1], &second = results[2];
     RenderOptions pixels = opt;
     pixels.pyramidCache = PyramidCache::Pixels;
     for (const auto& [scene, f] : {std::pair{&turned, &first}, std::pair{&again, &second}}) {
