@@ -152,7 +152,8 @@ TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
         EXPECT_EQ(results.back().stats.number("pyramid_from_atlas"), f.fromAtlas);
         if (f.fromAtlas > 0) EXPECT_EQ(results.back().stats.number("pyramid_atlas_made"), f.made);
     }
-    const FrameResult &first = results[1], &second = results[2];
+    const FrameResult& first = results[1];
+    const FrameResult& second = results[2];
     RenderOptions pixels = opt;
     pixels.pyramidCache = PyramidCache::Pixels;
     for (const auto& [scene, f] : {std::pair{&turned, &first}, std::pair{&again, &second}}) {
