@@ -30,10 +30,6 @@ int PyramidMethod::strideFor(double cellMm, double ell) {
     return stride;
 }
 
-int PyramidMethod::autoStride(const Camera& camera, int height, double ell) {
-    return strideFor(pixelMm(camera, height), ell);
-}
-
 void PyramidMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const auto tree = graph.create<Marker>("flux_tree");
     graph.addPass(
@@ -129,17 +125,27 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
                      : gatherAtPixels(ctx, points, pointsKey, ell, radiosity, stats);
 }
 
+PyramidMethod::Grid PyramidMethod::gridFor(double cellMm, double ell, int stride) {
+    if (stride <= 0) stride = strideFor(cellMm, ell);
+    // Corners farther than twice a frontal cell's diagonal: a grazing or broken
+    // surface, where B changes faster across the cell than the grid assumes.
+    const double cellDiagonal = std::sqrt(2.0) * stride * cellMm;
+    return {stride, static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal))};
+}
+
+double PyramidMethod::gatherTree(const cl::Buffer& points, const cl::Buffer& order, int count,
+                                 float epsilon, double ell, cl::Buffer& out) {
+    tree_.gather(points, order, count, epsilon, static_cast<float>(ell), rd_.device(cl_.context()),
+                 rd_.table().info, out);
+    return tree_.lastGatherMs();
+}
+
 double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points,
                                      uint64_t pointsKey, double ell, cl::Buffer& radiosity,
                                      FrameStats& stats) {
     const RenderOptions& o = *ctx.options;
-    const int stride =
-        o.pyramidStride > 0 ? o.pyramidStride : autoStride(ctx.scene->camera, ctx.height, ell);
-    // Corners farther than twice a frontal cell's diagonal: a grazing or broken
-    // surface, where B changes faster across the cell than the grid assumes.
-    const double cellDiagonal = std::sqrt(2.0) * stride * pixelMm(ctx.scene->camera, ctx.height);
-    const float maxCornerMm =
-        static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal));
+    const auto [stride, maxCornerMm] =
+        gridFor(pixelMm(ctx.scene->camera, ctx.height), ell, o.pyramidStride);
     // The plan follows the points (the camera's G-buffer), not the lights: a
     // frame that moves only a light keeps it, and its buffers on the device
     // (planning is ~1.3 ms of host time at 512², the device idle meanwhile).
@@ -158,11 +164,10 @@ double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoint
     }
     stats.set("pyramid_plan_reused", replan ? 0.0 : 1.0);
     const std::vector<int>& order = plan.evaluate;
-    tree_.gather(points.xyz, order_.buffer, static_cast<int>(order.size()), o.pyramidEpsilon,
-                 static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info, radiosity);
+    const double ms = gatherTree(points.xyz, order_.buffer, static_cast<int>(order.size()),
+                                 o.pyramidEpsilon, ell, radiosity);
     // The rest from the grid, in the same buffer (no trip through the host).
     interpolation_.run(radiosity);
-    const double ms = tree_.lastGatherMs();
     if (!plan.interpolate.empty()) stats.addStage("pyramid_interpolate", interpolation_.lastMs());
     stats.set("pyramid_stride", stride);
     stats.set("pyramid_evaluated_pixels", static_cast<double>(order.size()));
@@ -177,10 +182,7 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
     const RenderOptions& o = *ctx.options;
     // The grid over the atlas by the same rule as the pixels', the texel's
     // side for the pixel's.
-    const int stride = o.pyramidStride > 0 ? o.pyramidStride : strideFor(texelMm_, ell);
-    const double cellDiagonal = std::sqrt(2.0) * stride * texelMm_;
-    const float maxCornerMm =
-        static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal));
+    const auto [stride, maxCornerMm] = gridFor(texelMm_, ell, o.pyramidStride);
     // A texel more than a few texels' sides away in space is another surface
     // packed beside the point's chart.
     const auto maxMm =
@@ -197,11 +199,9 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
     const uint64_t atlasKey = Hasher(surfaceKey).add(planKey).digest();
     const bool made = atlasKey != atlasKey_;
     if (made) {
-        tree_.gather(atlas_.points(), atlas_.order(), atlas_.evaluated(), o.pyramidEpsilon,
-                     static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
-                     atlas_.values());
+        ms += gatherTree(atlas_.points(), atlas_.order(), atlas_.evaluated(), o.pyramidEpsilon, ell,
+                         atlas_.values());
         atlas_.interpolate();
-        ms += tree_.lastGatherMs();
         stats.addStage("pyramid_atlas_interpolate", atlas_.lastInterpolateMs());
         stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
         atlasKey_ = atlasKey;
@@ -210,13 +210,11 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
     stats.addStage("pyramid_atlas_lookup", atlas_.lastLookupMs());
     // The points no texel of their surface is around: gathered at their pixel.
     if (!none.empty()) {
-        cl_.queue().enqueueWriteBuffer(order_.reserve(cl_.context(), none.size() * sizeof(int)),
-                                       CL_TRUE, 0, none.size() * sizeof(int), none.data());
-        planKey_ = 0;  // order_ holds these now
-        tree_.gather(points.xyz, order_.buffer, static_cast<int>(none.size()), o.pyramidEpsilon,
-                     static_cast<float>(ell), rd_.device(cl_.context()), rd_.table().info,
-                     radiosity);
-        ms += tree_.lastGatherMs();
+        const size_t bytes = none.size() * sizeof(int);
+        cl_.queue().enqueueWriteBuffer(offAtlas_.reserve(cl_.context(), bytes), CL_TRUE, 0, bytes,
+                                       none.data());
+        ms += gatherTree(points.xyz, offAtlas_.buffer, static_cast<int>(none.size()),
+                         o.pyramidEpsilon, ell, radiosity);
     }
     stats.set("pyramid_gathered_off_atlas", static_cast<double>(none.size()));
     stats.set("pyramid_atlas_made", made ? 1.0 : 0.0);

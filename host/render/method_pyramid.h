@@ -37,9 +37,8 @@ class PyramidMethod : public Method {
     const char* name() const override { return "pyramid"; }
     void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
 
-    // The default grid stride for a camera, image height and mean free path ℓ.
-    static int autoStride(const Camera& camera, int height, double ell);
-    // The same for a cell (pixel or texel) of this side, mm.
+    // The default grid stride for a cell (pixel or texel) of this side, mm,
+    // and the mean free path ℓ.
     static int strideFor(double cellMm, double ell);
     static constexpr int kMaxAutoStride = 4;
     static constexpr double kGridSpacing = 0.25;  // grid spacing ≤ kGridSpacing·ℓ
@@ -54,6 +53,17 @@ class PyramidMethod : public Method {
                  const AtlasCl& normal, FrameStats& stats);
     double gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity,
                   FrameStats& stats);
+    // The sparse grid over cells (pixels or texels) of side cellMm: its
+    // stride (`stride`, or by ℓ when ≤ 0) and how far a cell's corners may be.
+    struct Grid {
+        int stride;
+        float maxCornerMm;
+    };
+    static Grid gridFor(double cellMm, double ell, int stride);
+    // B at the `count` points order[] names (FluxTree::gather with this
+    // frame's table), to out; its device ms.
+    double gatherTree(const cl::Buffer& points, const cl::Buffer& order, int count, float epsilon,
+                      double ell, cl::Buffer& out);
     double gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points, uint64_t pointsKey,
                           double ell, cl::Buffer& radiosity, FrameStats& stats);
     double gatherFromAtlas(const FrameContext& ctx, const SurfacePoints& points,
@@ -84,6 +94,7 @@ class PyramidMethod : public Method {
     std::vector<float> atlasPositions_;
     double texelMm_ = 0;
     uint64_t atlasKey_ = 0;
+    GrowingBuffer offAtlas_;  // the points the copy has no texel for, to gather
 };
 
 }  // namespace tsis

@@ -64,7 +64,7 @@ void RasterPasses::setGlWorker(GlWorker* worker) {
 uint64_t RasterPasses::samplesKey(const FrameContext& ctx) const {
     Hasher key;
     key.add(meshHash_).add(ctx.width).add(ctx.height).add(ctx.options->aa);
-    for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
+    key.add(ctx.viewProj);
     return key.digest();
 }
 
@@ -241,7 +241,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                                      (graph.isRead(ctx.pointUvs) ? GBufferPass::kUv : 0u);
             Hasher key;
             key.add(meshHash_).add(ctx.width).add(ctx.height).add(outputs).add(ctx.albedo->key);
-            for (int i = 0; i < 16; ++i) key.add(ctx.viewProj[i / 4][i % 4]);
+            key.add(ctx.viewProj);
             if (irradiance) key.add(lighting).add(eta);
             // The composite's samples' G-buffer, when it is to be drawn too,
             // on the worker's thread meanwhile (gl_composite_samples waits).
