@@ -5,6 +5,7 @@
 #include "gl/gl_context.h"
 #include "mesh/draw_order.h"
 #include "mesh/media.h"
+#include "mesh/uv_texels.h"
 #include "mesh/weld.h"
 #include "util/error.h"
 
@@ -57,13 +58,8 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     glGenBuffers(1, &ratioVbo_);
     glBindBuffer(GL_ARRAY_BUFFER, ratioVbo_);
     floatAttribute(3, 1, sizeof(float), 0);  // area ratio
-    std::vector<float> ratios(mesh.triangles.size());
-    for (size_t t = 0; t < ratios.size(); ++t) {
-        const double uvArea = mesh.triangleUVArea(t);
-        // A triangle without UV area holds no texel; its ratio is never read.
-        ratios[t] = uvArea > 0 ? static_cast<float>(mesh.triangleArea(t) / uvArea) : 0.0f;
-    }
-    setAreaRatios(ratios);
+    const std::vector<double> ratios = areaRatios(mesh);
+    setAreaRatios(std::vector<float>(ratios.begin(), ratios.end()));
     glBindVertexArray(0);
 
     constexpr int kIndexedStride = 9;

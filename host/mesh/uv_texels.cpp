@@ -50,16 +50,20 @@ UnionFind uvCharts(const Mesh& mesh) {
     return sets;
 }
 
-std::vector<float> texelAreaRatios(const Mesh& mesh, int resolution) {
-    TSIS_CHECK_GT(resolution, 0);
+std::vector<double> areaRatios(const Mesh& mesh) {
     TSIS_CHECK(mesh.hasUVs());
-    const size_t n = mesh.triangles.size();
-    std::vector<double> ratio(n, 0);
-    for (size_t t = 0; t < n; ++t) {
+    std::vector<double> ratio(mesh.triangles.size(), 0);
+    for (size_t t = 0; t < ratio.size(); ++t) {
         const double uvArea = mesh.triangleUVArea(t);
-        // A triangle without UV area holds no texel; its ratio is never read.
         if (uvArea > 0) ratio[t] = mesh.triangleArea(t) / uvArea;
     }
+    return ratio;
+}
+
+std::vector<float> texelAreaRatios(const Mesh& mesh, int resolution) {
+    TSIS_CHECK_GT(resolution, 0);
+    const size_t n = mesh.triangles.size();
+    const std::vector<double> ratio = areaRatios(mesh);
     // Per chart: its surface area and the area its texels stand for.
     UnionFind charts = uvCharts(mesh);
     struct Sums {

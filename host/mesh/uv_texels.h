@@ -21,6 +21,10 @@ void rasterUVTriangles(const Mesh& mesh, int resolution,
 // chart's id is its root, the smallest vertex index in it).
 UnionFind uvCharts(const Mesh& mesh);
 
+// Per triangle, A3D/AUV: its surface area over its UV area (0 for a triangle
+// without UV area, which holds no texel).
+std::vector<double> areaRatios(const Mesh& mesh);
+
 // Per triangle, the surface area of one texel over its UV area (mm² per unit
 // UV area), so that the texels a chart holds at `resolution` sum to the
 // chart's surface area. Texel centres sample a chart's border: alone

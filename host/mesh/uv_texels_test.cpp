@@ -45,9 +45,8 @@ void chartSums(const Mesh& m, int res, const std::vector<float>& ratios,
 TEST(UvTexels, EachChartsTexelsSumToItsSurfaceArea) {
     constexpr int kRes = 256;
     const Mesh m = squares(40, kRes, 3);
-    std::vector<float> plain(m.triangles.size());
-    for (size_t t = 0; t < plain.size(); ++t)
-        plain[t] = float(m.triangleArea(t) / m.triangleUVArea(t));
+    const std::vector<double> ratios = areaRatios(m);
+    const std::vector<float> plain(ratios.begin(), ratios.end());
     std::vector<double> surface, texels;
     // Alone, A3D/AUV misses or adds part of a texel along each border: on
     // charts a few texels across, tens of per cent.
