@@ -243,7 +243,7 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
 
 CompositePass::CompositePass()
     : centrePrograms_("fullscreen.vert", "radiance.frag",
-                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES"}),
+                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES", "TSIS_DISPLAY"}),
       samplePrograms_("fullscreen.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
                       "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
@@ -270,9 +270,9 @@ CompositePass::~CompositePass() {
 // (r), and the uncovered ones with a covered pixel (g) in their 3×3
 // neighbourhood — the same test the centre pass makes, on the host, instead
 // of a full-screen pass over the uncovered pixels.
-void CompositePass::updateEdgePoints(uint64_t key) {
-    const int w = centreTarget_->width(), h = centreTarget_->height();
-    const std::vector<unsigned char> marks = centreTarget_->readRGBA8(1);
+void CompositePass::updateEdgePoints(uint64_t key, const RenderTarget& target, int index) {
+    const int w = target.width(), h = target.height();
+    const std::vector<unsigned char> marks = target.readRGBA8(index);
     auto at = [&](int x, int y, int c) {
         return marks[(size_t(y) * size_t(w) + size_t(x)) * 4 + size_t(c)] != 0;
     };
@@ -313,7 +313,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
                              uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                              const glm::vec3& eye, const MaterialTables& materials, float alpha,
-                             const EnvReflectionTextures& env) {
+                             const EnvReflectionTextures& env, std::optional<float> displayScale) {
     const int w = frameGbuffer.width(), h = frameGbuffer.height();
     TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
     TSIS_CHECK_EQ(sampleGbuffer.height(), h * aa);
@@ -330,15 +330,24 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     const bool findEdges = aa > 1 && (!edgePixels_ || edgesKey != edgesKey_);
     // Only the covered pixels shaded (the G-buffer's depth, < 1 there), and
     // only they read: the radiance is not cleared, the marks only when read.
-    ensureTarget(centreTarget_, w, h, {GL_RGBA32F, GL_RGBA8}, true);
-    centreTarget_->bind();
-    copyDepth(frameGbuffer, *centreTarget_);
+    // Straight to the display, the centres write its colour and log
+    // luminance (the tone map's pass over a frame of radiance saved).
+    const bool direct = displayScale.has_value();
+    std::unique_ptr<RenderTarget>& target = direct ? directTarget_ : centreTarget_;
+    const int marks = direct ? 2 : 1;
+    ensureTarget(target, w, h,
+                 direct ? std::vector<GLenum>{GL_RGBA8, GL_RGBA32F, GL_RGBA8}
+                        : std::vector<GLenum>{GL_RGBA32F, GL_RGBA8},
+                 true);
+    target->bind();
+    copyDepth(frameGbuffer, *target);
     if (findEdges) {
         const float zero[4] = {0, 0, 0, 0};
-        glClearBufferfv(GL_COLOR, 1, zero);
+        glClearBufferfv(GL_COLOR, marks, zero);
     }
     const unsigned features = (alpha > 0 ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
-    const ShaderProgram& centre = centrePrograms_.get(features | (findEdges ? 4u : 0u));
+    const ShaderProgram& centre =
+        centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
     const ShaderProgram& samples = samplePrograms_.get(features);
     for (const ShaderProgram* p : {&centre, &samples}) {
         p->use();
@@ -351,14 +360,19 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
         bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
+    if (direct) setToneMapScale(*displayScale, h);
     centre.use();
+    if (direct) {
+        centre.set("u_scale", *displayScale);
+        centre.set("u_frameHeight", static_cast<float>(h));
+    }
     bindTexture(centre, "u_radiosity", 0, radiosity_->id());
     bindTexture(centre, "u_framePosition", 1, frameGbuffer.color(0));
     bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
     drawFullScreenWhere(GL_GREATER);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
-        if (findEdges) updateEdgePoints(edgesKey);
+        if (findEdges) updateEdgePoints(edgesKey, *target, marks);
         // The marked pixels' samples, packed: edge e's aa × aa block at its
         // slot in edgePixels_ (llvmpipe shades full 4×4 blocks, where a
         // point per pixel filled a quarter of each).
@@ -381,7 +395,49 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
             glBindSampler(5, 0);
         }
     }
+    if (direct) {
+        // The background and the supersampled pixels into the display and
+        // the log luminance, the marks left as they are.
+        target->bind();
+        const GLenum drawn[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE};
+        glDrawBuffers(3, drawn);
+        drawAroundCentres(*target, &backgroundProgram_, toneMapEdgesProgram_, directBackgroundKey_);
+        const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glDrawBuffers(3, all);
+        logLuminance_ = display_ = target.get();
+    }
     checkGl("CompositePass::radiance");
+}
+
+void CompositePass::setToneMapScale(float scale, int height) {
+    for (const ShaderProgram* p : {&toneMapProgram_, &toneMapEdgesProgram_, &backgroundProgram_}) {
+        p->use();
+        if (p != &backgroundProgram_) p->set("u_scale", scale);
+        p->set("u_frameHeight", static_cast<float>(height));
+    }
+}
+
+void CompositePass::drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
+                                      const ShaderProgram& edges, uint64_t& backgroundKey) {
+    const int w = target.width(), h = target.height();
+    glBindVertexArray(emptyVao_);
+    // The background stays from the frame before while the coverage and the
+    // supersampled pixels do (the edge points below draw over them again).
+    if (background && coverageKey_ != backgroundKey) {
+        background->use();
+        drawFullScreenWhere(GL_EQUAL);
+        backgroundKey = coverageKey_;
+    }
+    // At 1× no pixel is marked and the samples are never read.
+    if (aa_ > 1 && edgeCount_ > 0) {
+        edges.use();
+        edges.set("u_aa", aa_);
+        edges.set("u_frameSize", glm::vec2(w, h));
+        bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
+        bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
+        glBindVertexArray(emptyVao_);
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
+    }
 }
 
 void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
@@ -399,25 +455,7 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
     bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);
     drawFullScreenWhere(GL_GREATER);
-    // The background stays from the frame before while the coverage and the
-    // supersampled pixels do (the edge points below draw over them again).
-    if (background && coverageKey_ != backgroundKey_) {
-        background->use();
-        bindTexture(*background, "u_centre", 0, centreTarget_->color(0));
-        drawFullScreenWhere(GL_EQUAL);
-        backgroundKey_ = coverageKey_;
-    }
-    // At 1× no pixel is marked and the samples are never read.
-    if (aa_ > 1 && edgeCount_ > 0) {
-        edges.use();
-        edges.set("u_aa", aa_);
-        edges.set("u_frameSize", glm::vec2(w, h));
-        bindTexture(edges, "u_centre", 0, centreTarget_->color(0));
-        bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
-        bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
-        glBindVertexArray(emptyVao_);
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
-    }
+    drawAroundCentres(*target, background, edges, backgroundKey_);
     logLuminance_ = target.get();
 }
 
@@ -433,28 +471,36 @@ std::vector<float> CompositePass::frameRadiance() const {
 }
 
 void CompositePass::toneMap(float scale) {
-    for (const ShaderProgram* p : {&toneMapProgram_, &toneMapEdgesProgram_}) {
-        p->use();
-        p->set("u_scale", scale);
-    }
+    setToneMapScale(scale, centreTarget_->height());
     resolveInto(toneMapProgram_, &backgroundProgram_, toneMapEdgesProgram_, colorTarget_,
                 {GL_RGBA8, GL_RGBA32F});
+    display_ = colorTarget_.get();
     checkGl("CompositePass::toneMap");
 }
 
 float CompositePass::logAverageLuminance() {
     TSIS_CHECK(logLuminance_ != nullptr);
-    // Blocks of 16² pixels: a 512² frame leaves 32² sums (16 KiB) to read.
-    constexpr int kBlock = 16;
-    const int w = logLuminance_->width(), h = logLuminance_->height();
-    ensureTarget(sumTarget_, (w + kBlock - 1) / kBlock, (h + kBlock - 1) / kBlock, {GL_RGBA32F},
-                 false);
-    sumTarget_->bindAndClear();
+    // Blocks of 4² a pass until at most 64² sums are left (16 KiB at 512²):
+    // llvmpipe shades a target's 64² tiles in parallel, so one pass into a
+    // single tile of 16² blocks ran on one thread (1.3 ms at 512², 0.6 in
+    // two passes).
+    constexpr int kBlock = 4, kMostLeft = 64;
+    int w = logLuminance_->width(), h = logLuminance_->height();
+    GLuint from = logLuminance_->color(1);
     reduceProgram_.use();
     reduceProgram_.set("u_block", kBlock);
-    bindTexture(reduceProgram_, "u_logLuminance", 0, logLuminance_->color(1));
     glBindVertexArray(emptyVao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    for (size_t level = 0; level == 0 || std::max(w, h) > kMostLeft; ++level) {
+        w = (w + kBlock - 1) / kBlock;
+        h = (h + kBlock - 1) / kBlock;
+        if (sumTargets_.size() <= level) sumTargets_.emplace_back();
+        ensureTarget(sumTargets_[level], w, h, {GL_RGBA32F}, false);
+        sumTargets_[level]->bind();
+        bindTexture(reduceProgram_, "u_logLuminance", 0, from);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        from = sumTargets_[level]->color(0);
+        sumTarget_ = sumTargets_[level].get();
+    }
     checkGl("CompositePass::logAverageLuminance");
     const std::vector<float> sums = sumTarget_->readRGBA(0);
     double sum = 0, count = 0;

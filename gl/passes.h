@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gl/gl_worker.h"
@@ -177,12 +178,15 @@ class CompositePass {
     // `env`: the environment's reflection. `gbufferVersion`: changes when the
     // frame's G-buffer (and so the pixels to supersample) does. Then
     // toneMap(), or resolve() first where the log-average or the radiance is
-    // needed before it.
+    // needed before it. With `displayScale` (toneMap's), the display image
+    // straight from the centres and the samples instead, no frame of
+    // radiance between: colorTarget() and logAverageLuminance() follow.
     void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
                   uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
                   const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                   const glm::vec3& eye, const MaterialTables& materials, float alpha,
-                  const EnvReflectionTextures& env = {});
+                  const EnvReflectionTextures& env = {},
+                  std::optional<float> displayScale = std::nullopt);
     // The frame's radiance (frameRadiance()) and log luminance, without the
     // display image.
     void resolve();
@@ -196,7 +200,7 @@ class CompositePass {
     // alpha > 0, of the last resolve() or toneMap(); 1 when none is covered.
     // Summed in blocks on the GPU, the blocks' sums on the host.
     float logAverageLuminance();
-    const RenderTarget& colorTarget() const { return *colorTarget_; }
+    const RenderTarget& colorTarget() const { return *display_; }
 
   private:
     // resolve.frag into `target` (its attachment 1: the log luminance).
@@ -205,6 +209,12 @@ class CompositePass {
     void resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
                      const ShaderProgram& edges, std::unique_ptr<RenderTarget>& target,
                      std::vector<GLenum> formats);
+    // The part after the centres, into the bound target: the background,
+    // drawn again only when the coverage changed since `backgroundKey`, and
+    // the supersampled pixels' averages.
+    void drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
+                           const ShaderProgram& edges, uint64_t& backgroundKey);
+    void setToneMapScale(float scale, int height);
 
     // radiance.frag's: with the lobe, the environment's reflection, (the
     // centres) marking the pixels to supersample
@@ -213,10 +223,16 @@ class CompositePass {
         backgroundProgram_, reduceProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
-    // depth the frame G-buffer's, so that only covered pixels are shaded
-    std::unique_ptr<RenderTarget> centreTarget_, sampleTarget_, frameTarget_, colorTarget_,
-        sumTarget_;
+    // depth the frame G-buffer's, so that only covered pixels are shaded.
+    // direct: the display colour, the log luminance and the mask, of
+    // radiance() with a display scale.
+    std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
+        colorTarget_;
+    // The log-average's sums, a level each pass; the last one's read.
+    std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
+    const RenderTarget* sumTarget_ = nullptr;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
+    const RenderTarget* display_ = nullptr;       // the last display image's
     int aa_ = 1;
     GLuint emptyVao_ = 0, depthSampler_ = 0;
     // The supersampled pixels, (x, y) in a texture of slots (the samples'
@@ -228,8 +244,9 @@ class CompositePass {
     uint64_t edgesKey_ = 0;
     // The G-buffer's coverage and supersampled pixels this frame (edgesKey_'s
     // key), and those the tone map's background was drawn for.
-    uint64_t coverageKey_ = 0, backgroundKey_ = 0;
-    void updateEdgePoints(uint64_t key);
+    uint64_t coverageKey_ = 0, backgroundKey_ = 0, directBackgroundKey_ = 0;
+    // The marks to list: `target`'s attachment `index`.
+    void updateEdgePoints(uint64_t key, const RenderTarget& target, int index);
 };
 
 }  // namespace tsis

@@ -150,3 +150,25 @@ vec3 specularRadiance(vec3 p, vec3 n, vec3 v, float alpha, float eta) {
     }
     return s;
 }
+
+// The display (resolve.frag, radiance.frag's straight-to-display centres):
+// radiance l exposed, Ls = scale · l, through Reinhard's curve Ls/(1 + Ls)
+// where l shows the object (alpha > 0), else the background's colour.
+vec3 exposed(vec4 l, float scale, vec3 background) {
+    vec3 ls = scale * l.rgb;
+    return l.a > 0.0 ? ls / (1.0 + ls) : background;
+}
+
+vec3 srgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+
+// The background: a dark vertical gradient over the frame's height.
+vec3 backgroundAt(float y, float height) { return vec3(mix(0.004, 0.03, y / height)); }
+
+// The log-average's term of radiance l, (log(1e-12 + Y), 1) where l shows the
+// object, else 0 (reduce.frag sums it).
+vec4 logLuminance(vec4 l) {
+    return l.a > 0.0 ? vec4(log(1e-12 + max(0.0, dot(LUMA, l.rgb))), 1.0, 0.0, 0.0) : vec4(0.0);
+}

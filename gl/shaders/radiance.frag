@@ -13,7 +13,9 @@
 // stands for the pixel), packed: a full-screen pass over a target of one
 // u_aa × u_aa block per marked pixel, in the order of u_edgePixels. Features (0 or 1, gl/shader.h
 // ShaderVariants): TSIS_SPECULAR the lobe, TSIS_ENV_REFLECT the
-// environment's reflection with it.
+// environment's reflection with it; the centres' TSIS_DISPLAY writes the
+// display colour and the log-average's term instead of the radiance, when
+// the exposure is known before the frame (no radiance image is needed then).
 uniform sampler2D u_radiosity;      // B at the frame's pixels
 uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = coverage)
 uniform sampler2D u_normal;         // the shaded G-buffer's normals
@@ -107,7 +109,16 @@ void main() {
     o_radiance = covered ? vec4(shade(p, px, radiosityAt(px, p)), 1.0) : vec4(0.0);
 }
 #else
+#if TSIS_DISPLAY
+// Straight to the display: o_radiance the display colour (resolve.frag's
+// tone map of this one sample), and the log-average's term.
+uniform float u_scale;
+uniform float u_frameHeight;
+layout(location = 1) out vec4 o_logLuminance;
+layout(location = 2) out vec4 o_edge;
+#else
 layout(location = 1) out vec4 o_edge;
+#endif
 
 // A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
 // depth jump passes through it or beside it.
@@ -126,7 +137,13 @@ void main() {
     vec4 p = texelFetch(u_framePosition, px, 0);
     // r: supersample; g: covered (the depth test lets only covered pixels here).
     o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
-    o_radiance = p.w == 0.0 ? vec4(0.0)
-                            : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
+    vec4 l = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
+#if TSIS_DISPLAY
+    vec3 background = backgroundAt(gl_FragCoord.y, u_frameHeight);
+    o_radiance = vec4(srgb(exposed(l, u_scale, background)), 1.0);
+    o_logLuminance = logLuminance(l);
+#else
+    o_radiance = l;
+#endif
 }
 #endif

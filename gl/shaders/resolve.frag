@@ -30,40 +30,26 @@ layout(location = 1) out vec4 o_logLuminance;
 
 #ifdef TSIS_TONE_MAP
 uniform float u_scale;
-
-vec3 srgb(vec3 c) {
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
-}
-
-// Background: a dark vertical gradient.
-vec3 backgroundAt(float y) {
-    return vec3(mix(0.004, 0.03, y / float(textureSize(u_centre, 0).y)));
-}
-
-vec3 exposed(vec4 l, vec3 background) {
-    vec3 ls = u_scale * l.rgb;
-    return l.a > 0.0 ? ls / (1.0 + ls) : background;
-}
+uniform float u_frameHeight;
 #endif
 
 #ifdef TSIS_BACKGROUND
 void main() {
-    o_color = vec4(srgb(backgroundAt(gl_FragCoord.y)), 1.0);
+    o_color = vec4(srgb(backgroundAt(gl_FragCoord.y, u_frameHeight)), 1.0);
     o_logLuminance = vec4(0.0);
 }
 #else
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
 #ifdef TSIS_TONE_MAP
-    vec3 background = backgroundAt(gl_FragCoord.y);
+    vec3 background = backgroundAt(gl_FragCoord.y, u_frameHeight);
     vec3 display = vec3(0.0);
 #endif
     vec4 radiance;
 #ifndef TSIS_RESOLVE_EDGES
     radiance = texelFetch(u_centre, px, 0);
 #ifdef TSIS_TONE_MAP
-    display = exposed(radiance, background);
+    display = exposed(radiance, u_scale, background);
 #endif
 #else
     {
@@ -75,7 +61,7 @@ void main() {
                 sum += l.rgb * l.a;
                 covered += l.a;
 #ifdef TSIS_TONE_MAP
-                display += exposed(l, background);
+                display += exposed(l, u_scale, background);
 #endif
             }
         radiance =
@@ -85,9 +71,7 @@ void main() {
 #endif
     }
 #endif
-    o_logLuminance = radiance.a > 0.0
-                         ? vec4(log(1e-12 + max(0.0, dot(LUMA, radiance.rgb))), 1.0, 0.0, 0.0)
-                         : vec4(0.0);
+    o_logLuminance = logLuminance(radiance);
 #ifdef TSIS_TONE_MAP
     o_color = vec4(srgb(display), 1.0);
 #else

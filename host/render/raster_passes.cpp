@@ -384,18 +384,24 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             FrameImage& out = res.write(image);
             const float alpha = o.specular ? static_cast<float>(ggxAlpha(o.roughness)) : 0.0f;
             const GlTarget& gbuffer = res.read(gl.gbuffer);
+            // The frame's radiance as floats only for the AOVs; the
+            // log-average from the GPU's sums, before the tone curve only
+            // where it sets the exposure. Else the display straight from
+            // the radiance pass.
+            const bool direct = !o.keepAovs && !o.autoExposure;
+            if (direct) out.exposureScale = exposureScale(o, out.lavg);
             compositePass_.radiance(res.read(radiosity).rgba.data(), *gbuffer.target,
                                     gbuffer.version, *res.read(gl.samples).target, o.aa,
                                     *lights.views, *lights.shadows, ctx.eye, materials_, alpha,
-                                    environmentReflection(ctx, res.stats()));
-            // The frame's radiance as floats only for the AOVs; the
-            // log-average from the GPU's sums, before the tone curve only
-            // where it sets the exposure.
-            if (o.keepAovs || o.autoExposure) compositePass_.resolve();
-            if (o.keepAovs) out.radiance = compositePass_.frameRadiance();
-            if (o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
-            out.exposureScale = exposureScale(o, out.lavg);
-            compositePass_.toneMap(out.exposureScale);
+                                    environmentReflection(ctx, res.stats()),
+                                    direct ? std::optional(out.exposureScale) : std::nullopt);
+            if (!direct) {
+                compositePass_.resolve();
+                if (o.keepAovs) out.radiance = compositePass_.frameRadiance();
+                if (o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
+                out.exposureScale = exposureScale(o, out.lavg);
+                compositePass_.toneMap(out.exposureScale);
+            }
             if (!o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
             out.rgb8 =
                 fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
