@@ -14,12 +14,15 @@ namespace tsis {
 #define TSIS_GL_FUNCTIONS(X)                            \
     X(ActiveTexture, ACTIVETEXTURE)                     \
     X(AttachShader, ATTACHSHADER)                       \
+    X(BeginQuery, BEGINQUERY)                           \
     X(BindBuffer, BINDBUFFER)                           \
+    X(BindBufferBase, BINDBUFFERBASE)                   \
     X(BindFramebuffer, BINDFRAMEBUFFER)                 \
     X(BindSampler, BINDSAMPLER)                         \
     X(BindTexture, BINDTEXTURE)                         \
     X(BindVertexArray, BINDVERTEXARRAY)                 \
     X(BufferData, BUFFERDATA)                           \
+    X(BufferSubData, BUFFERSUBDATA)                     \
     X(CheckFramebufferStatus, CHECKFRAMEBUFFERSTATUS)   \
     X(Clear, CLEAR)                                     \
     X(ClearBufferfv, CLEARBUFFERFV)                     \
@@ -31,6 +34,7 @@ namespace tsis {
     X(DeleteBuffers, DELETEBUFFERS)                     \
     X(DeleteFramebuffers, DELETEFRAMEBUFFERS)           \
     X(DeleteProgram, DELETEPROGRAM)                     \
+    X(DeleteQueries, DELETEQUERIES)                     \
     X(DeleteSamplers, DELETESAMPLERS)                   \
     X(DeleteShader, DELETESHADER)                       \
     X(DeleteTextures, DELETETEXTURES)                   \
@@ -44,19 +48,23 @@ namespace tsis {
     X(DrawBuffers, DRAWBUFFERS)                         \
     X(DrawElements, DRAWELEMENTS)                       \
     X(Enable, ENABLE)                                   \
+    X(EndQuery, ENDQUERY)                               \
     X(EnableVertexAttribArray, ENABLEVERTEXATTRIBARRAY) \
     X(Finish, FINISH)                                   \
     X(FramebufferTexture2D, FRAMEBUFFERTEXTURE2D)       \
     X(FramebufferTextureLayer, FRAMEBUFFERTEXTURELAYER) \
     X(GenBuffers, GENBUFFERS)                           \
     X(GenFramebuffers, GENFRAMEBUFFERS)                 \
+    X(GenQueries, GENQUERIES)                           \
     X(GenSamplers, GENSAMPLERS)                         \
     X(GenTextures, GENTEXTURES)                         \
     X(GenVertexArrays, GENVERTEXARRAYS)                 \
+    X(GetBufferSubData, GETBUFFERSUBDATA)               \
     X(GetError, GETERROR)                               \
     X(GetIntegerv, GETINTEGERV)                         \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)             \
     X(GetProgramiv, GETPROGRAMIV)                       \
+    X(GetQueryObjectuiv, GETQUERYOBJECTUIV)             \
     X(GetShaderInfoLog, GETSHADERINFOLOG)               \
     X(GetShaderiv, GETSHADERIV)                         \
     X(GetString, GETSTRING)                             \
@@ -78,6 +86,7 @@ namespace tsis {
     X(TexStorage2D, TEXSTORAGE2D)                       \
     X(TexStorage3D, TEXSTORAGE3D)                       \
     X(TexSubImage2D, TEXSUBIMAGE2D)                     \
+    X(TextureBarrier, TEXTUREBARRIER)                   \
     X(UseProgram, USEPROGRAM)                           \
     X(VertexAttribPointer, VERTEXATTRIBPOINTER)         \
     X(Viewport, VIEWPORT)

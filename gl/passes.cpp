@@ -309,7 +309,8 @@ void CompositePass::updateEdgePoints(uint64_t key, const RenderTarget& target, i
     edgePixels_->upload(slots.data());
 }
 
-void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture,
+                             const RenderTarget& frameGbuffer,
                              uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                              const glm::vec3& eye, const MaterialTables& materials, float alpha,
@@ -318,9 +319,12 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
     TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
     TSIS_CHECK_EQ(sampleGbuffer.height(), h * aa);
     aa_ = aa;
-    if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
-        radiosity_ = std::make_unique<FloatTexture>(w, h);
-    radiosity_->upload(radiosityRGBA);
+    if (radiosityRGBA) {
+        if (!radiosity_ || radiosity_->width() != w || radiosity_->height() != h)
+            radiosity_ = std::make_unique<FloatTexture>(w, h);
+        radiosity_->upload(radiosityRGBA);
+        radiosityTexture = radiosity_->id();
+    }
     glBindVertexArray(emptyVao_);
     // The pixels' centres, and which pixels to supersample.
     // The pixels to supersample follow the G-buffer (the camera), not the
@@ -366,7 +370,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
         centre.set("u_scale", *displayScale);
         centre.set("u_frameHeight", static_cast<float>(h));
     }
-    bindTexture(centre, "u_radiosity", 0, radiosity_->id());
+    bindTexture(centre, "u_radiosity", 0, radiosityTexture);
     bindTexture(centre, "u_framePosition", 1, frameGbuffer.color(0));
     bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
     drawFullScreenWhere(GL_GREATER);
@@ -382,7 +386,7 @@ void CompositePass::radiance(const float* radiosityRGBA, const RenderTarget& fra
             sampleTarget_->bind();
             samples.use();
             samples.set("u_aa", aa);
-            bindTexture(samples, "u_radiosity", 0, radiosity_->id());
+            bindTexture(samples, "u_radiosity", 0, radiosityTexture);
             bindTexture(samples, "u_framePosition", 1, frameGbuffer.color(0));
             bindTexture(samples, "u_normal", 2, sampleGbuffer.color(1));
             bindTexture(samples, "u_position", 3, sampleGbuffer.color(0));
@@ -509,6 +513,80 @@ float CompositePass::logAverageLuminance() {
         count += sums[i + 1];
     }
     return count > 0 ? static_cast<float>(std::exp(sum / count)) : 1.0f;
+}
+
+
+RadiosityLookupPass::RadiosityLookupPass()
+    : lookup_("fullscreen.vert", "radiosity_lookup.frag"),
+      fill_("fullscreen.vert", "radiosity_lookup.frag", "#define TSIS_FILL 1\n") {
+    glGenVertexArrays(1, &emptyVao_);
+    glGenBuffers(1, &counter_);
+    glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, counter_);
+    glBufferData(GL_ATOMIC_COUNTER_BUFFER, sizeof(GLuint), nullptr, GL_DYNAMIC_READ);
+    glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
+    glGenQueries(1, &query_);
+}
+
+RadiosityLookupPass::~RadiosityLookupPass() {
+    if (query_) glDeleteQueries(1, &query_);
+    if (counter_) glDeleteBuffers(1, &counter_);
+    if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void RadiosityLookupPass::setAtlas(const float* positions, uint64_t positionsKey,
+                                   const float* radiosity, uint64_t radiosityKey, int resolution) {
+    auto update = [&](std::unique_ptr<FloatTexture>& t, uint64_t& key, const float* data,
+                      uint64_t newKey) {
+        if (t && t->width() == resolution && key == newKey) return;
+        if (!t || t->width() != resolution)
+            t = std::make_unique<FloatTexture>(resolution, resolution);
+        t->upload(data);
+        key = newKey;
+    };
+    update(xyz_, xyzKey_, positions, positionsKey);
+    update(b_, bKey_, radiosity, radiosityKey);
+}
+
+RadiosityLookupPass::Counts RadiosityLookupPass::run(const RenderTarget& frameGbuffer,
+                                                     int uvAttachment, float maxMm) {
+    TSIS_CHECK(xyz_ != nullptr && b_ != nullptr);
+    ensureTarget(target_, frameGbuffer.width(), frameGbuffer.height(), {GL_RGBA32F}, true);
+    target_->bind();
+    copyDepth(frameGbuffer, *target_);
+    const GLuint zero = 0;
+    glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, counter_);
+    glBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof zero, &zero);
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_);
+    glBindVertexArray(emptyVao_);
+    for (const ShaderProgram* p : {&lookup_, &fill_}) {
+        p->use();
+        bindTexture(*p, "u_position", 0, frameGbuffer.color(0));
+        bindTexture(*p, "u_uv", 1, frameGbuffer.color(uvAttachment));
+        bindTexture(*p, "u_atlasXyz", 2, xyz_->id());
+        bindTexture(*p, "u_atlasB", 3, b_->id());
+        p->set("u_maxMm2", maxMm * maxMm);
+    }
+    lookup_.use();
+    glBeginQuery(GL_SAMPLES_PASSED, query_);
+    drawFullScreenWhere(GL_GREATER);
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint offAtlas = 0, covered = 0;
+    glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &covered);
+    glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof offAtlas, &offAtlas);
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, 0);
+    glBindBuffer(GL_ATOMIC_COUNTER_BUFFER, 0);
+    // The few pixels with no texel of their surface around, from their
+    // neighbours: the pass reads the lookup's output it draws into, made
+    // visible by the barrier (and never a texel it writes: the shader's rule).
+    if (offAtlas > 0) {
+        glTextureBarrier();
+        fill_.use();
+        bindTexture(fill_, "u_b", 4, target_->color(0));
+        drawFullScreenWhere(GL_GREATER);
+        bindTexture(fill_, "u_b", 4, 0);
+    }
+    checkGl("RadiosityLookupPass");
+    return {static_cast<int>(covered), static_cast<int>(offAtlas)};
 }
 
 }  // namespace tsis

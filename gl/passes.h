@@ -148,6 +148,39 @@ class GBufferPass {
     WorkerSide side_{"mesh.vert", "gbuffer.frag", kVariants};
 };
 
+// B at the frame's pixels from a method's copy of B over the atlas
+// (shaders/radiosity_lookup.frag; docs/design.md §6), on the GL side: a
+// frame that only moved the camera needs no points on the CL side, no B
+// read back and none uploaded again for the composite.
+class RadiosityLookupPass {
+  public:
+    RadiosityLookupPass();
+    ~RadiosityLookupPass();
+    RadiosityLookupPass(const RadiosityLookupPass&) = delete;
+    RadiosityLookupPass& operator=(const RadiosityLookupPass&) = delete;
+    // The copy: res² float4 texel positions (with the ring; w = medium tag,
+    // 0 for none) and their B, GL order, each uploaded again only when its
+    // key changed.
+    void setAtlas(const float* positions, uint64_t positionsKey, const float* radiosity,
+                  uint64_t radiosityKey, int resolution);
+    // B at the covered pixels of `frameGbuffer` (by its depth; positions in
+    // attachment 0, atlas coordinates in `uvAttachment`) from the texels
+    // within maxMm of each. Then texture(): RGBA float, GL order.
+    struct Counts {
+        int covered = 0;
+        int offAtlas = 0;  // pixels with no texel: they take their nearest neighbour's
+    };
+    Counts run(const RenderTarget& frameGbuffer, int uvAttachment, float maxMm);
+    GLuint texture() const { return target_->color(0); }
+
+  private:
+    ShaderProgram lookup_, fill_;
+    std::unique_ptr<FloatTexture> xyz_, b_;
+    uint64_t xyzKey_ = 0, bKey_ = 0;
+    std::unique_ptr<RenderTarget> target_;
+    GLuint counter_ = 0, query_ = 0, emptyVao_ = 0;
+};
+
 // The environment's reflection for the composite (render/env_reflection.h):
 // the prefiltered residual (lat-long, map frame; 0: none) and the albedo table
 // per medium, the rotation world → map and the map's intensity.
@@ -181,7 +214,10 @@ class CompositePass {
     // needed before it. With `displayScale` (toneMap's), the display image
     // straight from the centres and the samples instead, no frame of
     // radiance between: colorTarget() and logAverageLuminance() follow.
-    void radiance(const float* radiosityRGBA, const RenderTarget& frameGbuffer,
+    // `radiosity`: B as host RGBA floats (uploaded), or a texture of it
+    // (RadiosityLookupPass) where the host pointer is null.
+    void radiance(const float* radiosityRGBA, GLuint radiosityTexture,
+                  const RenderTarget& frameGbuffer,
                   uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
                   const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                   const glm::vec3& eye, const MaterialTables& materials, float alpha,

@@ -70,9 +70,26 @@ struct LightMapsCl {
 };
 
 // Radiosity B of every covered pixel, on the host: width*height RGBA, GL row
-// order, a = 1 where covered.
+// order, a = 1 where covered; or where `texture` is set, a GL texture of the
+// same (the composite's lookup over the atlas, gl/radiosity_lookup.h) and
+// rgba empty.
 struct RadiosityImage {
     std::vector<float> rgba;
+    unsigned texture = 0;
+    int covered = 0;  // with `texture`, the covered pixels it holds B of
+};
+
+// A method's copy of B over the atlas on the host, for the composite to read
+// B at the pixels from (render/radiosity_atlas.h): the texels' positions
+// with their ring (w = medium tag, 0 for none) and B, res² float4 each, GL
+// order; a pixel reads texels within maxMm of it. The keys change with the
+// positions and with B.
+struct AtlasRadiosity {
+    const std::vector<float>* positions = nullptr;
+    const std::vector<float>* radiosity = nullptr;
+    int resolution = 0;
+    float maxMm = 0;
+    uint64_t positionsKey = 0, radiosityKey = 0;
 };
 
 }  // namespace tsis

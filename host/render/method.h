@@ -52,6 +52,11 @@ struct FrameContext {
     // Progressive accumulation: frames of the same view already averaged, so
     // this frame draws sample set `sampleSet` (0 when not accumulating).
     uint32_t sampleSet = 0;
+    // The lighting's key (render/frame_keys.h): the light views and the flux
+    // atlas are those of the last frame with the same one. cameraMoved: the
+    // view or the image size differs from the renderer's last frame.
+    uint64_t lighting = 0;
+    bool cameraMoved = true;
 
     FrameGraphId<AtlasCl> fluxAtlas;  // flux rgb per texel
     // The environment residual's share of fluxAtlas alone (docs/design.md
@@ -108,6 +113,11 @@ class Method {
     virtual std::optional<RdPart> missesResidual(const RenderOptions&) const {
         return std::nullopt;
     }
+    // B over the atlas, when the method holds a copy made for this frame's
+    // surface (ctx.lighting, the profile, the options), for the composite to
+    // read B at the pixels from instead of running the method (a frame that
+    // only moved the camera: docs/design.md §6); nullptr: none.
+    virtual const AtlasRadiosity* atlasRadiosity(const FrameContext&) { return nullptr; }
 };
 
 std::unique_ptr<Method> makeMethod(const std::string& name, ClRuntime& cl);

@@ -110,19 +110,37 @@ double PyramidMethod::gather(const FrameContext& ctx, const SurfacePoints& point
                                     .add(o.pyramidEpsilon)
                                     .add(ell)
                                     .digest();
-    const uint64_t pointsKey =
-        Hasher().addAll(points.pixel).addAll(points.host).add(ctx.width).add(ctx.height).digest();
     // Only the camera moved: B on the surface is the last frame's.
-    const bool cameraOnly = surfaceKey == lastSurfaceKey_ && pointsKey != lastPointsKey_;
+    const bool cameraOnly = surfaceKey == lastSurfaceKey_ && ctx.cameraMoved;
     lastSurfaceKey_ = surfaceKey;
-    lastPointsKey_ = pointsKey;
     const bool fromAtlas =
         !points.uvs.empty() && (o.pyramidCache == PyramidCache::Texture ||
                                 (o.pyramidCache == PyramidCache::Camera && cameraOnly));
     stats.set("pyramid_from_atlas", fromAtlas ? 1.0 : 0.0);
     stats.set("pyramid_epsilon", o.pyramidEpsilon);
     return fromAtlas ? gatherFromAtlas(ctx, points, surfaceKey, ell, radiosity, stats)
-                     : gatherAtPixels(ctx, points, pointsKey, ell, radiosity, stats);
+                     : gatherAtPixels(ctx, points, ell, radiosity, stats);
+}
+
+uint64_t PyramidMethod::copyKey(const FrameContext& ctx) {
+    const RenderOptions& o = *ctx.options;
+    return Hasher(ctx.lighting)
+        .add(ctx.profile().key)
+        .add(ctx.maxDistance())
+        .add(o.pyramidEpsilon)
+        .add(o.pyramidStride)
+        .add(smallestMeanFreePath(*ctx.material))
+        .add(ctx.atlasResolution)
+        .digest();
+}
+
+const AtlasRadiosity* PyramidMethod::atlasRadiosity(const FrameContext& ctx) {
+    const PyramidCache cache = ctx.options->pyramidCache;
+    if (cache == PyramidCache::Pixels || atlasKey_ == 0 || copyKey_ != copyKey(ctx)) return nullptr;
+    if (cache == PyramidCache::Camera && !ctx.cameraMoved) return nullptr;
+    host_ = {&atlas_.ringPositions(), &atlas_.hostValues(), ctx.atlasResolution, lookupMm_,
+             atlasPlanKey_, atlasKey_};
+    return &host_;
 }
 
 PyramidMethod::Grid PyramidMethod::gridFor(double cellMm, double ell, int stride) {
@@ -141,9 +159,10 @@ double PyramidMethod::gatherTree(const cl::Buffer& points, const cl::Buffer& ord
 }
 
 double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points,
-                                     uint64_t pointsKey, double ell, cl::Buffer& radiosity,
-                                     FrameStats& stats) {
+                                     double ell, cl::Buffer& radiosity, FrameStats& stats) {
     const RenderOptions& o = *ctx.options;
+    const uint64_t pointsKey =
+        Hasher().addAll(points.pixel).addAll(points.host).add(ctx.width).add(ctx.height).digest();
     const auto [stride, maxCornerMm] =
         gridFor(pixelMm(ctx.scene->camera, ctx.height), ell, o.pyramidStride);
     // The plan follows the points (the camera's G-buffer), not the lights: a
@@ -205,6 +224,9 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
         stats.addStage("pyramid_atlas_interpolate", atlas_.lastInterpolateMs());
         stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
         atlasKey_ = atlasKey;
+        copyKey_ = copyKey(ctx);
+        atlasPlanKey_ = planKey;
+        lookupMm_ = maxMm;
     }
     const std::vector<int> none = atlas_.lookup(points, maxMm, radiosity);
     stats.addStage("pyramid_atlas_lookup", atlas_.lastLookupMs());

@@ -36,6 +36,10 @@ class PyramidMethod : public Method {
     explicit PyramidMethod(ClRuntime& cl);
     const char* name() const override { return "pyramid"; }
     void addPasses(FrameGraph& graph, const FrameContext& ctx) override;
+    // The copy over the atlas when made for this frame's surface; with
+    // --pyramid-cache camera only while the camera moves (a still view
+    // gathers at its pixels), never with off.
+    const AtlasRadiosity* atlasRadiosity(const FrameContext& ctx) override;
 
     // The default grid stride for a cell (pixel or texel) of this side, mm,
     // and the mean free path ℓ.
@@ -64,8 +68,8 @@ class PyramidMethod : public Method {
     // frame's table), to out; its device ms.
     double gatherTree(const cl::Buffer& points, const cl::Buffer& order, int count, float epsilon,
                       double ell, cl::Buffer& out);
-    double gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points, uint64_t pointsKey,
-                          double ell, cl::Buffer& radiosity, FrameStats& stats);
+    double gatherAtPixels(const FrameContext& ctx, const SurfacePoints& points, double ell,
+                          cl::Buffer& radiosity, FrameStats& stats);
     double gatherFromAtlas(const FrameContext& ctx, const SurfacePoints& points,
                            uint64_t surfaceKey, double ell, cl::Buffer& radiosity,
                            FrameStats& stats);
@@ -85,9 +89,9 @@ class PyramidMethod : public Method {
     SparsePixels plan_;
     uint64_t planKey_ = 0;
     // What the last frame's B was made of (the surface's B: sums, table,
-    // ε, ℓ) and at (its points): a frame with the same surface key and
-    // other points only moved the camera.
-    uint64_t lastSurfaceKey_ = 0, lastPointsKey_ = 0, tableVersion_ = 0;
+    // ε, ℓ): a frame with the same surface key whose camera moved
+    // (FrameContext::cameraMoved) only moved the camera.
+    uint64_t lastSurfaceKey_ = 0, tableVersion_ = 0;
     // B over the atlas (render/radiosity_atlas.h), made for atlasKey_ from
     // the position atlas' host copy; texelMm_ the mean texel's side.
     RadiosityAtlas atlas_;
@@ -95,6 +99,12 @@ class PyramidMethod : public Method {
     double texelMm_ = 0;
     uint64_t atlasKey_ = 0;
     GrowingBuffer offAtlas_;  // the points the copy has no texel for, to gather
+    // What the copy was made for (copyKey: the lighting, the profile, the
+    // options), the plan it was made on and the lookup's reach.
+    static uint64_t copyKey(const FrameContext& ctx);
+    uint64_t copyKey_ = 0, atlasPlanKey_ = 0;
+    float lookupMm_ = 0;
+    AtlasRadiosity host_;
 };
 
 }  // namespace tsis

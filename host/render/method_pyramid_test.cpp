@@ -171,5 +171,46 @@ TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
     EXPECT_LT(test::relativeRmse(fromAtlas, test::renderWith(a, pixels, "pyramid")), 0.005);
 }
 
+// Without AOVs of B the renderer reads the copy on the GL side (gl/passes.h
+// RadiosityLookupPass): the camera moves after the one that made it take
+// no run of the method, and their frames are the CL side's lookup's to an
+// 8-bit step (the log-average to 1e-5); a repeated view and a light move
+// gather at the pixels again.
+TEST(Pyramid, CameraMovesReadTheCopyOnTheGlSideAsOnTheClSide) {
+    const Scene a = test::torusScene("skin1", 10.0);
+    Scene turned = a, again = a;
+    turned.camera.eye = glm::vec3(-6, 5, 12);
+    again.camera.eye = glm::vec3(-8, 4, 11);
+    Scene lit = turned;
+    lit.lights[0].vec = glm::vec3(9, 8, 11);
+    const RenderOptions cl = frameSequenceOptions();  // AOVs: the CL side
+    RenderOptions gl = cl;
+    gl.keepAovs = false;
+    const struct {
+        const Scene* scene;
+        double onGl;
+    } frames[] = {{&a, 0}, {&turned, 0}, {&again, 1}, {&turned, 1}, {&turned, 0}, {&lit, 0}};
+    Renderer onGl, onCl;
+    for (const auto& f : frames) {
+        const FrameResult g = onGl.render(*f.scene, gl);
+        const FrameResult c = onCl.render(*f.scene, cl);
+        EXPECT_EQ(g.stats.number("radiosity_lookup_gl"), f.onGl);
+        EXPECT_EQ(c.stats.number("radiosity_lookup_gl"), 0);
+        if (f.onGl > 0) {
+            EXPECT_EQ(g.stats.number("pyramid_from_atlas"), 1);
+            EXPECT_EQ(g.stats.number("covered_pixels"), c.stats.number("covered_pixels"));
+            EXPECT_EQ(g.stats.number("pyramid_filled_off_atlas"),
+                      c.stats.number("pyramid_gathered_off_atlas"));
+        }
+        ASSERT_EQ(g.rgb8.size(), c.rgb8.size());
+        int most = 0;
+        for (size_t i = 0; i < g.rgb8.size(); ++i)
+            most = std::max(most, std::abs(g.rgb8[i] - c.rgb8[i]));
+        EXPECT_LE(most, 1) << "frame of " << f.onGl;
+        // The log-average of the radiance: B's rounding, not a 1 % change.
+        EXPECT_NEAR(g.lavg, c.lavg, 1e-5 * c.lavg);
+    }
+}
+
 }  // namespace
 }  // namespace tsis

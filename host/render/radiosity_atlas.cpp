@@ -67,7 +67,8 @@ void RadiosityAtlas::plan(const std::vector<float>& positions, int resolution, i
     if (key == key_ && key_ != 0) return;
     const size_t texels = static_cast<size_t>(resolution) * resolution;
     TSIS_CHECK_EQ(positions.size(), texels * 4);
-    const std::vector<float> ring = withRing(positions, resolution, sameSurfaceMm);
+    ring_ = withRing(positions, resolution, sameSurfaceMm);
+    const std::vector<float>& ring = ring_;
     std::vector<int> pixels;
     std::vector<float> xyz;
     for (size_t i = 0; i < texels; ++i)
@@ -112,6 +113,16 @@ std::vector<int> RadiosityAtlas::lookup(const SurfacePoints& points, float maxMm
     for (size_t i = 0; i < count; ++i)
         if (flags[i]) left.push_back(static_cast<int>(i));
     return left;
+}
+
+const std::vector<float>& RadiosityAtlas::hostValues() {
+    if (!hostCurrent_) {
+        hostB_.resize(ring_.size());
+        cl_.queue().enqueueReadBuffer(b_.buffer, CL_TRUE, 0, hostB_.size() * sizeof(float),
+                                      hostB_.data());
+        hostCurrent_ = true;
+    }
+    return hostB_;
 }
 
 double RadiosityAtlas::lastLookupMs() const {

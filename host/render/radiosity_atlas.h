@@ -44,7 +44,14 @@ class RadiosityAtlas {
     int covered() const { return covered_; }
     cl::Buffer& values() { return b_.buffer; }
     // After the gather: B of the texels between the grid's, on the device.
-    void interpolate() { interpolation_.run(b_.buffer); }
+    void interpolate() {
+        interpolation_.run(b_.buffer);
+        hostCurrent_ = false;
+    }
+    // The same on the host (AtlasRadiosity): the positions with their ring,
+    // and B, read back once after each making.
+    const std::vector<float>& ringPositions() const { return ring_; }
+    const std::vector<float>& hostValues();
 
     // B of each point (float4, to `out`) bilinearly from the 2×2 texels
     // around its atlas coordinates that hold its surface (of the atlas
@@ -62,6 +69,8 @@ class RadiosityAtlas {
     SparsePixels plan_;
     SparseInterpolation interpolation_;
     GrowingBuffer xyz_, order_, b_, none_;
+    std::vector<float> ring_, hostB_;
+    bool hostCurrent_ = false;
     int resolution_ = 0, covered_ = 0;
     uint64_t key_ = 0;
     cl::Event lookupEvent_;

@@ -365,6 +365,37 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
             static_cast<float>(env.intensity)};
 }
 
+FrameGraphId<RadiosityImage> RasterPasses::addRadiosityLookup(FrameGraph& graph,
+                                                              const FrameContext& ctx,
+                                                              const RasterHandles& gl,
+                                                              const AtlasRadiosity& copy) {
+    const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
+    graph.addPass(
+        "gl_radiosity_lookup",
+        [&](FrameGraph::Builder& b) {
+            b.read(gl.gbuffer);
+            b.read(ctx.pointUvs);
+            b.write(image);
+        },
+        [this, &copy, gl, image](FrameGraph::Resources& res) {
+            Timer upload;
+            radiosityLookupPass_.setAtlas(copy.positions->data(), copy.positionsKey,
+                                          copy.radiosity->data(), copy.radiosityKey,
+                                          copy.resolution);
+            res.stats().set("radiosity_atlas_upload_ms", upload.ms());
+            const RenderTarget& gbuffer = *res.read(gl.gbuffer).target;
+            const RadiosityLookupPass::Counts n =
+                radiosityLookupPass_.run(gbuffer, gbuffer.colorCount() - 1, copy.maxMm);
+            glFinish();
+            RadiosityImage& out = res.write(image);
+            out.texture = radiosityLookupPass_.texture();
+            out.covered = n.covered;
+            res.stats().set("pyramid_from_atlas", 1.0);
+            res.stats().set("pyramid_filled_off_atlas", static_cast<double>(n.offAtlas));
+        });
+    return image;
+}
+
 FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const FrameContext& ctx,
                                                     const RasterHandles& gl,
                                                     FrameGraphId<RadiosityImage> radiosity) {
@@ -390,7 +421,8 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             // the radiance pass.
             const bool direct = !o.keepAovs && !o.autoExposure;
             if (direct) out.exposureScale = exposureScale(o, out.lavg);
-            compositePass_.radiance(res.read(radiosity).rgba.data(), *gbuffer.target,
+            const RadiosityImage& b = res.read(radiosity);
+            compositePass_.radiance(b.texture ? nullptr : b.rgba.data(), b.texture, *gbuffer.target,
                                     gbuffer.version, *res.read(gl.samples).target, o.aa,
                                     *lights.views, *lights.shadows, ctx.eye, materials_, alpha,
                                     environmentReflection(ctx, res.stats()),

@@ -70,6 +70,12 @@ class RasterPasses {
     FrameGraphId<FrameImage> addComposite(FrameGraph& graph, const FrameContext& ctx,
                                           const RasterHandles& gl,
                                           FrameGraphId<RadiosityImage> radiosity);
+    // B at the frame's pixels from a method's copy over the atlas, on the GL
+    // side (gl/passes.h RadiosityLookupPass), instead of the method's run and
+    // B's trip through the host. `copy` is read when the pass runs.
+    FrameGraphId<RadiosityImage> addRadiosityLookup(FrameGraph& graph, const FrameContext& ctx,
+                                                    const RasterHandles& gl,
+                                                    const AtlasRadiosity& copy);
     // A second GL thread for the passes that overlap (null: none): the
     // light views, and the composite's samples' G-buffer beside the frame's.
     void setGlWorker(GlWorker* worker);
@@ -104,6 +110,7 @@ class RasterPasses {
     FluxAtlasPass fluxAtlasPass_, residualFluxPass_;
     GBufferPass gbufferPass_, sampleGbufferPass_{false};
     CompositePass compositePass_;
+    RadiosityLookupPass radiosityLookupPass_;
     MaterialTables
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
     EnvTransfer envTransfer_;

@@ -169,6 +169,16 @@ int autoLightResolution(const Scene& scene) {
     return across > 100.0 ? 2048 : 1024;
 }
 
+const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
+                                               const FrameContext& ctx, bool residual) {
+    const SceneMedia& sm = *ctx.media;
+    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) ||
+        opt.keepAovs || !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
+        return nullptr;
+    return method(opt.method, 0)
+        .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
+}
+
 FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
     // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
@@ -199,6 +209,10 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
     const uint64_t lighting = Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();
+    ctx.lighting = lighting;
+    const uint64_t view = Hasher().add(ctx.viewProj).add(opt.width).add(opt.height).digest();
+    ctx.cameraMoved = view != lastView_;
+    lastView_ = view;
     stats.set("lighting_reused", raster_.lightingCurrent(lighting) ? 1.0 : 0.0);
     const uint64_t accumulation = opt.progressive ? accumulationKey(scene, opt, lighting) : 0;
     if (opt.progressive) ctx.sampleSet = accumulator_.framesFor(accumulation);
@@ -221,7 +235,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     const std::optional<RdPart> missed =
         scene.env ? method(opt.method, 0).missesResidual(opt) : std::nullopt;
     if (missed) residual.reserve(sm.slots());
-    for (size_t k = 0; k < sm.slots(); ++k) {
+    // A frame that only moved the camera may read B from the method's copy
+    // over the atlas on the GL side (docs/design.md §6): no run at all.
+    const AtlasRadiosity* copy = atlasRadiosity(scene, opt, ctx, missed.has_value());
+    stats.set("radiosity_lookup_gl", copy ? 1.0 : 0.0);
+    for (size_t k = 0; k < sm.slots() && !copy; ++k) {
         runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
         runs[k].points = points[k];
         if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
@@ -233,7 +251,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
         residual[k].radiosity = staging_.declareRadiosity(graph, sm.slots() + k);
         method("pyramid", k, "residual").addPasses(graph, residual[k]);
     }
-    const FrameGraphId<RadiosityImage> radiosity = staging_.addReadback(graph, runs, residual);
+    const FrameGraphId<RadiosityImage> radiosity =
+        copy ? raster_.addRadiosityLookup(graph, ctx, gl, *copy)
+             : staging_.addReadback(graph, runs, residual);
     // L⁽¹⁾ once for every method but volumetric, whose walk scatters once too.
     if (addsSingleScatter(opt)) {
         if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
@@ -265,7 +285,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     stats.set("gl_renderer", gl_.renderer());
     stats.set("gl_platform", gl_.platform());
     stats.set("gl_cl_sharing", sharing_.reason);
-    recordFrame(stats, opt, scene, graph, graph.get(ctx.points).count);
+    recordFrame(stats, opt, scene, graph,
+                copy ? graph.get(radiosity).covered : graph.get(ctx.points).count);
     return result;
 }
 

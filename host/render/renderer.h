@@ -60,6 +60,13 @@ class Renderer {
     // The albedo factors (baked again when the mesh, a material or the atlas changed).
     const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
                                    const RenderOptions& opt, uint64_t meshKey);
+    // The method's copy of B over the atlas for this frame (Method::
+    // atlasRadiosity), where the frame can read B from it on the GL side:
+    // lighting unchanged, one material, nothing added to B on the CL side
+    // (the residual's run, L⁽¹⁾, the progressive mean, an albedo's exit
+    // factor) and no AOVs of B at the points; else null.
+    const AtlasRadiosity* atlasRadiosity(const Scene& scene, const RenderOptions& opt,
+                                         const FrameContext& ctx, bool residual);
 
     GlContext gl_;
     // A second GL thread for passes that overlap (gl/gl_worker.h); null where
@@ -76,6 +83,7 @@ class Renderer {
     std::unique_ptr<SceneMedia> media_;
     AlbedoAtlas albedo_;
     uint64_t albedoOf_ = 0;
+    uint64_t lastView_ = 0;  // the last frame's view and size (FrameContext::cameraMoved)
 };
 
 // The light-map resolution RenderOptions::lightResolution = 0 stands for:
