@@ -310,8 +310,8 @@ void CompositePass::updateEdgePoints(uint64_t key, const RenderTarget& target, i
 }
 
 void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture,
-                             const RenderTarget& frameGbuffer,
-                             uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
+                             const RenderTarget& frameGbuffer, uint64_t gbufferVersion,
+                             const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
                              const glm::vec3& eye, const MaterialTables& materials, float alpha,
                              const EnvReflectionTextures& env, std::optional<float> displayScale) {
@@ -514,7 +514,6 @@ float CompositePass::logAverageLuminance() {
     }
     return count > 0 ? static_cast<float>(std::exp(sum / count)) : 1.0f;
 }
-
 
 RadiosityLookupPass::RadiosityLookupPass()
     : lookup_("fullscreen.vert", "radiosity_lookup.frag"),

@@ -217,10 +217,10 @@ class CompositePass {
     // `radiosity`: B as host RGBA floats (uploaded), or a texture of it
     // (RadiosityLookupPass) where the host pointer is null.
     void radiance(const float* radiosityRGBA, GLuint radiosityTexture,
-                  const RenderTarget& frameGbuffer,
-                  uint64_t gbufferVersion, const RenderTarget& sampleGbuffer, int aa,
-                  const std::vector<LightView>& lights, const ShadowMapArray& shadows,
-                  const glm::vec3& eye, const MaterialTables& materials, float alpha,
+                  const RenderTarget& frameGbuffer, uint64_t gbufferVersion,
+                  const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
+                  const ShadowMapArray& shadows, const glm::vec3& eye,
+                  const MaterialTables& materials, float alpha,
                   const EnvReflectionTextures& env = {},
                   std::optional<float> displayScale = std::nullopt);
     // The frame's radiance (frameRadiance()) and log luminance, without the

@@ -138,8 +138,9 @@ const AtlasRadiosity* PyramidMethod::atlasRadiosity(const FrameContext& ctx) {
     const PyramidCache cache = ctx.options->pyramidCache;
     if (cache == PyramidCache::Pixels || atlasKey_ == 0 || copyKey_ != copyKey(ctx)) return nullptr;
     if (cache == PyramidCache::Camera && !ctx.cameraMoved) return nullptr;
-    host_ = {&atlas_.ringPositions(), &atlas_.hostValues(), ctx.atlasResolution, lookupMm_,
-             atlasPlanKey_, atlasKey_};
+    host_ = {&atlas_.ringPositions(), &atlas_.hostValues(),
+             ctx.atlasResolution,     lookupMm_,
+             atlasPlanKey_,           atlasKey_};
     return &host_;
 }
 

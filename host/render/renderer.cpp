@@ -172,8 +172,8 @@ int autoLightResolution(const Scene& scene) {
 const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                                const FrameContext& ctx, bool residual) {
     const SceneMedia& sm = *ctx.media;
-    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) ||
-        opt.keepAovs || !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
+    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) || opt.keepAovs ||
+        !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
         return nullptr;
     return method(opt.method, 0)
         .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
