@@ -211,9 +211,15 @@ int sideBySide(const BenchArgs& a) {
         ms[camera] = summarize(stageSums(frames, {"total"})).median;
         // --stages: each stage's median, on stderr (stdout stays one line).
         if (!stages) continue;
-        for (const FrameStats::Stage& s : frames.front().stages)
-            std::fprintf(stderr, "%s %s %.2f\n", camera ? "camera" : "light", s.name.c_str(),
-                         summarize(stageSums(frames, {s.name})).median);
+        // Every stage any frame ran (the first camera move's differ from the later ones').
+        std::vector<std::string> names;
+        for (const FrameStats& f : frames)
+            for (const FrameStats::Stage& s : f.stages)
+                if (std::find(names.begin(), names.end(), s.name) == names.end())
+                    names.push_back(s.name);
+        for (const std::string& name : names)
+            std::fprintf(stderr, "%s %s %.2f\n", camera ? "camera" : "light", name.c_str(),
+                         summarize(stageSums(frames, {name})).median);
     }
     std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f frames=%d gl_renderer=%s\n", ms[0],
                 ms[1], a.frames, renderer.glRenderer().c_str());

@@ -489,12 +489,15 @@ void Viewer::submitIfNeeded() {
     if (state_.autoOrbit && !state_.lights.empty() && (!script || scriptFrames_ > 0))
         state_.lights[0].vec = turnAboutY(state_.lights[0].vec, kAutoOrbitPixels, 0);
     if (script && scriptFrames_ > 0) --scriptFrames_;
-    // The last frame before the view rests keeps its AOVs, so that "AOVs" and
-    // the reference's error need no frame of their own (which would add a
-    // sample set to the mean on screen).
+    // A sampling method's last frame before the view rests keeps its AOVs,
+    // so that "AOVs" and the reference's error need no frame of their own
+    // (which would add a sample set to the mean on screen). Another method
+    // renders the same picture again when they are asked for (requestAovs),
+    // so its frames skip the AOVs' read-backs and may read B on the GL side
+    // (docs/design.md §6).
     const int frameCount = changed ? 1 : accumulated_ + 1;
-    const bool last = script ? scriptFrames_ == 0
-                             : !state_.autoOrbit && (!sampling || frameCount >= state_.maxFrames);
+    const bool last = sampling && (script ? scriptFrames_ == 0
+                                          : !state_.autoOrbit && frameCount >= state_.maxFrames);
     forceFrame_ = false;
     if (scaledFrom_ != state_.mesh || scaledSize_ != state_.sizeMm) {
         scaled_ = scaledMesh(state_);
