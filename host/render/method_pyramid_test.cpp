@@ -127,18 +127,25 @@ TEST(Pyramid, LightMoveKeepsThePlanAndGivesTheFreshFrame) {
     }
 }
 
+// The torus, its camera turned twice, and the light moved at the second view.
+struct CameraMoves {
+    Scene a = test::torusScene("skin1", 10.0), turned = a, again = a, lit;
+    CameraMoves() {
+        turned.camera.eye = glm::vec3(-6, 5, 12);
+        again.camera.eye = glm::vec3(-8, 4, 11);
+        lit = again;
+        lit.lights[0].vec = glm::vec3(9, 8, 11);
+    }
+};
+
 // B over the atlas: a frame that only moves the camera reads B from the
 // copy the first such frame makes over the atlas, within 0.5 % of the
 // gather at its pixels; the next camera move reuses the copy; a light move
 // gathers at the pixels again. --pyramid-cache always reads the copy on the
 // first frame too, as close.
 TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
-    const Scene a = test::torusScene("skin1", 10.0);
-    Scene turned = a, again = a;
-    turned.camera.eye = glm::vec3(-6, 5, 12);
-    again.camera.eye = glm::vec3(-8, 4, 11);
-    Scene lit = again;
-    lit.lights[0].vec = glm::vec3(9, 8, 11);
+    const CameraMoves m;
+    const Scene &a = m.a, &turned = m.turned, &again = m.again, &lit = m.lit;
     const RenderOptions opt = frameSequenceOptions();
     // Each frame in turn: did it read the copy, did it make it.
     const struct {
@@ -177,12 +184,8 @@ TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
 // 8-bit step (the log-average to 1e-5); a repeated view and a light move
 // gather at the pixels again.
 TEST(Pyramid, CameraMovesReadTheCopyOnTheGlSideAsOnTheClSide) {
-    const Scene a = test::torusScene("skin1", 10.0);
-    Scene turned = a, again = a;
-    turned.camera.eye = glm::vec3(-6, 5, 12);
-    again.camera.eye = glm::vec3(-8, 4, 11);
-    Scene lit = turned;
-    lit.lights[0].vec = glm::vec3(9, 8, 11);
+    const CameraMoves m;
+    const Scene &a = m.a, &turned = m.turned, &again = m.again, &lit = m.lit;
     const RenderOptions cl = frameSequenceOptions();  // AOVs: the CL side
     RenderOptions gl = cl;
     gl.keepAovs = false;
