@@ -157,7 +157,9 @@ TEST(Pyramid, CameraMoveReadsBFromTheAtlasCloseToTheGatherAtItsPixels) {
     for (const auto& f : frames) {
         results.push_back(renderer.render(*f.scene, opt));
         EXPECT_EQ(results.back().stats.number("pyramid_from_atlas"), f.fromAtlas);
-        if (f.fromAtlas > 0) EXPECT_EQ(results.back().stats.number("pyramid_atlas_made"), f.made);
+        if (f.fromAtlas > 0) {
+            EXPECT_EQ(results.back().stats.number("pyramid_atlas_made"), f.made);
+        }
     }
     const FrameResult& first = results[1];
     const FrameResult& second = results[2];

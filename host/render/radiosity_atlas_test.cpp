@@ -137,10 +137,10 @@ TEST(RadiosityLookupPass, IsTheHostsBilinearAndFillsThePixelsWithNoTexel) {
     GlContext gl;
     const int w = int(c.count()), h = 3;
     RenderTarget gbuffer(w, h, {GL_RGBA32F, GL_RG32F}, true);
-    std::vector<float> position(size_t(w * h) * 4, 0.0f), uv(size_t(w * h) * 2, 0.0f),
-        depth(size_t(w * h), 1.0f);
+    const size_t pixels = size_t(w) * size_t(h);
+    std::vector<float> position(pixels * 4, 0.0f), uv(pixels * 2, 0.0f), depth(pixels, 1.0f);
     for (int i = 0; i < w; ++i) {
-        const size_t px = size_t(w + i);  // row 1
+        const size_t px = size_t(w) + size_t(i);  // row 1
         std::copy_n(&c.points[size_t(i) * 4], 4, &position[px * 4]);
         std::copy_n(&c.uvs[size_t(i) * 2], 2, &uv[px * 2]);
         depth[px] = 0.5f;
@@ -162,7 +162,7 @@ TEST(RadiosityLookupPass, IsTheHostsBilinearAndFillsThePixelsWithNoTexel) {
     glCopyImageSubData(pass.texture(), GL_TEXTURE_2D, 0, 0, 0, 0, out.color(0), GL_TEXTURE_2D, 0, 0,
                        0, 0, w, h, 1);
     const std::vector<float> got = out.readRGBA(0);
-    auto at = [&](int i, int k) { return got[size_t(w + i) * 4 + size_t(k)]; };
+    auto at = [&](int i, int k) { return got[(size_t(w) + size_t(i)) * 4 + size_t(k)]; };
     for (int i : {0, 1, 4}) {
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(at(i, k), c.want(size_t(i))[k], 1e-4) << i;
         EXPECT_EQ(at(i, 3), 1.0f) << i;
