@@ -491,6 +491,7 @@ float CompositePass::logAverageLuminance() {
     constexpr int kBlock = 4, kMostLeft = 64;
     int w = logLuminance_->width(), h = logLuminance_->height();
     GLuint from = logLuminance_->color(1);
+    const RenderTarget* last = nullptr;
     reduceProgram_.use();
     reduceProgram_.set("u_block", kBlock);
     glBindVertexArray(emptyVao_);
@@ -502,11 +503,11 @@ float CompositePass::logAverageLuminance() {
         sumTargets_[level]->bind();
         bindTexture(reduceProgram_, "u_logLuminance", 0, from);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        from = sumTargets_[level]->color(0);
-        sumTarget_ = sumTargets_[level].get();
+        last = sumTargets_[level].get();
+        from = last->color(0);
     }
     checkGl("CompositePass::logAverageLuminance");
-    const std::vector<float> sums = sumTarget_->readRGBA(0);
+    const std::vector<float> sums = last->readRGBA(0);
     double sum = 0, count = 0;
     for (size_t i = 0; i + 1 < sums.size(); i += 4) {
         sum += sums[i];

@@ -266,7 +266,6 @@ class CompositePass {
         colorTarget_;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
-    const RenderTarget* sumTarget_ = nullptr;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     const RenderTarget* display_ = nullptr;       // the last display image's
     int aa_ = 1;

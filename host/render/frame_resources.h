@@ -71,7 +71,7 @@ struct LightMapsCl {
 
 // Radiosity B of every covered pixel, on the host: width*height RGBA, GL row
 // order, a = 1 where covered; or where `texture` is set, a GL texture of the
-// same (the composite's lookup over the atlas, gl/radiosity_lookup.h) and
+// same (the lookup over the atlas, gl/passes.h RadiosityLookupPass) and
 // rgba empty.
 struct RadiosityImage {
     std::vector<float> rgba;

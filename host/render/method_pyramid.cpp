@@ -138,9 +138,7 @@ const AtlasRadiosity* PyramidMethod::atlasRadiosity(const FrameContext& ctx) {
     const PyramidCache cache = ctx.options->pyramidCache;
     if (cache == PyramidCache::Pixels || atlasKey_ == 0 || copyKey_ != copyKey(ctx)) return nullptr;
     if (cache == PyramidCache::Camera && !ctx.cameraMoved) return nullptr;
-    host_ = {&atlas_.ringPositions(), &atlas_.hostValues(),
-             ctx.atlasResolution,     lookupMm_,
-             atlasPlanKey_,           atlasKey_};
+    host_.radiosity = &atlas_.hostValues();
     return &host_;
 }
 
@@ -226,8 +224,8 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
         stats.set("rd_evaluations", static_cast<double>(tree_.lastEvaluations()));
         atlasKey_ = atlasKey;
         copyKey_ = copyKey(ctx);
-        atlasPlanKey_ = planKey;
-        lookupMm_ = maxMm;
+        // B itself is read back when a frame first asks (atlasRadiosity).
+        host_ = {&atlas_.ringPositions(), nullptr, ctx.atlasResolution, maxMm, planKey, atlasKey};
     }
     const std::vector<int> none = atlas_.lookup(points, maxMm, radiosity);
     stats.addStage("pyramid_atlas_lookup", atlas_.lastLookupMs());

@@ -100,10 +100,9 @@ class PyramidMethod : public Method {
     uint64_t atlasKey_ = 0;
     GrowingBuffer offAtlas_;  // the points the copy has no texel for, to gather
     // What the copy was made for (copyKey: the lighting, the profile, the
-    // options), the plan it was made on and the lookup's reach.
+    // options), and the copy as atlasRadiosity hands it on (set when made).
     static uint64_t copyKey(const FrameContext& ctx);
-    uint64_t copyKey_ = 0, atlasPlanKey_ = 0;
-    float lookupMm_ = 0;
+    uint64_t copyKey_ = 0;
     AtlasRadiosity host_;
 };
 

@@ -492,7 +492,7 @@ void Viewer::submitIfNeeded() {
     // A sampling method's last frame before the view rests keeps its AOVs,
     // so that "AOVs" and the reference's error need no frame of their own
     // (which would add a sample set to the mean on screen). Another method
-    // renders the same picture again when they are asked for (requestAovs),
+    // renders the view again when they are asked for (requestAovs),
     // so its frames skip the AOVs' read-backs and may read B on the GL side
     // (docs/design.md §6).
     const int frameCount = changed ? 1 : accumulated_ + 1;
