@@ -29,6 +29,8 @@ constexpr Choice<ExitTerm> kExitTerms[] = {{ExitTerm::Jensen, "jensen"},
                                            {ExitTerm::Normalized, "normalized"}};
 constexpr Choice<EnergyTarget> kEnergyTargets[] = {{EnergyTarget::SemiInfinite, "semi-infinite"},
                                                    {EnergyTarget::Object, "object"}};
+constexpr Choice<Transport> kTransports[] = {{Transport::Off, "off"},
+                                             {Transport::Object, "object"}};
 constexpr Choice<VolumetricEstimator> kEstimators[] = {{VolumetricEstimator::Camera, "camera"},
                                                        {VolumetricEstimator::Light, "light"}};
 
@@ -87,6 +89,13 @@ EnergyTarget parseEnergyTarget(const std::string& name) {
 }
 const char* energyTargetName(EnergyTarget energy) {
     return choiceName(energy, kEnergyTargets);
+}
+
+Transport parseTransport(const std::string& name) {
+    return parseChoice("--transport", name, kTransports);
+}
+const char* transportName(Transport transport) {
+    return choiceName(transport, kTransports);
 }
 
 VolumetricEstimator parseVolumetricEstimator(const std::string& name) {

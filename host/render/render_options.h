@@ -46,6 +46,14 @@ enum class EnergyTarget { SemiInfinite, Object };
 EnergyTarget parseEnergyTarget(const std::string& name);
 const char* energyTargetName(EnergyTarget energy);
 
+// The object's own transport (render/object_transport.h): off, or the
+// volumetric walk's patch-to-patch flux in place of the profile's, added to
+// every profile method's radiosity.
+enum class Transport { Off, Object };
+// "off" or "object"; throws tsis::Error for anything else.
+Transport parseTransport(const std::string& name);
+const char* transportName(Transport transport);
+
 // volumetric's estimator (render/method_volumetric.h): paths from the camera
 // (connected to the lights through the boundary) or photons from the lights
 // (connected to the pinhole).
@@ -92,6 +100,9 @@ struct RenderOptions {
     // methods' radiosity (render/single_scatter.h; volumetric has it already).
     bool singleScatter = false;
     EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
+    // The object's own transport (render/object_transport.h): the default,
+    // chosen by error against volumetric truth; --model thesis turns it off.
+    Transport transport = Transport::Object;
     VolumetricEstimator estimator = VolumetricEstimator::Camera;
     int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
@@ -125,6 +136,11 @@ struct RenderOptions {
 // Whether the frame adds the single-scattering term (render/single_scatter.h).
 inline bool addsSingleScatter(const RenderOptions& o) {
     return o.singleScatter && o.method != "volumetric";
+}
+
+// Whether the frame adds the object's transport (render/object_transport.h).
+inline bool addsTransport(const RenderOptions& o) {
+    return o.transport == Transport::Object && o.method != "volumetric";
 }
 
 // Checks the method's name and every parameter's value against its row of

@@ -172,8 +172,9 @@ int autoLightResolution(const Scene& scene) {
 const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                                const FrameContext& ctx, bool residual) {
     const SceneMedia& sm = *ctx.media;
-    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) || opt.keepAovs ||
-        !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
+    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) ||
+        addsTransport(opt) || opt.keepAovs || !ctx.albedo->empty() ||
+        !raster_.lightingCurrent(ctx.lighting))
         return nullptr;
     return method(opt.method, 0)
         .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
@@ -258,6 +259,15 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     if (addsSingleScatter(opt)) {
         if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
         singleScatter_->addPass(graph, ctx, gl, radiosity);
+    }
+    // The object's own transport, likewise for every method but volumetric.
+    if (addsTransport(opt)) {
+        if (!transport_) transport_ = std::make_unique<ObjectTransport>(cl_);
+        std::vector<KeyedProfile> profiles;
+        for (size_t k = 0; k < sm.slots(); ++k)
+            profiles.push_back(
+                materialContext(ctx, scene.materialOf(sm.slotMaterial[k])).profile());
+        transport_->addPass(graph, ctx, std::move(profiles), radiosity);
     }
     if (opt.progressive)
         graph.addPass(

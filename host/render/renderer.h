@@ -18,6 +18,7 @@
 #include "render/gl_cl_sharing.h"
 #include "render/gl_cl_staging.h"
 #include "render/method.h"
+#include "render/object_transport.h"
 #include "render/raster_passes.h"
 #include "render/render_options.h"
 #include "render/single_scatter.h"
@@ -78,6 +79,7 @@ class Renderer {
     GlClSharing sharing_;  // decided, not yet used: staging_ copies (gl_cl_sharing.h)
     RadiosityAccumulator accumulator_;
     std::unique_ptr<SingleScatter> singleScatter_;  // made on first use (its kernel)
+    std::unique_ptr<ObjectTransport> transport_;    // made on first use
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;

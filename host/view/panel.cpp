@@ -138,6 +138,12 @@ void reference(const PanelInfo& info, PanelFields& fields, PanelActions& actions
     } else if (info.referenceStale) {
         ImGui::TextDisabled("the reference is of an earlier view");
     }
+    // The model's own error (key T, script `truth`).
+    if (info.truthRunning)
+        ImGui::Text("truth check: volumetric transport running");
+    else if (info.truthError)
+        ImGui::Text("model vs volumetric %.1f%% (noise %.1f%%)%s", 100.0 * *info.truthError,
+                    100.0 * info.truthNoise, info.truthStale ? ", earlier view" : "");
 }
 
 void files(const PanelInfo& info, PanelFields& fields, PanelActions& actions) {

@@ -30,7 +30,12 @@ struct PanelInfo {
     std::optional<double> relRmse;  // of the shown frame against the reference
     double heatScale = 0;           // relative error at the top of the heat map's colours
     bool referenceStale = false;    // a reference of an earlier view
-    std::string status;             // the last file written, or why not
+    // The model against volumetric transport (render/truth_check.h).
+    bool truthRunning = false;
+    std::optional<double> truthError;  // pooled rel. RMSE, the reference's noise taken out
+    double truthNoise = 0;
+    bool truthStale = false;
+    std::string status;  // the last file written, or why not
     bool statusIsError = false;
 };
 
