@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <mutex>
 
 #include "api/api_internal.h"
 #include "cli/args.h"
@@ -21,21 +22,44 @@ Image fromInternal(ImageF&& image) {
 
 }  // namespace
 
+// One frame at a time, from whichever thread calls: the GL context is made
+// current on the caller's thread for the frame and released after it.
 struct Renderer::Impl {
-    Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {}
+    Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {
+        renderer.releaseGl();
+    }
+    std::mutex frame;
     tsis::Renderer renderer;
 };
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
     : impl_(guarded([&] { return std::make_unique<Impl>(clDevice, gl); })) {}
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    // In a forked child its GL and CL wait on threads that are not there.
+    if (impl_ && impl_->renderer.forkedAway()) {
+        (void)impl_.release();
+        return;
+    }
+    if (impl_) {
+        const std::lock_guard wait(impl_->frame);  // another thread's frame ends first
+    }
+}
 
-Frame Renderer::render(const Scene& scene, const Options& options) {
+Frame Renderer::render(const Scene& scene, const Options& options,
+                       const std::function<bool()>& cancel) {
     RenderOptions ro = renderOptionsFromArgs(Args("render", sceneOptionSpecs(), options.args()));
     ro.keepAovs = true;
     const tsis::Scene& s = scene.impl_->scene;
-    FrameResult r = guarded([&] { return impl_->renderer.render(s, ro); });
+    Cancel stop(cancel);
+    FrameResult r = guarded([&] {
+        const std::lock_guard lock(impl_->frame);
+        struct Release {
+            tsis::Renderer& r;
+            ~Release() { r.releaseGl(); }
+        } release{impl_->renderer};
+        return impl_->renderer.render(s, ro, cancel ? &stop : nullptr);
+    });
     Frame f;
     f.width = r.width;
     f.height = r.height;
