@@ -9,6 +9,7 @@
 #include "cli/scene_options.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
+#include "util/fork_guard.h"
 #include "util/json.h"
 #include "util/output_set.h"
 
@@ -33,7 +34,10 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
-    : impl_(guarded([&] { return std::make_unique<Impl>(clDevice, gl); })) {}
+    : impl_(guarded([&] {
+          guardForks();
+          return std::make_unique<Impl>(clDevice, gl);
+      })) {}
 
 Renderer::~Renderer() {
     // In a forked child its GL and CL wait on threads that are not there.
