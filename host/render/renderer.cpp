@@ -112,13 +112,10 @@ pid_t startedIn() {
     const pid_t self = ::getpid();
     if (gStartedIn.compare_exchange_strong(expected, self)) return self;
     if (expected != self)
-        fail(
-            "no renderer in a process forked after one was made: OpenCL and GL were started in "
-            "process ",
-            expected, " and cannot start again in its child ", self,
-            " (their threads are not copied by fork); make renderers only in processes "
-            "forked before any (or none in the parent), or use multiprocessing's 'spawn' start "
-            "method");
+        fail("no renderer in a child forked after one was made (in process ", expected,
+             "): OpenCL and GL cannot start again without their threads, which fork() does not "
+             "copy; fork before making any renderer, or use multiprocessing's 'spawn' start "
+             "method");
     return self;
 }
 
@@ -227,8 +224,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     if (forkedAway())
         fail("this renderer was made in process ", pid_, " and cannot render in its forked child ",
              ::getpid(),
-             " (OpenCL's and GL's threads are not copied by fork); make renderers after the fork, "
-             "or use multiprocessing's 'spawn' start method");
+             ": OpenCL's and GL's threads are not copied by fork(); fork before making any "
+             "renderer, or use multiprocessing's 'spawn' start method");
     // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
     validateMaterial(scene.material);
