@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -201,6 +202,38 @@ Renderer& sharedRenderer() {
     return *r;
 }
 
+// The scenes a frame reads now, with the GIL released (guarded by the GIL):
+// a change to one from another thread meanwhile is refused, not raced.
+std::map<const Scene*, int>& scenesInFrames() {
+    static std::map<const Scene*, int> busy;
+    return busy;
+}
+
+class SceneInFrame {
+  public:
+    explicit SceneInFrame(const Scene& s) : scene_(&s) { ++scenesInFrames()[scene_]; }
+    ~SceneInFrame() {
+        if (--scenesInFrames()[scene_] == 0) scenesInFrames().erase(scene_);
+    }
+    SceneInFrame(const SceneInFrame&) = delete;
+    SceneInFrame& operator=(const SceneInFrame&) = delete;
+
+  private:
+    const Scene* scene_;
+};
+
+// A setter of Scene.`name` that refuses while a frame reads the scene.
+template <typename T>
+auto sceneSetter(void (Scene::*set)(const T&), const char* name) {
+    return [set, name](Scene& s, const T& value) {
+        if (scenesInFrames().count(&s))
+            throw tsis::Error(std::string("Scene.") + name +
+                              ": the scene is being rendered on another thread; change it "
+                              "between frames (or render a copy: copy.copy(scene))");
+        (s.*set)(value);
+    };
+}
+
 bool onMainThread() {
     const py::module_ threading = py::module_::import("threading");
     return threading.attr("current_thread")().is(threading.attr("main_thread")());
@@ -221,6 +254,7 @@ py::object renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
             return true;
         };
     Frame f;
+    const SceneInFrame reading(s);
     try {
         const py::gil_scoped_release release;
         f = r.render(s, o, signals);
@@ -291,9 +325,11 @@ PYBIND11_MODULE(tsis, m) {
             },
             py::arg("vertices"), py::arg("triangles"),
             "vertices N×3 and triangles M×3 (counter-clockwise from outside); options as Scene()")
-        .def_property("material", &Scene::material, &Scene::setMaterial)
-        .def_property("lights", &Scene::lights, &Scene::setLights)
-        .def_property("camera", &Scene::camera, &Scene::setCamera)
+        .def_property("material", &Scene::material, sceneSetter(&Scene::setMaterial, "material"))
+        .def_property("lights", &Scene::lights, sceneSetter(&Scene::setLights, "lights"))
+        .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"))
+        .def("__copy__", [](const Scene& s) { return Scene(s); })
+        .def("__deepcopy__", [](const Scene& s, const py::dict&) { return Scene(s); })
         .def_property_readonly("mesh_name", &Scene::meshName)
         .def_property_readonly("vertex_count", &Scene::vertexCount)
         .def_property_readonly("triangle_count", &Scene::triangleCount);

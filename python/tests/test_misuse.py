@@ -297,3 +297,24 @@ def test_numpy_scalars_are_accepted_where_python_numbers_are():
     with pytest.raises(tsis.Error, match="option --width: expected a str, number, bool or "
                                          "sequence, not NoneType"):
         tsis.render(s, width=None)
+
+
+def test_a_scene_is_not_changed_while_another_thread_renders_it():
+    import copy
+    s = tsis.Scene(mesh="builtin:sphere")
+    r = tsis.Renderer()
+    t = threading.Thread(target=lambda: r.render(s, method="volumetric", time=3, **SMALL))
+    t.start()
+    refused = None
+    while t.is_alive() and refused is None:
+        try:
+            s.camera = tsis.Camera(eye=(0, 0, 30))
+        except tsis.Error as e:
+            refused = str(e)
+        threading.Event().wait(0.01)
+    c = copy.copy(s)  # a copy is free to change meanwhile
+    c.material = tsis.preset_material("marble")
+    t.join()
+    assert refused is not None and "being rendered on another thread" in refused
+    s.camera = tsis.Camera(eye=(0, 0, 30))  # between frames
+    assert s.camera.eye == [0, 0, 30] and c.material.name == "marble" and s.material.name != "marble"
