@@ -29,7 +29,7 @@ struct Renderer::Impl {
     Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {
         renderer.releaseGl();
     }
-    std::mutex frame;
+    std::timed_mutex frame;
     tsis::Renderer renderer;
 };
 
@@ -57,7 +57,10 @@ Frame Renderer::render(const Scene& scene, const Options& options,
     const tsis::Scene& s = scene.impl_->scene;
     Cancel stop(cancel);
     FrameResult r = guarded([&] {
-        const std::lock_guard lock(impl_->frame);
+        // Waiting for another thread's frame is cancelled as a frame is.
+        std::unique_lock lock(impl_->frame, std::defer_lock);
+        while (!lock.try_lock_for(Cancel::kPollInterval))
+            if (cancel) stop.check();
         struct Release {
             tsis::Renderer& r;
             ~Release() { r.releaseGl(); }

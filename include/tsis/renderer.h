@@ -52,7 +52,8 @@ class Renderer {
     // The scene options among `options` are checked, not used (the scene has
     // them). cancel (optional) is called on this thread between pieces of the
     // frame's work, at most every 50 ms: true stops the frame with
-    // tsis::Cancelled, and the Renderer stays usable.
+    // tsis::Cancelled, and the Renderer stays usable. It is asked while
+    // render() waits for another thread's frame too.
     Frame render(const Scene& scene, const Options& options = {},
                  const std::function<bool()>& cancel = {});
 

@@ -318,3 +318,26 @@ def test_a_scene_is_not_changed_while_another_thread_renders_it():
     assert refused is not None and "being rendered on another thread" in refused
     s.camera = tsis.Camera(eye=(0, 0, 30))  # between frames
     assert s.camera.eye == [0, 0, 30] and c.material.name == "marble" and s.material.name != "marble"
+
+
+def test_sigint_while_waiting_for_another_threads_frame_raises_keyboard_interrupt():
+    out = run_child("""
+        r = tsis.Renderer()
+        s = tsis.Scene(mesh="builtin:sphere")
+        other = threading.Thread(target=lambda: r.render(s, method="volumetric", time=4, **SMALL))
+        other.start()
+        time.sleep(0.5)  # the other thread's frame holds the renderer
+        threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        t = time.time()
+        try:
+            r.render(s, **SMALL)
+            what = "rendered"
+        except KeyboardInterrupt:
+            what = "KeyboardInterrupt"
+        seconds = time.time() - t
+        alive = other.is_alive()
+        other.join()
+        print(json.dumps(dict(what=what, seconds=seconds, alive=alive)))
+    """, timeout=60)
+    assert out["what"] == "KeyboardInterrupt" and out["seconds"] < 2.5
+    assert out["alive"]  # it was waiting, not after the other frame
