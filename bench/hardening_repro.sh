@@ -3,13 +3,16 @@
 # against a tsis binary: one line per case with the exit code, wall time,
 # peak memory and the last lines of stderr. For before/after figures.
 #
-# Usage: bench/hardening_repro.sh TSIS [ITEM…]   (items: 2 3 4 5 8; default all)
+# Usage: bench/hardening_repro.sh TSIS [ITEM…]   (items: 2 3 4 5 8 lib; default all)
+# lib: issue 40's library cases (threads, fork, SIGINT, arrays from Python:
+# bench/hardening_python.py) against TSIS's build's `import tsis`
+# (DIR/python beside DIR/tsis); LIB_TIMEOUT bounds each (30 s).
 # ATLAS_INPUTS, ATLAS_TIMEOUT, FRAMES, ANIM_TIMEOUT, REF_TIMEOUT narrow or bound
 # the slow ones (a binary from before the fixes runs for hours on some).
 # Item 2 plants folders in a private TMPDIR; the other owner's needs root.
 set -u
 B=$(realpath "$1"); shift
-items=${*:-"2 3 4 5 8"}
+items=${*:-"2 3 4 5 8 lib"}
 root=$(cd "$(dirname "$0")/.." && pwd)
 in=$(mktemp -d)
 work=$(mktemp -d)
@@ -63,4 +66,6 @@ for item in $items; do case $item in
   rm -rf $work/ac
   t "item8 reference --spacing 0.002" ${REF_TIMEOUT:-60} env TSIS_CACHE_DIR=$work/pc $B render --method reference --spacing 0.002 -o $work/pc/ref.png
   rm -rf $work/pc ;;
+lib)
+  /usr/bin/python3 "$root/bench/hardening_python.py" "$(dirname "$B")/python" ${LIB_TIMEOUT:-30} ;;
 esac; done

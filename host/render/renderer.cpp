@@ -1,6 +1,9 @@
 #include "render/renderer.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -99,15 +102,53 @@ std::unique_ptr<GlWorker> makeGlWorker(const GlContext& gl) {
     }
 }
 
+// The process whose threads started OpenCL and GL (the first renderer's):
+// PoCL's and Mesa's worker threads are not copied by fork(), so a child
+// waits on them forever, with its parent's renderers or a new one.
+std::atomic<pid_t> gStartedIn{0};
+
+pid_t startedIn() {
+    pid_t expected = 0;
+    const pid_t self = ::getpid();
+    if (gStartedIn.compare_exchange_strong(expected, self)) return self;
+    if (expected != self)
+        fail("no renderer in a child forked after one was made (in process ", expected,
+             "): OpenCL and GL cannot start again without their threads, which fork() does not "
+             "copy; fork before making any renderer, or use multiprocessing's 'spawn' start "
+             "method");
+    return self;
+}
+
 }  // namespace
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
-    : gl_(parseGlChoice(gl)),
+    : pid_(startedIn()),
+      gl_(parseGlChoice(gl)),
       glWorker_(makeGlWorker(gl_)),
       cl_(clDevice),
       sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
                                  clSharingSide(cl_.device()))) {
     raster_.setGlWorker(glWorker_.get());
+}
+
+bool Renderer::forkedAway() const {
+    return ::getpid() != pid_;
+}
+
+void Renderer::forgetAfterAbort() {
+    // A task the worker still draws may use the frame's resources.
+    if (glWorker_) {
+        try {
+            glWorker_->wait();
+        } catch (const std::exception&) {  // the frame's error, already on its way
+        }
+    }
+    cl_.queue().finish();
+    // A pass may have stopped between making a result and recording its key.
+    raster_.invalidateLighting();
+    methods_.clear();
+    singleScatter_.reset();
+    lastView_ = 0;
 }
 
 // The passes free their GL objects in this renderer's context, whichever
@@ -180,7 +221,12 @@ const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderO
         .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
 }
 
-FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
+FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested, Cancel* cancel) {
+    if (forkedAway())
+        fail("this renderer was made in process ", pid_, " and cannot render in its forked child ",
+             ::getpid(),
+             ": OpenCL's and GL's threads are not copied by fork(); fork before making any "
+             "renderer, or use multiprocessing's 'spawn' start method");
     // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
     validateMaterial(scene.material);
@@ -201,6 +247,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     FrameResult result;
     FrameStats& stats = result.stats;
     FrameContext ctx = frameContext(scene, opt, cl_, stats);
+    ctx.cancel = cancel;
 
     // A frame that moves only the camera (or changes σ, N, the method…) reuses
     // the light maps and the flux atlas: same lighting key.
@@ -283,7 +330,13 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
                                 static_cast<double>(accumulator_.framesFor(accumulation)));
             });
     const FrameGraphId<FrameImage> image = raster_.addComposite(graph, ctx, gl, radiosity);
-    graph.execute(stats, image);
+    graph.setCancel(cancel);
+    try {
+        graph.execute(stats, image);
+    } catch (...) {
+        forgetAfterAbort();
+        throw;
+    }
 
     result.width = opt.width;
     result.height = opt.height;

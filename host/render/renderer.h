@@ -3,6 +3,8 @@
 // material or size re-renders without re-creating anything).
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -23,6 +25,7 @@
 #include "render/render_options.h"
 #include "render/single_scatter.h"
 #include "scene/scene.h"
+#include "util/cancel.h"
 
 namespace tsis {
 
@@ -43,7 +46,16 @@ class Renderer {
     explicit Renderer(const std::string& clDevice = "", const std::string& gl = "");
     ~Renderer();
 
-    FrameResult render(const Scene& scene, const RenderOptions& options);
+    // cancel (null: none) is asked between passes and inside the long ones
+    // (volumetric, reference): tsis::Cancelled then, and the next frame starts
+    // afresh. Throws tsis::Error in a child forked after this renderer was made.
+    FrameResult render(const Scene& scene, const RenderOptions& options, Cancel* cancel = nullptr);
+    // Whether this process is not the one that made the renderer (a fork's
+    // child): it may then only be leaked, as its GL and CL threads are gone.
+    bool forkedAway() const;
+    // Leaves the calling thread with no context of this renderer current, so
+    // that another thread may make it current (render() does).
+    void releaseGl() { gl_.release(); }
     // The next progressive frame starts a new mean even if nothing changed.
     void restartAccumulation() { accumulator_ = RadiosityAccumulator(); }
 
@@ -69,6 +81,10 @@ class Renderer {
     const AtlasRadiosity* atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                          const FrameContext& ctx, bool residual);
 
+    // What the next frame cannot reuse after one that stopped early.
+    void forgetAfterAbort();
+
+    pid_t pid_;  // the process that made this renderer
     GlContext gl_;
     // A second GL thread for passes that overlap (gl/gl_worker.h); null where
     // no shared context is offered or TSIS_GL_WORKER=0. Outlives raster_.
