@@ -57,15 +57,16 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     auto albedoOfId = [&](uint32_t id) {
         return id < scene.objectMaterials.size() ? scene.objectMaterials[id].albedo : defaultAlbedo;
     };
-    std::vector<glm::dvec3> base(media.media.count);
-    for (uint32_t m = 0; m < media.media.count; ++m)
-        base[m] = albedoOfId(media.media.materialOf[m]);
-    bool plain = true;
+    // The albedo each slot's profile reflects: a triangle's factor is against
+    // its own slot's (SceneMedia::slotOfMaterial), which is its medium's
+    // unless the solid holds several materials.
+    std::vector<glm::dvec3> base(media.slots());
+    for (size_t k = 0; k < media.slots(); ++k) base[k] = albedoOfId(media.slotMaterial[k]);
+    bool plain = !media.mixed;
     for (size_t t = 0; t < mesh.triangles.size() && plain; ++t) {
         const uint32_t id = mesh.materialOf(t);
-        const uint32_t m = media.media.ofVertex[mesh.triangles[t][0]];
         if (id < scene.objectMaterials.size() && scene.objectMaterials[id].texture) plain = false;
-        if (id != media.media.materialOf[m] && albedoOfId(id) != base[m]) plain = false;
+        if (albedoOfId(id) != base[media.slotOfMaterial(id)]) plain = false;
     }
     if (plain) return atlas;
 
@@ -74,10 +75,12 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     const size_t n = static_cast<size_t>(resolution) * resolution;
     std::vector<glm::vec3> factor(n, glm::vec3(0.0f));
     std::vector<char> covered(n, 0);
+    std::vector<uint32_t> slot(media.mixed ? n : 0, 0);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
         const uint32_t id = mesh.materialOf(t);
-        const glm::dvec3 b = base[media.media.ofVertex[tri[0]]];
+        const uint32_t k = media.slotOfMaterial(id);
+        const glm::dvec3 b = base[k];
         const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
                                               e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
         const double det = e1.x * e2.y - e1.y * e2.x;
@@ -102,6 +105,7 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
                 const glm::dvec3 albedo = surfaceAlbedo(scene, id, tc, defaultAlbedo);
                 const size_t i = static_cast<size_t>(y) * resolution + x;
                 factor[i] = glm::vec3(glm::sqrt(albedo / b));
+                if (!slot.empty()) slot[i] = k;
                 covered[i] = 1;
             }
     }
@@ -119,7 +123,9 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
                         const int u = x + dx, v = y + dy;
                         if (u < 0 || v < 0 || u >= resolution || v >= resolution) continue;
                         const size_t j = static_cast<size_t>(v) * resolution + u;
-                        if (covered[j]) sum += factor[j], ++count;
+                        if (!covered[j]) continue;
+                        sum += factor[j], ++count;
+                        if (!slot.empty()) slot[i] = slot[j];  // any covered neighbour's
                     }
                 if (count > 0) factor[i] = sum / float(count), next[i] = 1;
             }
@@ -128,7 +134,8 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     for (size_t i = 0; i < n; ++i)
         if (!covered[i]) factor[i] = glm::vec3(1.0f);
     atlas.factor = std::move(factor);
-    atlas.key = key.addAll(atlas.factor).digest();
+    atlas.slot = std::move(slot);
+    atlas.key = key.addAll(atlas.factor).addAll(atlas.slot).digest();
     return atlas;
 }
 
