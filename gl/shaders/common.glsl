@@ -71,13 +71,15 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 // facing away skips the lookups (the caller drops their result).
 // A texel of the tent that sees past the point by more than the point's own
 // surface can there (2 + 2 tanθ texels deeper, cosθ ≥ 0.05) does not see that
-// surface: it ends before the texel (a solid in another's shadow whose edge
-// lines up with the occluder's silhouette, docs/design.md §2 "Shadows"), and
-// counted lit it let light into the shadowed solid. Such texels are left out
-// of the mean; a second compare at that depth counts them, only where the
-// taps disagree (a tent all lit is 1 either way, all shadowed 0: a loop of 4
-// or 0 trips, as above). Where every texel sees past the point, nothing
-// occludes it: 1.
+// surface: it ends before the texel. Where another texel of the tent sees an
+// occluder at least as far in front (a solid in another's shadow whose edge
+// lines up with the occluder's silhouette, docs/design.md §2 "Shadows"),
+// such texels are left out of the mean — counted lit, they let light into
+// the shadowed solid. Elsewhere (a convex terminator, whose own surface
+// bulges a little in front, a penumbra on a receiver that goes on) V is the
+// tent's mean as it was. The two more compares run only where the taps
+// disagree (a tent all lit is 1 either way, all shadowed 0: a loop of 4 or
+// 0 trips, as above).
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
@@ -93,15 +95,18 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
         lit += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
     }
-    float beyond = u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0));
-    vec4 f = u_lightViewProj[i] * vec4(q - l * beyond, 1.0);
-    float past = 0.0;
+    vec3 beyond = l * (u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0)));
+    vec4 f = u_lightViewProj[i] * vec4(q - beyond, 1.0);
+    vec4 m = u_lightViewProj[i] * vec4(q + beyond, 1.0);
+    float past = 0.0, near = 0.0;
     int edge = lit > 0.0 && lit < 4.0 ? 4 : 0;
     for (int k = 0; k < edge; ++k) {
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
         past += texture(u_shadowMaps, vec4(s.xy + o, float(i), f.z / f.w * 0.5 + 0.5));
+        near += 1.0 - texture(u_shadowMaps, vec4(s.xy + o, float(i), m.z / m.w * 0.5 + 0.5));
     }
-    return past < 3.999 ? (lit - past) / (4.0 - past) : 1.0;
+    if (near > 0.0 && past > 0.0) return past < 3.999 ? (lit - past) / (4.0 - past) : 1.0;
+    return 0.25 * lit;
 }
 
 // Light i seen from p with normal n: its direction l, c = n·l and falloff;
