@@ -44,10 +44,8 @@ SceneMedia sceneMedia(const Scene& scene, Media media) {
         const uint32_t id = mesh.materialOf(t);
         const size_t k = std::min<size_t>(id, s.slotOfId.size() - 1);
         if (!seen[k]) s.slotOfId[k] = slotOf(id), seen[k] = 1;
-        const uint32_t m =
-            t < mesh.triangles.size() && mesh.triangles[t][0] < s.media.ofVertex.size()
-                ? s.media.ofVertex[mesh.triangles[t][0]]
-                : 0;
+        const uint32_t v = mesh.triangles[t][0];
+        const uint32_t m = v < s.media.ofVertex.size() ? s.media.ofVertex[v] : 0;
         if (m < s.slotOfMedium.size() && s.slotOfId[k] != s.slotOfMedium[m]) s.mixed = true;
     }
     return s;
