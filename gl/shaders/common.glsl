@@ -75,6 +75,17 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 // 0 trips, 0 where the light is behind: llvmpipe runs both sides of a
 // branch, masked, but leaves a loop no lane is in, so a block of pixels
 // facing away skips the lookups (the caller drops their result).
+// A texel of the tent that sees past the point by more than the point's own
+// surface can there (2 + 2 tanθ texels deeper, cosθ ≥ 0.05) does not see that
+// surface: it ends before the texel. Where another texel of the tent sees an
+// occluder at least as far in front (a solid in another's shadow whose edge
+// lines up with the occluder's silhouette, docs/design.md §2 "Shadows"),
+// such texels are left out of the mean — counted lit, they let light into
+// the shadowed solid. Elsewhere (a convex terminator, whose own surface
+// bulges a little in front, a penumbra on a receiver that goes on) V is the
+// tent's mean as it was. The two more compares run only where the taps
+// disagree (a tent all lit is 1 either way, all shadowed 0: a loop of 4 or
+// 0 trips, as above).
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
@@ -84,13 +95,24 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     vec3 s = c.xyz / c.w * 0.5 + 0.5;
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
     vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
-    float sum = 0.0;
+    float lit = 0.0;
     int taps = cosT > 0.0 ? 4 : 0;
     for (int k = 0; k < taps; ++k) {
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
-        sum += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
+        lit += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
     }
-    return 0.25 * sum;
+    vec3 beyond = l * (u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0)));
+    vec4 f = u_lightViewProj[i] * vec4(q - beyond, 1.0);
+    vec4 m = u_lightViewProj[i] * vec4(q + beyond, 1.0);
+    float past = 0.0, near = 0.0;
+    int edge = lit > 0.0 && lit < 4.0 ? 4 : 0;
+    for (int k = 0; k < edge; ++k) {
+        vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
+        past += texture(u_shadowMaps, vec4(s.xy + o, float(i), f.z / f.w * 0.5 + 0.5));
+        near += 1.0 - texture(u_shadowMaps, vec4(s.xy + o, float(i), m.z / m.w * 0.5 + 0.5));
+    }
+    if (near > 0.0 && past > 0.0) return past < 3.999 ? (lit - past) / (4.0 - past) : 1.0;
+    return 0.25 * lit;
 }
 
 // Light i seen from p with normal n: its direction l, c = n·l and falloff;
