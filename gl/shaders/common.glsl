@@ -209,12 +209,26 @@ vec3 scatterAndSpecular(vec3 p, vec3 n, vec3 v, float tag, float eta, float alph
     return s;
 }
 
+// The tone curve (--tone, render_options.h ToneCurve): 0 Reinhard's
+// Ls/(1 + Ls); 1 the ACES filmic fit of Narkowicz (2015),
+// (Ls(2.51 Ls + 0.03))/(Ls(2.43 Ls + 0.59) + 0.14) clamped to 1 (its input
+// the exposed radiance × 0.6, his pre-scale, so that a mid grey lands near
+// Reinhard's); 2 none: Ls clamped to [0, 1] (linear output).
+uniform int u_tone;
+vec3 toneCurve(vec3 ls) {
+    if (u_tone == 1) {
+        vec3 x = 0.6 * ls;
+        return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+    }
+    if (u_tone == 2) return clamp(ls, 0.0, 1.0);
+    return ls / (1.0 + ls);
+}
+
 // The display (resolve.frag, radiance.frag's straight-to-display centres):
-// radiance l exposed, Ls = scale · l, through Reinhard's curve Ls/(1 + Ls)
-// where l shows the object (alpha > 0), else the background's colour.
+// radiance l exposed, Ls = scale · l, through the tone curve where l shows
+// the object (alpha > 0), else the background's colour.
 vec3 exposed(vec4 l, float scale, vec3 background) {
-    vec3 ls = scale * l.rgb;
-    return l.a > 0.0 ? ls / (1.0 + ls) : background;
+    return l.a > 0.0 ? toneCurve(scale * l.rgb) : background;
 }
 
 vec3 srgb(vec3 c) {
@@ -222,8 +236,35 @@ vec3 srgb(vec3 c) {
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
-// The background: a dark vertical gradient over the frame's height.
-vec3 backgroundAt(float y, float height) { return vec3(mix(0.004, 0.03, y / height)); }
+// A lat-long map's (u, v) of unit direction d in the map's frame
+// (scene/environment.h latLongCoordinates): v = 0 straight up (+y), the
+// centre column along −z.
+vec2 latLongUv(vec3 d) {
+    return vec2(atan(d.x, -d.z) / (2.0 * PI) + 0.5, acos(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
+// The background (--background, render_options.h Background), as display
+// colour before sRGB: 0 a dark vertical gradient over the frame's height; 1
+// transparent (0, the display's alpha 0); 2 the environment map seen through
+// the camera (the whole map, its sun included, × its intensity), exposed by
+// u_scale and through the tone curve like the object.
+uniform int u_background;
+uniform mat4 u_inverseViewProj;
+uniform mat3 u_backgroundToMap;
+uniform float u_backgroundScale;
+uniform sampler2D u_envBackground;
+uniform vec2 u_frameSize;
+vec3 backgroundAt(vec2 fragCoord, float scale) {
+    if (u_background == 1) return vec3(0.0);
+    if (u_background == 2) {
+        vec2 ndc = fragCoord / u_frameSize * 2.0 - 1.0;
+        vec4 near = u_inverseViewProj * vec4(ndc, -1.0, 1.0);
+        vec4 far = u_inverseViewProj * vec4(ndc, 1.0, 1.0);
+        vec3 d = normalize(u_backgroundToMap * (far.xyz / far.w - near.xyz / near.w));
+        return toneCurve(scale * u_backgroundScale * textureLod(u_envBackground, latLongUv(d), 0.0).rgb);
+    }
+    return vec3(mix(0.004, 0.03, fragCoord.y / u_frameSize.y));
+}
 
 // The log-average's term of radiance l, (log(1e-12 + Y), 1) where l shows the
 // object, else 0 (reduce.frag sums it).

@@ -34,8 +34,7 @@ layout(location = 0) out vec4 o_radiance;
 
 vec3 envReflection(vec3 n, vec3 v, float tag) {
     vec3 r = normalize(u_worldToMap * reflect(-v, n));
-    vec2 uv = vec2(atan(r.x, -r.z) / (2.0 * PI) + 0.5, acos(clamp(r.y, -1.0, 1.0)) / PI);
-    vec3 l = textureLod(u_envPrefiltered, uv, 0.0).rgb;
+    vec3 l = textureLod(u_envPrefiltered, latLongUv(r), 0.0).rgb;
     vec2 size = vec2(textureSize(u_envAlbedo, 0));
     float m = float(max(int(tag + 0.5) - 1, 0));
     float s = sqrt(clamp(dot(n, v), 0.0, 1.0));
@@ -116,7 +115,6 @@ void main() {
 // Straight to the display: o_radiance the display colour (resolve.frag's
 // tone map of this one sample), and the log-average's term.
 uniform float u_scale;
-uniform float u_frameHeight;
 layout(location = 1) out vec4 o_logLuminance;
 layout(location = 2) out vec4 o_edge;
 #else
@@ -142,8 +140,8 @@ void main() {
     o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
     vec4 l = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
 #if TSIS_DISPLAY
-    vec3 background = backgroundAt(gl_FragCoord.y, u_frameHeight);
-    o_radiance = vec4(srgb(exposed(l, u_scale, background)), 1.0);
+    vec3 background = backgroundAt(gl_FragCoord.xy, u_scale);
+    o_radiance = vec4(srgb(exposed(l, u_scale, background)), u_background == 1 ? l.a : 1.0);
     o_logLuminance = logLuminance(l);
 #else
     o_radiance = l;

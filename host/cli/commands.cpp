@@ -130,7 +130,9 @@ int runRender(const std::vector<std::string>& argv) {
     }
 
     outputs.write(output, [&](const std::filesystem::path& f) {
-        writeImage8(f.string(), frame.width, frame.height, 3, frame.rgb8);
+        int channels = 3;
+        const std::vector<uint8_t> pixels = frame.displayPixels(channels);
+        writeImage8(f.string(), frame.width, frame.height, channels, pixels);
     });
     if (aovDir) writeAovOutputs(outputs, *aovDir, frame);
     if (statsPath) {
@@ -139,7 +141,7 @@ int runRender(const std::vector<std::string>& argv) {
         j["material"] = scene.material.name;
         // The scene as options: a glTF's camera and lights as they were used.
         j["scene_args"] =
-            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args));
+            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), scene.sizeMm);
         j["lavg"] = frame.lavg;
         if (truth)
             j["truth_check"] = Json{{"rel_rmse", truth->relRmse},

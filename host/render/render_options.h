@@ -62,6 +62,24 @@ enum class VolumetricEstimator { Camera, Light };
 VolumetricEstimator parseVolumetricEstimator(const std::string& name);
 const char* volumetricEstimatorName(VolumetricEstimator estimator);
 
+// The display's tone curve (gl/shaders/common.glsl toneCurve, README
+// "Exposure, reflection and antialiasing"): Reinhard's Ls/(1 + Ls), ACES
+// fitted (Narkowicz 2015) or none (the exposed radiance clamped to [0, 1]).
+// The values are the shader's u_tone.
+enum class ToneCurve { Reinhard = 0, Aces = 1, None = 2 };
+// "reinhard", "aces" or "none"; throws tsis::Error for anything else.
+ToneCurve parseToneCurve(const std::string& name);
+const char* toneCurveName(ToneCurve tone);
+
+// What the display shows where the object does not (gl/passes.h
+// DisplayBackground): the dark gradient (color), nothing (transparent: alpha
+// 0 in the PNG, the radiance EXR's alpha the coverage) or the --env map seen
+// through the camera (env). The values are the shader's u_background.
+enum class Background { Color = 0, Transparent = 1, Env = 2 };
+// "color", "transparent" or "env"; throws tsis::Error for anything else.
+Background parseBackground(const std::string& name);
+const char* backgroundName(Background background);
+
 // The user-set fields' names, ranges, help and the methods that read them
 // are declared once, in render/render_params.cpp; a new field needs a row there.
 struct RenderOptions {
@@ -82,6 +100,8 @@ struct RenderOptions {
     float exposure = 3.3f;
     bool autoExposure = false;
     float key = 0.18f;
+    ToneCurve tone = ToneCurve::Reinhard;
+    Background background = Background::Color;
     // The GGX lobe (physics/ggx.h): on, and its roughness R (α = R²); 0.3
     // reads as polished marble or skin.
     bool specular = true;

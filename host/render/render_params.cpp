@@ -234,6 +234,16 @@ std::vector<RenderParam> makeParams() {
              &O::autoExposure, true),
         number({"key", "K  --auto-exposure's key: key/L_avg × radiance", kEvery, kDisplay}, &O::key,
                {1e-4, 100}),
+        choice({"tone",
+                "T  the display's tone curve after the exposure: reinhard (Ls/(1+Ls)), aces "
+                "(Narkowicz's ACES fit) or none (linear, clamped to 1)",
+                kEvery, kDisplay},
+               &O::tone, parseToneCurve, toneCurveName, ToneCurve::Aces),
+        choice({"background",
+                "B  what the image shows around the object: color (a dark gradient), "
+                "transparent (alpha 0 in the PNG) or env (the --env map through the camera)",
+                kEvery, kDisplay},
+               &O::background, parseBackground, backgroundName, Background::Env),
         number({"roughness", "R  the surface's GGX roughness (alpha = R^2), 0.05 to 1", kEvery,
                 kDisplay},
                &O::roughness, {0.05, 1}),

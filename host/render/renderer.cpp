@@ -59,7 +59,9 @@ void collectAovs(FrameGraph& graph, const RasterHandles& gl, FrameGraphId<Radios
                  FrameGraphId<FrameImage> image, const FrameContext& ctx, FrameResult& result) {
     const int w = ctx.width, h = ctx.height, res = ctx.atlasResolution;
     result.radiosity = toImage(graph.get(radiosity).rgba, w, h, 3);
-    result.radiance = toImage(graph.get(image).radiance, w, h, 3);
+    // Transparent: the alpha channel too (the fraction of the pixel covered).
+    result.radiance = toImage(graph.get(image).radiance, w, h,
+                              ctx.options->background == Background::Transparent ? 4 : 3);
     const RenderTarget& gbuffer = *graph.get(gl.gbuffer).target;
     const std::vector<float> position = gbuffer.readRGBA(0);
     result.position = toImage(position, w, h, 3);
@@ -221,6 +223,17 @@ const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderO
         .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
 }
 
+std::vector<uint8_t> FrameResult::displayPixels(int& channels) const {
+    channels = alpha8.empty() ? 3 : 4;
+    if (alpha8.empty()) return rgb8;
+    std::vector<uint8_t> rgba(alpha8.size() * 4);
+    for (size_t i = 0; i < alpha8.size(); ++i) {
+        for (size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = rgb8[i * 3 + c];
+        rgba[i * 4 + 3] = alpha8[i];
+    }
+    return rgba;
+}
+
 FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested, Cancel* cancel) {
     if (forkedAway())
         fail("this renderer was made in process ", pid_, " and cannot render in its forked child ",
@@ -235,6 +248,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
+    if (opt.background == Background::Env && !scene.env)
+        fail("--background env shows the --env map: give --env FILE");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     // The composite's samples are one render target (docs/design.md "The composite").
@@ -341,6 +356,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     result.width = opt.width;
     result.height = opt.height;
     result.rgb8 = std::move(graph.get(image).rgb8);
+    result.alpha8 = std::move(graph.get(image).alpha8);
     result.lavg = graph.get(image).lavg;
     if (opt.keepAovs) collectAovs(graph, gl, radiosity, image, ctx, result);
     stats.addStage("total", total.ms(), -1, totalCpu.ms());

@@ -32,6 +32,11 @@ namespace tsis {
 struct FrameResult {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb8;  // tone-mapped sRGB image, row 0 = top
+    // With --background transparent: its alpha (straight, the fraction of
+    // the pixel the object covers), row 0 = top; else empty.
+    std::vector<uint8_t> alpha8;
+    // rgb8 (3 channels) or with alpha8 RGBA (4), as the PNG holds it.
+    std::vector<uint8_t> displayPixels(int& channels) const;
     // With RenderOptions::keepAovs (row 0 = top; atlas row 0 = v = 1):
     ImageF radiosity, radiance, position, normal, coverage, fluxAtlas;
     ImageF medium;   // the pixel's medium (mesh/media.h), −1 where uncovered

@@ -29,16 +29,6 @@ namespace {
 // (~1e-7 of the size), far below any feature the dipole resolves.
 constexpr double kShadowOffset = 1e-4;
 
-double boundingDiagonal(const Mesh& mesh) {
-    if (mesh.positions.empty()) return 0.0;
-    glm::dvec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
-    for (const glm::vec3& p : mesh.positions) {
-        lo = glm::min(lo, glm::dvec3(p));
-        hi = glm::max(hi, glm::dvec3(p));
-    }
-    return glm::length(hi - lo);
-}
-
 }  // namespace
 
 double smallestMeanFreePath(const Material& m) {

@@ -16,7 +16,10 @@ namespace tsis {
 // What the panel shows but does not change.
 struct PanelInfo {
     std::string mesh;  // name, triangles
-    double fps = 0;    // frames rendered per second, lately
+    // The file's materials (fileMaterialLines), shown beside the sliders'.
+    std::vector<std::string> fileMaterials;
+    bool sceneMaterialUsed = true;
+    double fps = 0;  // frames rendered per second, lately
     int accumulated = 0;
     const FrameStats* stats = nullptr;  // the last frame's
     std::string frameError;

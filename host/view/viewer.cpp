@@ -120,6 +120,7 @@ class Viewer {
     std::string meshError_;
     const Mesh* objectsOf_ = nullptr;  // the mesh objects_ describes (once a mesh, for the panel)
     std::string objects_, objectsMaterial_;
+    FileMaterialLines fileMaterials_;  // the file's materials, for the panel (with objects_)
     std::unique_ptr<BackgroundTask<FrameResult>> referenceTask_;
     ViewState referenceTaskState_;
     Clock::time_point referenceStart_;
@@ -455,7 +456,10 @@ void Viewer::panel() {
             objectsOf_ = state_.mesh.get();
             objectsMaterial_ = state_.material.name;
             objects_ = objectsSummary(*state_.mesh, state_);
+            fileMaterials_ = fileMaterialLines(*state_.mesh, state_);
         }
+        info.fileMaterials = fileMaterials_.lines;
+        info.sceneMaterialUsed = fileMaterials_.sceneMaterialUsed;
         // The objects: separate solids, light never crossing between them.
         info.mesh = concat(state_.meshSpec, "  (", state_.mesh->triangles.size(), " triangles; ",
                            objects_, ")");
