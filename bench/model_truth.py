@@ -90,9 +90,9 @@ VALIDATION = {
 }
 
 MODELS = [
-    ("thesis (--model thesis)", ["--model", "thesis"]),
-    ("old default (dipole + jensen)", ["--transport", "off"]),
-    ("new default", []),
+    ("the thesis' model = the old default (--model thesis)", ["--model", "thesis"]),
+    ("the new default (--transport object)", []),
+    ("the new default + --single-scatter", ["--single-scatter"]),
 ]
 
 
@@ -167,7 +167,6 @@ def table(tsis):
                 render(tsis, args, aov, extra)
                 got = pixels(os.path.join(aov, "radiance.exr"))
                 cov = pixels(os.path.join(aov, "coverage.exr"))
-                ms = json.load(open(os.path.join(aov, "stats.json")))
             rel, noise, sub = errors(got, ref, err, cov)
             cells.append((rel, sub))
         rows.append((name, thick, noise, cells))

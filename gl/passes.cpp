@@ -244,10 +244,8 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
 
 CompositePass::CompositePass()
     : centrePrograms_("fullscreen.vert", "radiance.frag",
-                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES", "TSIS_DISPLAY",
-                       "TSIS_SINGLE_SCATTER"}),
-      samplePrograms_("fullscreen.vert", "radiance.frag",
-                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_SINGLE_SCATTER"},
+                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES", "TSIS_DISPLAY"}),
+      samplePrograms_("fullscreen.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
                       "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
@@ -353,10 +351,9 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         glClearBufferfv(GL_COLOR, marks, zero);
     }
     const unsigned features = (alpha > 0 ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
-    const bool scatter = materials.singleScatter();
-    const ShaderProgram& centre = centrePrograms_.get(features | (findEdges ? 4u : 0u) |
-                                                      (direct ? 8u : 0u) | (scatter ? 16u : 0u));
-    const ShaderProgram& samples = samplePrograms_.get(features | (scatter ? 4u : 0u));
+    const ShaderProgram& centre =
+        centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
+    const ShaderProgram& samples = samplePrograms_.get(features);
     for (const ShaderProgram* p : {&centre, &samples}) {
         p->use();
         bindLights(*p, lights, kShadowUnit, shadows);

@@ -68,7 +68,8 @@ TEST(MaterialsCli, ObjMaterialsAndTextureGiveEachCubeItsAlbedo) {
     // sRGB 200/255 decodes to 0.5776 (linear).
     writeImage8(dir.file("grey.png"), 4, 4, 3, std::vector<uint8_t>(48, 200));
     const double textured = std::pow((200.0 / 255 + 0.055) / 1.055, 2.4);
-    const std::string common = "render --mesh " + dir.file("cubes.obj") +
+    // The thesis' model: the albedos' ratios are its profile's.
+    const std::string common = "render --model thesis --mesh " + dir.file("cubes.obj") +
                                " --size-mm 27.8567765544 --width 160 --height 120 --eye 0,0,60 "
                                "--light dir:0,0,-1:1,1,1 --mfp 0.05,0.05,0.05 --atlas-res 1024 ";
     const RunResult r = runTsis(common + "-o " + dir.file("a.png") + " --aov " + dir.file("a"));
@@ -150,7 +151,7 @@ TEST(MaterialsCli, OneSolidOfTwoMaterialsScattersEachWithItsOwn) {
         const std::string name = std::string(l) + "_" + r;
         std::ofstream(dir.file(name + ".obj")) << splitBoxObj(l, r);
         const RunResult run =
-            runTsis("render --mesh " + dir.file(name + ".obj") +
+            runTsis("render --model thesis --mesh " + dir.file(name + ".obj") +
                     " --size-mm 17.3205080757 --width 96 --height 96 --eye 0,20,30 --mfp 1,1,1 "
                     "--light dir:0.2,-0.4,-1:1,1,1 --atlas-res 512 -o " +
                     dir.file(name + ".png") + " --aov " + dir.file(name));

@@ -95,6 +95,7 @@ TEST(Reference, MatchesAnIndependentDoubleSum) {
     scene.camera.up = glm::vec3(0, 0, -1);
     scene.camera.fovYDegrees = 40;
     RenderOptions opt;
+    opt.transport = Transport::Off;  // the thesis' model: its closed forms
     opt.width = opt.height = 24;
     const FrameResult f = test::renderWith(scene, opt, "reference");
     const BruteForce brute(scene, ReferenceMethod::defaultSpacing(scene.material) / 4);
@@ -137,6 +138,7 @@ TEST(Reference, MatchesAnIndependentDoubleSum) {
 TEST(Reference, PlaneMatchesClosedFormWithinHalfAPercent) {
     const Scene scene = test::planeScene("skin1", 12.0);
     RenderOptions opt;
+    opt.transport = Transport::Off;  // the thesis' model: its closed forms
     opt.width = opt.height = 32;
     const FrameResult f = test::renderWith(scene, opt, "reference");
     const glm::dvec3 expected = test::planeClosedForm(scene.material);
@@ -181,6 +183,7 @@ TEST(Reference, HalvingTheSpacingChangesLessThanHalfAPercent) {
                     {Light::Type::Directional, glm::vec3(-0.3f, -0.2f, -1), glm::vec3(0.2f)}};
     scene.camera.eye = glm::vec3(0, 2, 12);
     RenderOptions opt;
+    opt.transport = Transport::Off;  // the thesis' model: its closed forms
     opt.width = opt.height = 48;
     const double h = ReferenceMethod::defaultSpacing(scene.material);
     opt.spacingMm = h;

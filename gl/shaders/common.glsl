@@ -33,12 +33,6 @@ vec4 mediumOf(float tag) {
     int m = max(int(tag + 0.5) - 1, 0);
     return texelFetch(u_media, ivec2(m % 4096, m / 4096), 0);
 }
-// The medium's single-scattering albedo α′ (gl/material_tables.h: the rows
-// below η's), 0 where the composite adds none.
-vec3 scatterAlbedoOf(float tag) {
-    int m = max(int(tag + 0.5) - 1, 0);
-    return texelFetch(u_media, ivec2(m % 4096, textureSize(u_media, 0).y / 2 + m / 4096), 0).rgb;
-}
 // With u_textured, the albedo factor of each atlas texel (render/albedo_atlas.h):
 // light entering there is scaled by it, light leaving too.
 // A uniform, or a constant in a program compiled for one case (TSIS_TEXTURED
@@ -175,36 +169,6 @@ vec3 specularRadiance(vec3 p, vec3 n, vec3 v, float alpha, float eta) {
         // cost most of this pass.
         if (f < 1e-4 / PI) continue;
         s += f * e * visibility(i, p, n, l);
-    }
-    return s;
-}
-
-// The half-space's single scattering towards v (docs/design.md §14): a beam
-// refracted in at θi′, scattered once (isotropic, albedo α′) on the refracted
-// view ray at θo′ and refracted out,
-//   L⁽¹⁾ = α′ Ft(θi) Ft(θo) E cosθi V / (4π η² (cosθi′ + cosθo′))
-// summed over the lights (E = I·falloff) — what --transport object's walks
-// leave out (volumetric/patch_transfer.h), for the light's own incidence —
-// and, with `lobe`, the GGX lobe's reflection (specularRadiance's) in the same
-// pass over the lights: one visibility a light for both.
-vec3 scatterAndSpecular(vec3 p, vec3 n, vec3 v, float tag, float eta, float alpha, bool lobe) {
-    vec3 albedo = scatterAlbedoOf(tag);
-    float co = clamp(dot(n, v), 0.0, 1.0);
-    float inv2 = 1.0 / (eta * eta);
-    float coT = sqrt(max(0.0, 1.0 - (1.0 - co * co) * inv2));
-    float k = fresnelT(eta, co) * inv2 / (4.0 * PI);
-    vec3 s = vec3(0.0);
-    // A constant trip count, as in irradiance().
-    for (int i = 0; i < MAX_LIGHTS; ++i) {
-        if (i >= u_lightCount) break;
-        vec3 l;
-        float c, falloff;
-        if (!facing(i, p, n, l, c, falloff)) continue;
-        float ciT = sqrt(max(0.0, 1.0 - (1.0 - c * c) * inv2));
-        vec3 e = u_lightRgb[i] * (c * falloff);
-        vec3 r = albedo * (k * fresnelT(eta, c) / (ciT + coT));
-        if (lobe) r += vec3(ggxBrdf(eta, alpha, n, v, l));
-        s += r * e * visibility(i, p, n, l);
     }
     return s;
 }

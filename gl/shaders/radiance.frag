@@ -13,8 +13,7 @@
 // stands for the pixel), packed: a full-screen pass over a target of one
 // u_aa × u_aa block per marked pixel, in the order of u_edgePixels. Features (0 or 1, gl/shader.h
 // ShaderVariants): TSIS_SPECULAR the lobe, TSIS_ENV_REFLECT the
-// environment's reflection with it, TSIS_SINGLE_SCATTER the half-space's
-// single scattering (--transport object); the centres' TSIS_DISPLAY writes the
+// environment's reflection with it; the centres' TSIS_DISPLAY writes the
 // display colour and the log-average's term instead of the radiance, when
 // the exposure is known before the frame (no radiance image is needed then).
 uniform sampler2D u_radiosity;      // B at the frame's pixels
@@ -49,13 +48,11 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     if (dot(n, v) < 0.0) n = -n;
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
-#if TSIS_SINGLE_SCATTER
-    l += scatterAndSpecular(p.xyz, n, v, p.w, medium.r, u_alpha, TSIS_SPECULAR != 0);
-#elif TSIS_SPECULAR
+#if TSIS_SPECULAR
     l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
-#endif
-#if TSIS_SPECULAR && TSIS_ENV_REFLECT
+#if TSIS_ENV_REFLECT
     l += envReflection(n, v, p.w);
+#endif
 #endif
     return l;
 }

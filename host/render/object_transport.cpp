@@ -32,9 +32,7 @@ PatchTransferOptions transferOptions(uint32_t seed) {
     read("TSIS_TRANSPORT_PHOTONS", o.photons, 1, 1 << 20);
     if (const char* v = std::getenv("TSIS_TRANSPORT_ENTRY_SIN"))
         o.entrySin = std::clamp(parseNumber("TSIS_TRANSPORT_ENTRY_SIN", v), 0.05, 0.95);
-    int single = 1;
-    read("TSIS_TRANSPORT_EXCLUDE_SINGLE", single, 0, 1);
-    o.excludeSingle = single != 0;
+
     return o;
 }
 
@@ -158,10 +156,12 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
                           FrameGraph::Resources& res) {
     const SceneMedia& sm = *ctx.media;
     const size_t media = sm.etaOfMedium.size();
+    // The walks' seed is the fit's own, not the frame's: methods without
+    // random numbers stay the same image for any --seed.
     // What the fit depends on besides the geometry: each medium's material,
     // profile and exit term.
     Hasher inputs;
-    inputs.add(kPatchTransferVersion).add(ctx.options->exit).add(ctx.options->seed);
+    inputs.add(kPatchTransferVersion).add(ctx.options->exit);
     std::vector<TransferMedium> mediaIn(media);
     exitancePerB_.assign(media, 1.0);
     for (size_t m = 0; m < media; ++m) {
@@ -172,10 +172,12 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
         exitancePerB_[m] = exitScale(ctx.options->exit, mat.eta) / normalizedExitScale(mat.eta);
         inputs.add(mat.sigmaSPrime).add(mat.sigmaA).add(mat.eta).add(slotProfiles[slot].key);
     }
-    const PatchTransferOptions opt = transferOptions(ctx.options->seed);
+    PatchTransferOptions opt = transferOptions(1);
+    opt.excludeSingle = addsSingleScatter(*ctx.options);
     inputs.add(opt.patches)
         .add(opt.photons)
         .add(opt.modelSamples)
+        .add(opt.excludeUnscattered)
         .add(opt.excludeSingle)
         .add(opt.entrySin);
     const uint64_t geometry = Hasher(position.version).add(normal.version).digest();
@@ -218,6 +220,8 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
 
     // The patches' texels for the device's sums (CSR by patch).
     const auto patches = static_cast<size_t>(transfer_.patches());
+    grids_.clear();
+    if (patches == 0) return;  // nothing covered: no correction
     std::vector<int> start(patches + 1, 0), list(tx.size());
     for (int p : transfer_.texelPatch) ++start[static_cast<size_t>(p) + 1];
     for (size_t p = 0; p < patches; ++p) start[p + 1] += start[p];

@@ -117,15 +117,6 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         const float eta = ctx.media->etaOfMedium[m];
         media.emplace_back(eta, static_cast<float>(exitScale(ctx.options->exit, eta)));
     }
-    // --transport object's single scattering in the composite, unless
-    // --single-scatter adds Jensen's on the CL side.
-    std::vector<glm::vec3> scatter;
-    if (addsTransport(*ctx.options) && !addsSingleScatter(*ctx.options))
-        for (size_t m = 0; m < ctx.media->etaOfMedium.size(); ++m) {
-            const Material& mat =
-                ctx.scene->materialOf(ctx.media->slotMaterial[ctx.media->slotOfMedium[m]]);
-            scatter.emplace_back(mat.sigmaSPrime / (mat.sigmaSPrime + mat.sigmaA));
-        }
     Hasher etas;
     for (const glm::vec2& m : media) etas.add(m.x);
     const uint64_t eta = etas.digest();
@@ -133,8 +124,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
 
     graph.addPass(
         "upload_mesh", [&](FrameGraph::Builder& b) { b.write(h.mesh); },
-        [this, &ctx, meshHash, h, media, scatter](FrameGraph::Resources& res) {
-            materials_.updateMedia(media, scatter);
+        [this, &ctx, meshHash, h, media](FrameGraph::Resources& res) {
+            materials_.updateMedia(media);
             materials_.updateAlbedo(ctx.albedo->factor, ctx.atlasResolution, ctx.albedo->key);
             uploadMesh(ctx.scene->mesh, meshHash);
             res.write(h.mesh) = gpuMesh_.get();

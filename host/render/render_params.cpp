@@ -172,7 +172,7 @@ std::vector<RenderParam> makeParams() {
                 "profile's, fitted once per mesh and material and cached); README \"Physical "
                 "accuracy\"",
                 kProfiled, kRadiosity},
-               &O::transport, parseTransport, transportName, Transport::Object),
+               &O::transport, parseTransport, transportName, Transport::Off),
         // The exit term changes only the radiance, but volumetric's radiosity
         // is divided by it.
         choice(

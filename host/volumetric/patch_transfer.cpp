@@ -53,8 +53,9 @@ double patchDistance(const glm::vec3& x, const glm::vec3& n, const glm::vec3& c,
 // walks' exit lookups.
 class PatchIndex {
   public:
-    PatchIndex(const PatchTransfer& t, int m) : t_(t), first_(t.mediumStart[m]) {
-        const int last = t.mediumStart[m + 1];
+    PatchIndex(const PatchTransfer& t, int m)
+        : t_(t), first_(t.mediumStart[m]), last_(t.mediumStart[m + 1]) {
+        const int last = last_;
         lo_ = glm::vec3(std::numeric_limits<float>::max());
         glm::vec3 hi(-std::numeric_limits<float>::max());
         double r = 0;
@@ -87,7 +88,7 @@ class PatchIndex {
                     }
                 }
         if (best >= 0) return best;
-        for (int p = first_; p < t_.mediumStart[t_.medium[first_] + 1]; ++p) {
+        for (int p = first_; p < last_; ++p) {
             const double d = patchDistance(x, n, t_.centre[p], t_.normal[p], radius2_);
             if (d < bestD) bestD = d, best = p;
         }
@@ -107,7 +108,7 @@ class PatchIndex {
     size_t cellOf(const glm::vec3& x) const { return index(coords(x)); }
 
     const PatchTransfer& t_;
-    int first_;
+    int first_, last_;
     glm::vec3 lo_;
     float cell_;
     int dims_[3];
@@ -292,8 +293,10 @@ void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchT
                 pos = hit.position - hit.normal * (cosI > 0 ? eps : -eps);
                 continue;
             }
-            // Single scattering is the composite's, for the light's own
-            // incidence (docs/design.md §14): not counted here.
+            // Light that crosses a thin part unscattered leaves along the
+            // light's direction, not diffusely (docs/design.md §14): not counted.
+            if (scatterings == 0 && opt.excludeUnscattered) break;
+            // With --single-scatter the frame adds Jensen's L⁽¹⁾ itself.
             if (scatterings == 1 && opt.excludeSingle) break;
             const int j = index.nearest(glm::vec3(hit.position), glm::vec3(hit.normal));
             row[static_cast<size_t>(j - first)] += w;

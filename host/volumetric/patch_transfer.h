@@ -32,7 +32,7 @@
 namespace tsis {
 
 // Bump when the fit or its file changes.
-constexpr int kPatchTransferVersion = 2;
+constexpr int kPatchTransferVersion = 4;
 
 // The covered texels of the geometry atlas, on the host.
 struct SurfaceTexels {
@@ -55,9 +55,12 @@ struct PatchTransferOptions {
     int patches = 384;      // in all media together
     int photons = 1024;     // per patch and channel
     int modelSamples = 16;  // entry points per patch for the model's transfer
-    // Leave out the paths that leave after one scattering: the composite adds
-    // single scattering for the light's own incidence.
-    bool excludeSingle = true;
+    // Leave out the paths that leave unscattered (across a thin part): they
+    // leave along the light's direction, not diffusely.
+    bool excludeUnscattered = true;
+    // Leave out the paths that leave after one scattering (--single-scatter
+    // adds that term for the light's own entry).
+    bool excludeSingle = false;
     double entrySin = 0.7;  // sin θe of the walks' entry
     uint32_t seed = 1;
 };

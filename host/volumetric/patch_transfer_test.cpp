@@ -78,7 +78,7 @@ TEST(PatchTransfer, AWhiteMediumLetsOutWhatEnters) {
             const SurfaceTexels tx = triangleTexels(mesh);
             Material m{"white", glm::dvec3(2.0, 1.0, 0.5), glm::dvec3(0.0), eta};
             PatchTransferOptions o = small(12, 400);
-            o.excludeSingle = false;
+            o.excludeUnscattered = false;
             const PatchTransfer t = fitPatchTransfer(mesh, tx, {medium(m, 4 * radius)}, o, 2);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(t.truthOut[0][c], 1.0, 1e-6) << "radius " << radius << " eta " << eta;

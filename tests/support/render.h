@@ -33,8 +33,13 @@ inline FrameResult renderWith(const Scene& scene, RenderOptions opt, const std::
 
 // A small frame: size² pixels, the flux atlas and the light maps at
 // resolution², N = samples.
+// The thesis' model (--model thesis): the methods' tests check how they
+// integrate the profile, against its closed forms and the reference; the
+// object's transport has its own (volumetric/patch_transfer_test.cpp,
+// tests/model_truth_test.cpp).
 inline RenderOptions smallOptions(int size, int resolution, int samples = RenderOptions{}.samples) {
     RenderOptions opt;
+    opt.transport = Transport::Off;
     opt.width = opt.height = size;
     opt.atlasResolution = resolution;
     opt.lightResolution = resolution;
