@@ -266,16 +266,16 @@ TEST(GLTF, ExternalFilesOutsideTheFolderOrNotRegularAreRefused) {
         }
         return std::string();
     };
-    EXPECT_NE(load("../quad.bin").find("outside the glTF's folder"), std::string::npos);
+    EXPECT_NE(load("../quad.bin").find("outside the asset's folder"), std::string::npos);
     // tinygltf joins an absolute URI to the folder, then to the working
     // folder: not found, or found outside.
     for (const std::string& uri : {(dir / "quad.bin").string(), std::string("/dev/zero")}) {
         const std::string msg = load(uri);
         EXPECT_TRUE(msg.find("not found") != std::string::npos ||
-                    msg.find("outside the glTF's folder") != std::string::npos)
+                    msg.find("outside the asset's folder") != std::string::npos)
             << uri << ": " << msg;
     }
-    EXPECT_NE(load("link.bin").find("outside the glTF's folder"), std::string::npos);
+    EXPECT_NE(load("link.bin").find("outside the asset's folder"), std::string::npos);
     EXPECT_NE(load("fifo.bin").find("is a FIFO"), std::string::npos);
     fs::rename(dir / "quad.bin", dir / "sub" / "quad.bin");
     EXPECT_EQ(load("quad.bin"), "");

@@ -222,7 +222,7 @@ TEST(OBJ, MaterialsFromMtlLibraries) {
                                  ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
                                  "Kd, map_Kd, Ni)\n"));
     EXPECT_THAT(notes,
-                HasSubstr(n + "material library '" + dir.file("gone.mtl") + "': cannot open"));
+                HasSubstr(n + "material library '" + dir.file("gone.mtl") + "' not found"));
     EXPECT_THAT(notes,
                 HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
     EXPECT_THAT(notes, HasSubstr(n + "material 'ghost' (usemtl) defined in no material library: "

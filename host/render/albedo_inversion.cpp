@@ -37,7 +37,7 @@ std::string albedoProblem(const glm::dvec3& albedo) {
 }
 
 std::string meanFreePathProblem(const glm::dvec3& mfp) {
-    return channelProblem("mean free path", mfp, 0.0, 1e6, true);
+    return channelProblem("mean free path (mm)", mfp, kMinMeanFreePath, kMaxMeanFreePath, false);
 }
 
 Material materialFromAlbedo(const std::string& name, const glm::dvec3& albedo,
