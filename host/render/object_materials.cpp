@@ -97,8 +97,9 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
             o.medium.sigmaA = *f.sigmaA;
         }
         o.medium.eta = eta;
+        o.medium.name = name;
         if (const std::string p = materialProblem(o.medium); !p.empty())
-            fail("mesh '", file, "': material '", name, "': ", p);
+            fail("mesh '", file, "': ", p);
         if (over.mfp)
             o.medium = inversions.of(name, albedoOf(o.medium, model), *over.mfp, eta, model);
     } else {
