@@ -7,7 +7,7 @@
 //    and again while reading: no unbounded read;
 //  * an asset's own files (an OBJ's mtllib and map_Kd, a glTF's buffers and
 //    images) only inside the asset's folder, links resolved, unless the user
-//    opted in (--allow-outside-assets, tsis.Options.allow_outside_assets).
+//    opted in (--allow-outside-assets, the library's option of that name).
 #pragma once
 
 #include <cstdint>
