@@ -42,8 +42,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string json =
-        kHead + std::string(reinterpret_cast<const char*>(data), size) + "\n}";
+    const std::string json = kHead + std::string(reinterpret_cast<const char*>(data), size) + "\n}";
     try {
         tsis::FileView view;
         tsis::parseGLTF(json, "fuzz.gltf", tsis::fuzz::plantedFolder(), &view);
