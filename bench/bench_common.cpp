@@ -28,6 +28,11 @@ BenchCase makeCase(const std::vector<std::string>& renderArgs) {
     return c;
 }
 
+BenchCase makeThesisCase(std::vector<std::string> renderArgs) {
+    renderArgs.insert(renderArgs.begin(), {"--model", "thesis"});
+    return makeCase(renderArgs);
+}
+
 Summary summarize(std::vector<double> v) {
     Summary s;
     s.count = static_cast<int>(v.size());

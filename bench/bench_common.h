@@ -18,6 +18,9 @@ struct BenchCase {
     RenderOptions options;
 };
 BenchCase makeCase(const std::vector<std::string>& renderArgs);
+// The same under the thesis' model (--model thesis): the benches that
+// reproduce the thesis' tables keep it, so the reproduction does not move.
+BenchCase makeThesisCase(std::vector<std::string> renderArgs);
 
 struct Summary {
     double median = 0, min = 0, max = 0;

@@ -75,7 +75,7 @@ int run(const BenchArgs& a) {
         " frames after the frame measured for error. Plots: `error_<case>.png`.\n\n";
     const double thresholds[] = {0.05, 0.02, 0.01};
     for (const Case& cs : cases) {
-        BenchCase base = makeCase(cs.args);
+        BenchCase base = makeThesisCase(cs.args);
         const ReferenceImage ref = renderReference(renderer, base);
         std::map<std::string, std::vector<std::pair<double, double>>> curves;  // (ms, err)
         std::map<std::string, std::vector<std::string>> labels;
@@ -86,7 +86,7 @@ int run(const BenchArgs& a) {
             for (const std::string& v : s.values) {
                 std::vector<std::string> args = cs.args;
                 args.insert(args.end(), {"--method", s.method, std::string("--") + s.knob, v});
-                BenchCase c = makeCase(args);
+                BenchCase c = makeThesisCase(args);
                 c.options.keepAovs = true;
                 const double load = loadAverage();
                 const double err = relativeRmse(renderer.render(c.scene, c.options), ref);

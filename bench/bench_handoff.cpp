@@ -47,7 +47,7 @@ int run(const BenchArgs& a) {
     Table md(
         {"method", "frame ms", "transfer", "bytes/frame", "ms median (min–max)", "share of frame"});
     Table total({"method", "all transfers ms", "share of frame", "bytes/frame"});
-    BenchCase c = makeCase({"--mesh", "cow", "--material", "marble"});
+    BenchCase c = makeThesisCase({"--mesh", "cow", "--material", "marble"});
     for (const std::string& m : methods) {
         if (std::find(registered.begin(), registered.end(), m) == registered.end()) continue;
         c.options.method = m;

@@ -128,7 +128,7 @@ int run(const BenchArgs& a) {
     for (double n = double(kAtlas) * kAtlas / 4; n >= 1; n /= 4) pyramidBytes += n * (16 + 4);
 
     // A real frame.
-    BenchCase frame = makeCase({"--mesh", "cow", "--material", "marble"});
+    BenchCase frame = makeThesisCase({"--mesh", "cow", "--material", "marble"});
 
     std::vector<Gauge> gauges;
     gauges.push_back(

@@ -278,7 +278,7 @@ int runModels(const BenchArgs& a, long long photons, int spp, int size) {
                     fmt(100 * slabError[me] / std::max(rows, 1), 1) + "%"};
     }
     for (const SceneCase& s : scenes) {
-        BenchCase c = makeCase(s.args(size));
+        BenchCase c = makeThesisCase(s.args(size));
         const FrameResult vol = renderVolumetric(renderer, c, spp, 1);
         const double exits[] = {1.0, normalizedExitScale(c.scene.material.eta)};
         for (size_t mi = 0; mi < std::size(kModels); ++mi)
@@ -339,7 +339,7 @@ int runTruth(const BenchArgs& a, int size) {
     Json out = Json::object();
     Renderer renderer;
     for (const SceneCase& s : scenes) {
-        BenchCase c = makeCase(s.args(size));
+        BenchCase c = makeThesisCase(s.args(size));
         c.options.keepAovs = true;
         const std::vector<char> mask = interiorPixels(renderer.render(c.scene, c.options).coverage);
         const MeshBoundary boundary(c.scene.mesh);
@@ -491,7 +491,7 @@ int run(const BenchArgs& a) {
     Table t({"scene", "rel. RMSE reference vs volumetric", "after one global scale",
              "scale (vol./ref.)", "volumetric noise (rel. RMSE)", "volumetric s"});
     for (const SceneCase& s : sceneCases(a)) {
-        BenchCase c = makeCase(s.args(size));
+        BenchCase c = makeThesisCase(s.args(size));
         const ReferenceImage ref = renderReference(renderer, c);
         const FrameResult vol = renderVolumetric(renderer, c, spp, 1);
         const FrameResult vol2 = renderVolumetric(renderer, c, spp, 2);

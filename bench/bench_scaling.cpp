@@ -72,10 +72,10 @@ int run(const BenchArgs& a) {
         progress.update(++done);
     };
     for (const std::string& mesh : meshes) {
-        BenchCase c = makeCase({"--mesh", mesh, "--material", "marble"});
+        BenchCase c = makeThesisCase({"--mesh", mesh, "--material", "marble"});
         measure("triangles", c, mesh, nullptr);
     }
-    BenchCase cow = makeCase({"--mesh", "cow", "--material", "marble"});
+    BenchCase cow = makeThesisCase({"--mesh", "cow", "--material", "marble"});
     for (int s : sizes) {
         BenchCase c = cow;
         c.options.width = c.options.height = s;

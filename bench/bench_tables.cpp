@@ -56,7 +56,7 @@ int run(const BenchArgs& a) {
     Progress progress("tables", static_cast<long long>(meshes.size() * ns.size() * 3));
     long long done = 0;
     for (const std::string& mesh : meshes) {
-        BenchCase c = makeCase({"--mesh", mesh, "--material", "marble", "--size-mm", "10"});
+        BenchCase c = makeThesisCase({"--mesh", mesh, "--material", "marble", "--size-mm", "10"});
         for (const MethodStages& m : kMethods) {
             if (std::find(registered.begin(), registered.end(), m.method) == registered.end())
                 continue;

@@ -3,17 +3,20 @@
 # against a tsis binary: one line per case with the exit code, wall time,
 # peak memory and the last lines of stderr. For before/after figures.
 #
-# Usage: bench/hardening_repro.sh TSIS [ITEM…]   (items: 2 3 4 5 8 40; default all)
+# Usage: bench/hardening_repro.sh TSIS [ITEM…]   (items: 2 3 4 5 8 40 lib; default all)
+# lib: issue 40's library cases (threads, fork, SIGINT, arrays from Python:
+# bench/hardening_python.py) against TSIS's build's `import tsis`
+# (DIR/python beside DIR/tsis); LIB_TIMEOUT bounds each (30 s).
 # ONLY=REGEX runs the item-40 cases whose label matches.
 # Item 40 (issue 40, hostile assets) also states what each case must give
 # (exit code, a word of the message, a time bound): with CHECK=1 a case that
-# does not is counted and the script exits 1 (the CTest hardening_assets).
+# does not is counted and the script exits 1 (the CTest hardening.assets).
 # ATLAS_INPUTS, ATLAS_TIMEOUT, FRAMES, ANIM_TIMEOUT, REF_TIMEOUT narrow or bound
 # the slow ones (a binary from before the fixes runs for hours on some).
 # Item 2 plants folders in a private TMPDIR; the other owner's needs root.
 set -u
 B=$(realpath "$1"); shift
-items=${*:-"2 3 4 5 8 40"}
+items=${*:-"2 3 4 5 8 40 lib"}
 root=$(cd "$(dirname "$0")/.." && pwd)
 in=$(mktemp -d)
 work=$(mktemp -d)
@@ -146,5 +149,7 @@ for item in $items; do case $item in
   $R --mesh builtin:sphere --env ../sky188.png --stats $work/s3.json >/dev/null 2>&1
   echo "   item40 8-bit PNG sky of 188: lavg $(lavg $work/s3.json) (sRGB-decoded: 0.503 a texel; linear would be 0.737, 1.47x)"
   cd "$in" ;;
+lib)
+  /usr/bin/python3 "$root/bench/hardening_python.py" "$(dirname "$B")/python" ${LIB_TIMEOUT:-30} ;;
 esac; done
 [ "${CHECK:-0}" = 1 ] && { echo "item 40 checks failed: $fails"; [ $fails = 0 ]; }

@@ -98,7 +98,7 @@ std::unique_ptr<GlContext> GlContext::makeShared() const {
 }
 
 GlContext::~GlContext() {
-    if (tCurrentBackend == backend_.get()) releaseCurrent();
+    release();
 }
 
 void GlContext::makeCurrent() {
@@ -110,6 +110,10 @@ void GlContext::makeCurrent() {
     }
     tCurrentBackend = backend_.get();
     tCurrentGl = &gl_;
+}
+
+void GlContext::release() {
+    if (tCurrentBackend == backend_.get()) releaseCurrent();
 }
 
 namespace {

@@ -29,6 +29,10 @@ class GlContext {
 
     // Makes the context and its entry points (gl/gl.h) current on this thread.
     void makeCurrent();
+    // Leaves this thread with no context current if this one is, so that
+    // another thread may make it current (EGL refuses a context current
+    // elsewhere; OSMesa's would be drawn into from two threads).
+    void release();
     // A context sharing this one's objects (textures, buffers, programs — not
     // framebuffers nor vertex arrays), current nowhere: for another thread
     // (gl/gl_worker.h). Throws tsis::Error "no GL context: ..." when refused.

@@ -6,21 +6,29 @@
 
 namespace tsis {
 
-void MaterialTables::updateMedia(const std::vector<glm::vec2>& etaAndExit) {
+void MaterialTables::updateMedia(const std::vector<glm::vec2>& etaAndExit,
+                                 const std::vector<glm::vec3>& scatterAlbedo) {
     TSIS_CHECK(!etaAndExit.empty());
-    if (mediaTexture_ && etaAndExit == media_) return;
+    TSIS_CHECK(scatterAlbedo.empty() || scatterAlbedo.size() == etaAndExit.size());
+    if (mediaTexture_ && etaAndExit == media_ && scatterAlbedo == scatter_) return;
     const int n = static_cast<int>(etaAndExit.size());
     const int w = std::min(n, kMediumTableWidth),
               h = (n + kMediumTableWidth - 1) / kMediumTableWidth;
-    std::vector<float> rgba(static_cast<size_t>(w) * h * 4, 0.0f);
+    // Rows [0, h): (η, exit scale); rows [h, 2h): α′ per channel.
+    std::vector<float> rgba(static_cast<size_t>(w) * h * 2 * 4, 0.0f);
+    const size_t half = static_cast<size_t>(w) * h * 4;
     for (size_t m = 0; m < etaAndExit.size(); ++m) {
         rgba[m * 4] = etaAndExit[m].x;
         rgba[m * 4 + 1] = etaAndExit[m].y;
+        if (!scatterAlbedo.empty())
+            for (int c = 0; c < 3; ++c)
+                rgba[half + m * 4 + static_cast<size_t>(c)] = scatterAlbedo[m][c];
     }
-    if (!mediaTexture_ || mediaTexture_->width() != w || mediaTexture_->height() != h)
-        mediaTexture_ = std::make_unique<FloatTexture>(w, h);
+    if (!mediaTexture_ || mediaTexture_->width() != w || mediaTexture_->height() != 2 * h)
+        mediaTexture_ = std::make_unique<FloatTexture>(w, 2 * h);
     mediaTexture_->upload(rgba.data());
     media_ = etaAndExit;
+    scatter_ = scatterAlbedo;
 }
 
 void MaterialTables::updateAlbedo(const std::vector<glm::vec3>& factor, int resolution,

@@ -15,6 +15,7 @@ namespace {
 // shadow map array, 6 and 7 for the material tables.
 constexpr int kShadowUnit = 4;
 constexpr int kMediaUnit = 6;
+constexpr int kBackgroundUnit = 12;
 // The supersampled pixels' slots a row (CompositePass::edgePixels_).
 constexpr int kEdgeColumns = 64;
 
@@ -243,8 +244,10 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
 
 CompositePass::CompositePass()
     : centrePrograms_("fullscreen.vert", "radiance.frag",
-                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES", "TSIS_DISPLAY"}),
-      samplePrograms_("fullscreen.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
+                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_FIND_EDGES", "TSIS_DISPLAY",
+                       "TSIS_SINGLE_SCATTER"}),
+      samplePrograms_("fullscreen.vert", "radiance.frag",
+                      {"TSIS_SPECULAR", "TSIS_ENV_REFLECT", "TSIS_SINGLE_SCATTER"},
                       "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
       resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
@@ -350,9 +353,10 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         glClearBufferfv(GL_COLOR, marks, zero);
     }
     const unsigned features = (alpha > 0 ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
-    const ShaderProgram& centre =
-        centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
-    const ShaderProgram& samples = samplePrograms_.get(features);
+    const bool scatter = materials.singleScatter();
+    const ShaderProgram& centre = centrePrograms_.get(features | (findEdges ? 4u : 0u) |
+                                                      (direct ? 8u : 0u) | (scatter ? 16u : 0u));
+    const ShaderProgram& samples = samplePrograms_.get(features | (scatter ? 4u : 0u));
     for (const ShaderProgram* p : {&centre, &samples}) {
         p->use();
         bindLights(*p, lights, kShadowUnit, shadows);
@@ -364,15 +368,13 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
         bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
-    if (direct) setToneMapScale(*displayScale, h);
+    if (direct) setToneMapScale(*displayScale, w, h);
     centre.use();
-    if (direct) {
-        centre.set("u_scale", *displayScale);
-        centre.set("u_frameHeight", static_cast<float>(h));
-    }
+    if (direct) setDisplayUniforms(centre, *displayScale, w, h);
     bindTexture(centre, "u_radiosity", 0, radiosityTexture);
     bindTexture(centre, "u_framePosition", 1, frameGbuffer.color(0));
     bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
+    bindBackgroundMap();
     drawFullScreenWhere(GL_GREATER);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
@@ -413,24 +415,45 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     checkGl("CompositePass::radiance");
 }
 
-void CompositePass::setToneMapScale(float scale, int height) {
-    for (const ShaderProgram* p : {&toneMapProgram_, &toneMapEdgesProgram_, &backgroundProgram_}) {
-        p->use();
-        if (p != &backgroundProgram_) p->set("u_scale", scale);
-        p->set("u_frameHeight", static_cast<float>(height));
-    }
+void CompositePass::setDisplayUniforms(const ShaderProgram& p, float scale, int width,
+                                       int height) const {
+    p.use();
+    p.set("u_scale", scale);
+    p.set("u_tone", tone_);
+    p.set("u_frameSize", glm::vec2(width, height));
+    p.set("u_background", background_.mode);
+    p.set("u_inverseViewProj", background_.inverseViewProj);
+    p.set("u_backgroundToMap", background_.worldToMap);
+    p.set("u_backgroundScale", background_.scale);
+    p.set("u_envBackground", kBackgroundUnit);
+}
+
+void CompositePass::bindBackgroundMap() const {
+    // Just before a draw that reads it: a target made since (ensureTarget)
+    // binds its textures on the active unit.
+    glActiveTexture(GL_TEXTURE0 + kBackgroundUnit);
+    glBindTexture(GL_TEXTURE_2D, background_.envMap);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void CompositePass::setToneMapScale(float scale, int width, int height) {
+    for (const ShaderProgram* p : {&toneMapProgram_, &toneMapEdgesProgram_, &backgroundProgram_})
+        setDisplayUniforms(*p, scale, width, height);
 }
 
 void CompositePass::drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
                                       const ShaderProgram& edges, uint64_t& backgroundKey) {
     const int w = target.width(), h = target.height();
     glBindVertexArray(emptyVao_);
+    bindBackgroundMap();
     // The background stays from the frame before while the coverage and the
     // supersampled pixels do (the edge points below draw over them again).
-    if (background && coverageKey_ != backgroundKey) {
+    // The environment's follows the camera and the exposure: drawn always.
+    const uint64_t key = Hasher(coverageKey_).add(background_.mode).digest();
+    if (background && (key != backgroundKey || background_.mode == 2)) {
         background->use();
         drawFullScreenWhere(GL_EQUAL);
-        backgroundKey = coverageKey_;
+        backgroundKey = key;
     }
     // At 1× no pixel is marked and the samples are never read.
     if (aa_ > 1 && edgeCount_ > 0) {
@@ -475,7 +498,7 @@ std::vector<float> CompositePass::frameRadiance() const {
 }
 
 void CompositePass::toneMap(float scale) {
-    setToneMapScale(scale, centreTarget_->height());
+    setToneMapScale(scale, centreTarget_->width(), centreTarget_->height());
     resolveInto(toneMapProgram_, &backgroundProgram_, toneMapEdgesProgram_, colorTarget_,
                 {GL_RGBA8, GL_RGBA32F});
     display_ = colorTarget_.get();

@@ -190,6 +190,18 @@ struct EnvReflectionTextures {
     float scale = 0;
 };
 
+// The display image's background (common.glsl backgroundAt; render_options.h
+// Background): mode 0 the dark gradient, 1 transparent (alpha 0), 2 the
+// environment map (`envMap`, lat-long RGBA floats in the map's frame, × `scale`)
+// along each pixel's camera ray.
+struct DisplayBackground {
+    int mode = 0;
+    GLuint envMap = 0;
+    glm::mat4 inverseViewProj{1.0f};
+    glm::mat3 worldToMap{1.0f};
+    float scale = 1;
+};
+
 // Composite (docs/design.md "The composite"): radiance L = Ft/π·B (× the
 // exit term's scale) + the GGX lobe at each pixel's centre; where a silhouette
 // or depth jump passes (aa > 1), at aa × aa samples from the composite's own
@@ -230,8 +242,15 @@ class CompositePass {
     // in a supersampled pixel the mean over its covered samples (alpha their
     // fraction). Needs resolve().
     std::vector<float> frameRadiance() const;
-    // Ls = scale·L, Reinhard's curve, the mean over a pixel's samples, sRGB.
+    // Ls = scale·L, the tone curve, the mean over a pixel's samples, sRGB.
     void toneMap(float scale);
+    // The tone curve and background of the display images that follow:
+    // common.glsl's u_tone (0 Reinhard, 1 ACES fitted, 2 none;
+    // render_options.h ToneCurve) and backgroundAt.
+    void setDisplay(int tone, const DisplayBackground& background) {
+        tone_ = tone;
+        background_ = background;
+    }
     // Reinhard's L_avg = exp(mean log(1e-12 + Y)) over the pixels with
     // alpha > 0, of the last resolve() or toneMap(); 1 when none is covered.
     // Summed in blocks on the GPU, the blocks' sums on the host.
@@ -250,7 +269,7 @@ class CompositePass {
     // the supersampled pixels' averages.
     void drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
                            const ShaderProgram& edges, uint64_t& backgroundKey);
-    void setToneMapScale(float scale, int height);
+    void setToneMapScale(float scale, int width, int height);
 
     // radiance.frag's: with the lobe, the environment's reflection, (the
     // centres) marking the pixels to supersample
@@ -269,6 +288,11 @@ class CompositePass {
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     const RenderTarget* display_ = nullptr;       // the last display image's
     int aa_ = 1;
+    int tone_ = 0;
+    DisplayBackground background_;
+    // The display's uniforms of the tone curve and background on `p`.
+    void setDisplayUniforms(const ShaderProgram& p, float scale, int width, int height) const;
+    void bindBackgroundMap() const;  // the env map on its unit, for the next draws
     GLuint emptyVao_ = 0, depthSampler_ = 0;
     // The supersampled pixels, (x, y) in a texture of slots (the samples'
     // packed layout; the resolve's points read it by gl_VertexID), listed

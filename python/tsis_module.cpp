@@ -7,8 +7,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "tsis/tsis.h"
 
@@ -22,18 +28,33 @@ std::string optionName(std::string name) {
     return name;
 }
 
-// One keyword argument: str as typed, bool for a flag, a number, or a
-// sequence (x,y,z for a vector; each item for the repeatable light).
+bool isNumpy(const py::handle& v, const char* type) {
+    return py::isinstance(v, py::module_::import("numpy").attr(type));
+}
+
+std::string typeName(const py::handle& v) {
+    return py::str(py::type::of(v).attr("__name__")).cast<std::string>();
+}
+
+// One keyword argument: str as typed, bool for a flag, a number (numpy's
+// scalars too; an integer written exactly), or a sequence (x,y,z for a
+// vector; each item for the repeatable light).
 void setOption(Options& o, const std::string& name, const py::handle& v) {
-    if (py::isinstance<py::bool_>(v)) {
+    if (py::isinstance<py::bool_>(v) || isNumpy(v, "bool_")) {
         o.set(name, v.cast<bool>() ? "true" : "false");
     } else if (py::isinstance<py::str>(v)) {
         o.set(name, v.cast<std::string>());
-    } else if (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) {
-        o.set(name, v.cast<double>());
+    } else if (PyIndex_Check(v.ptr())) {  // int, numpy.int64, …
+        o.set(name, py::str(py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr())))
+                        .cast<std::string>());
+    } else if (py::isinstance<py::float_>(v) || isNumpy(v, "floating")) {
+        o.set(name, PyFloat_AsDouble(v.ptr()));
+    } else if (!py::isinstance<py::iterable>(v) || isNumpy(v, "generic")) {
+        throw tsis::Error("option --" + name + ": expected a str, number, bool or sequence, not " +
+                          typeName(v));
     } else if (name == "light") {
         o.unset(name);
-        for (const py::handle item : v) o.set(name, item.cast<std::string>());
+        for (const py::handle item : v) o.set(name, py::str(item).cast<std::string>());
     } else {
         std::string joined;
         for (const py::handle item : v)
@@ -54,24 +75,111 @@ py::array_t<float> toNumpy(const Image& i) {
     return a;
 }
 
-Image fromNumpy(const py::array_t<float, py::array::c_style | py::array::forcecast>& a) {
+// `value` as a numpy array (a list too), with its dtype's kind: 'f', 'i',
+// 'u', 'b', … Throws tsis::Error naming `what` when numpy cannot make one.
+py::array arrayOf(const py::handle& value, const std::string& what) {
+    try {
+        return py::module_::import("numpy").attr("asarray")(value);
+    } catch (const py::error_already_set& e) {
+        throw tsis::Error(what + ": not an array (" + typeName(value) + ")");
+    }
+}
+
+char kindOf(const py::array& a) {
+    return a.dtype().kind();
+}
+
+std::string shapeOf(const py::array& a) {
+    std::string s = "(";
+    for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+    return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// An image for compare: H×W or H×W×C of real numbers, within the stated
+// size, checked before anything is copied.
+Image imageOf(const py::handle& value, const char* what) {
+    const py::array a = arrayOf(value, what);
     if (a.ndim() != 2 && a.ndim() != 3)
-        throw tsis::Error("image: expected an H×W or H×W×C array, got " + std::to_string(a.ndim()) +
-                          " dimensions");
-    Image i{static_cast<int>(a.shape(1)),
-            static_cast<int>(a.shape(0)),
-            a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 1,
-            {}};
-    i.pixels.assign(a.data(), a.data() + a.size());
+        throw tsis::Error(std::string(what) + ": expected an H×W or H×W×C array, got shape " +
+                          shapeOf(a));
+    if (kindOf(a) != 'f' && kindOf(a) != 'i' && kindOf(a) != 'u')
+        throw tsis::Error(std::string(what) + ": expected real numbers, got dtype " +
+                          py::str(a.dtype()).cast<std::string>());
+    const long long h = a.shape(0), w = a.shape(1), c = a.ndim() == 3 ? a.shape(2) : 1;
+    if (w < 1 || h < 1 || c < 1 || c > kMaxCompareChannels || w > kMaxCompareSide ||
+        h > kMaxCompareSide || w * h > kMaxComparePixels)
+        throw tsis::Error(std::string(what) + ": shape " + shapeOf(a) + " is past compare's " +
+                          "limits (at most " + std::to_string(kMaxCompareSide) + " on a side, " +
+                          std::to_string(kMaxComparePixels) + " pixels, 1 to " +
+                          std::to_string(kMaxCompareChannels) + " channels)");
+    const auto f = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(a);
+    Image i{static_cast<int>(w), static_cast<int>(h), static_cast<int>(c), {}};
+    i.pixels.assign(f.data(), f.data() + f.size());
     return i;
 }
 
-template <typename T>
-std::vector<T> rowsOf3(const py::array_t<T, py::array::c_style | py::array::forcecast>& a,
-                       const char* what) {
+// An N×3 array's rows, checked before the copy: vertices finite and within
+// float's range, triangle indices integers in [0, 2³²) (the mesh then checks
+// them against its vertices).
+std::vector<float> vertexRows(const py::handle& value) {
+    const py::array a = arrayOf(value, "vertices");
     if (a.ndim() != 2 || a.shape(1) != 3)
-        throw tsis::Error(std::string(what) + ": expected an N×3 array");
-    return std::vector<T>(a.data(), a.data() + a.size());
+        throw tsis::Error("vertices: expected an N×3 array, got shape " + shapeOf(a));
+    if (kindOf(a) != 'f' && kindOf(a) != 'i' && kindOf(a) != 'u')
+        throw tsis::Error("vertices: expected real numbers, got dtype " +
+                          py::str(a.dtype()).cast<std::string>());
+    const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    std::vector<float> out(static_cast<size_t>(d.size()));
+    for (size_t k = 0; k < out.size(); ++k) {
+        const double x = d.data()[k];
+        if (!std::isfinite(x) || std::abs(x) > std::numeric_limits<float>::max())
+            throw tsis::Error("vertices: vertex " + std::to_string(k / 3) + " has " +
+                              py::repr(py::float_(x)).cast<std::string>() +
+                              " (every coordinate must be finite)");
+        out[k] = static_cast<float>(x);
+    }
+    return out;
+}
+
+std::vector<uint32_t> triangleRows(const py::handle& value) {
+    const py::array a = arrayOf(value, "triangles");
+    if (a.ndim() != 2 || a.shape(1) != 3)
+        throw tsis::Error("triangles: expected an M×3 array, got shape " + shapeOf(a));
+    const char kind = kindOf(a);
+    if (kind != 'i' && kind != 'u' && kind != 'f')
+        throw tsis::Error("triangles: expected integer vertex indices, got dtype " +
+                          py::str(a.dtype()).cast<std::string>());
+    std::vector<uint32_t> out(static_cast<size_t>(a.size()));
+    auto refuse = [&](size_t k, const std::string& v, const char* why) {
+        throw tsis::Error("triangles: triangle " + std::to_string(k / 3) + " has index " + v +
+                          ", " + why);
+    };
+    constexpr double kIndices = 4294967296.0;  // 2³²
+    if (kind == 'f') {
+        const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+        for (size_t k = 0; k < out.size(); ++k) {
+            const double x = d.data()[k];
+            const std::string v = py::repr(py::float_(x)).cast<std::string>();
+            if (!std::isfinite(x) || x != std::floor(x)) refuse(k, v, "not an integer");
+            if (x < 0 || x >= kIndices) refuse(k, v, "outside [0, 2³²)");
+            out[k] = static_cast<uint32_t>(x);
+        }
+    } else if (kind == 'u') {
+        const auto u = py::array_t<uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+        for (size_t k = 0; k < out.size(); ++k) {
+            if (u.data()[k] >= (1ull << 32))
+                refuse(k, std::to_string(u.data()[k]), "outside [0, 2³²)");
+            out[k] = static_cast<uint32_t>(u.data()[k]);
+        }
+    } else {
+        const auto i = py::array_t<int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+        for (size_t k = 0; k < out.size(); ++k) {
+            const int64_t x = i.data()[k];
+            if (x < 0 || x >= (int64_t{1} << 32)) refuse(k, std::to_string(x), "outside [0, 2³²)");
+            out[k] = static_cast<uint32_t>(x);
+        }
+    }
+    return out;
 }
 
 py::object frameToPython(const Frame& f) {
@@ -94,12 +202,65 @@ Renderer& sharedRenderer() {
     return *r;
 }
 
+// The scenes a frame reads now, with the GIL released (guarded by the GIL):
+// a change to one from another thread meanwhile is refused, not raced.
+std::map<const Scene*, int>& scenesInFrames() {
+    static std::map<const Scene*, int> busy;
+    return busy;
+}
+
+class SceneInFrame {
+  public:
+    explicit SceneInFrame(const Scene& s) : scene_(&s) { ++scenesInFrames()[scene_]; }
+    ~SceneInFrame() {
+        if (--scenesInFrames()[scene_] == 0) scenesInFrames().erase(scene_);
+    }
+    SceneInFrame(const SceneInFrame&) = delete;
+    SceneInFrame& operator=(const SceneInFrame&) = delete;
+
+  private:
+    const Scene* scene_;
+};
+
+// A setter of Scene.`name` that refuses while a frame reads the scene.
+template <typename T>
+auto sceneSetter(void (Scene::*set)(const T&), const char* name) {
+    return [set, name](Scene& s, const T& value) {
+        if (scenesInFrames().count(&s))
+            throw tsis::Error(std::string("Scene.") + name +
+                              ": the scene is being rendered on another thread; change it "
+                              "between frames (or render a copy: copy.copy(scene))");
+        (s.*set)(value);
+    };
+}
+
+bool onMainThread() {
+    const py::module_ threading = py::module_::import("threading");
+    return threading.attr("current_thread")().is(threading.attr("main_thread")());
+}
+
+// A frame with the GIL released. On the main thread Python's signal
+// handlers run while it renders (Ctrl-C: the frame stops, KeyboardInterrupt
+// is raised and the renderer stays usable); other threads cannot take signals.
 py::object renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
     const Options o = optionsOf(kw);
+    std::optional<py::error_already_set> raised;  // by a signal handler
+    std::function<bool()> signals;
+    if (onMainThread())
+        signals = [&raised] {
+            const py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() == 0) return false;
+            raised.emplace();
+            return true;
+        };
     Frame f;
-    {
-        py::gil_scoped_release release;
-        f = r.render(s, o);
+    const SceneInFrame reading(s);
+    try {
+        const py::gil_scoped_release release;
+        f = r.render(s, o, signals);
+    } catch (const tsis::Cancelled&) {
+        if (raised) throw std::move(*raised);
+        throw;
     }
     return frameToPython(f);
 }
@@ -158,17 +319,17 @@ PYBIND11_MODULE(tsis, m) {
              "of `tsis render`")
         .def_static(
             "from_arrays",
-            [](const py::array_t<float, py::array::c_style | py::array::forcecast>& vertices,
-               const py::array_t<uint32_t, py::array::c_style | py::array::forcecast>& triangles,
-               const py::kwargs& kw) {
-                return Scene::fromArrays(rowsOf3(vertices, "vertices"),
-                                         rowsOf3(triangles, "triangles"), optionsOf(kw));
+            [](const py::object& vertices, const py::object& triangles, const py::kwargs& kw) {
+                return Scene::fromArrays(vertexRows(vertices), triangleRows(triangles),
+                                         optionsOf(kw));
             },
             py::arg("vertices"), py::arg("triangles"),
             "vertices N×3 and triangles M×3 (counter-clockwise from outside); options as Scene()")
-        .def_property("material", &Scene::material, &Scene::setMaterial)
-        .def_property("lights", &Scene::lights, &Scene::setLights)
-        .def_property("camera", &Scene::camera, &Scene::setCamera)
+        .def_property("material", &Scene::material, sceneSetter(&Scene::setMaterial, "material"))
+        .def_property("lights", &Scene::lights, sceneSetter(&Scene::setLights, "lights"))
+        .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"))
+        .def("__copy__", [](const Scene& s) { return Scene(s); })
+        .def("__deepcopy__", [](const Scene& s, const py::dict&) { return Scene(s); })
         .def_property_readonly("mesh_name", &Scene::meshName)
         .def_property_readonly("vertex_count", &Scene::vertexCount)
         .def_property_readonly("triangle_count", &Scene::triangleCount);
@@ -185,12 +346,10 @@ PYBIND11_MODULE(tsis, m) {
         py::arg("scene"), "Renderer.render with one renderer kept for every call");
     m.def(
         "compare",
-        [](const py::array_t<float, py::array::c_style | py::array::forcecast>& a,
-           const py::array_t<float, py::array::c_style | py::array::forcecast>& b,
-           const std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>>&
-               mask) {
-            const Image mi = mask ? fromNumpy(*mask) : Image{};
-            const Metrics x = compare(fromNumpy(a), fromNumpy(b), mask ? &mi : nullptr);
+        [](const py::object& a, const py::object& b, const py::object& mask) {
+            const Image image = imageOf(a, "image"), reference = imageOf(b, "reference");
+            const Image mi = mask.is_none() ? Image{} : imageOf(mask, "mask");
+            const Metrics x = compare(image, reference, mask.is_none() ? nullptr : &mi);
             py::dict d;
             d["rmse"] = x.rmse;
             d["rel_rmse"] = x.relRmse;

@@ -139,9 +139,11 @@ std::string boxGltf(const std::string& extraNodes = "", const std::string& extra
 // ray nearest the centre (at least 3 mm ahead), candela and lux to W/sr and
 // W/mm² (683 lm/W; a point light × (mm per file metre / 1000)²), then all
 // scaled so that the strongest gives 1 W/mm² at the centre.
-std::string equivalentOptions() {
+// At `size` mm; `relevel` false (--light-units file): the lights at their
+// own power, no common factor.
+std::string equivalentOptions(double size = 6.0, bool relevel = true) {
     const glm::dvec3 centre = 0.5 * (kLo + kHi);
-    const double scale = 6.0 / glm::length(kHi - kLo), size = 6.0;
+    const double scale = size / glm::length(kHi - kLo);
     auto normalised = [&](const glm::dvec3& p) { return (p - centre) * scale; };
     const glm::dvec3 eye = normalised(kParentT + 2.0 * kCameraT);
     const glm::dvec3 forward = glm::normalize(kCameraQ.rotate({0, 0, -1}));
@@ -153,7 +155,9 @@ std::string equivalentOptions() {
     const glm::dvec3 sunE = kSunColor * kSunLux / 683.0 / 1e6;
     auto maxOf = [](const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); };
     const double strongest =
-        std::max(maxOf(lampI) / std::max(glm::dot(lamp, lamp), size * size / 4), maxOf(sunE));
+        relevel
+            ? std::max(maxOf(lampI) / std::max(glm::dot(lamp, lamp), size * size / 4), maxOf(sunE))
+            : 1.0;
     const glm::dvec3 sunDir = glm::normalize(kSunQ.rotate({0, 0, -1}));
     return "--eye " + exact3(eye) + " --target " + exact3(eye + d * forward) + " --up " +
            exact3(up) + " --fov " + exact(kYfov * 180.0 / M_PI) + " --light point:" + exact3(lamp) +
@@ -201,6 +205,95 @@ TEST(GltfView, FileCameraAndLightsRenderAsTheSameOptions) {
 // A second camera, an orthographic one, a spot light and a material's
 // alphaMode: each left-out kind is one note naming the file; --camera out of range is one
 // line that says how many there are.
+
+// --size-mm file keeps the glTF's metres (the box's 3 m diagonal: 3000 mm)
+// and --light-units file its candela and lux at 683 lm/W with no common
+// factor, exposed by 19.93 EV by default: the same image bytes as those
+// numbers given as options. Both at once and each alone.
+TEST(GltfView, FileSizeAndLightUnitsRenderAsTheSameOptions) {
+    ScratchDir dir;
+    dir.file("box.bin", boxBuffer());
+    const std::string gltf = dir.file("box.gltf", boxGltf());
+    const std::string common = "render " + kFast + "--mesh " + gltf + " ";
+    struct Case {
+        std::string fileOptions;
+        double size;
+        bool relevel;
+    };
+    const Case cases[] = {{"--size-mm file --light-units file", 3000, false},
+                          {"--size-mm file", 3000, true},
+                          {"--size-mm 6 --light-units file", 6, false}};
+    for (const Case& c : cases) {
+        const RunResult file = runTsis(common + c.fileOptions + " -o " + dir.file("file.png"));
+        ASSERT_EQ(file.exitCode, 0) << c.fileOptions << ": " << file.err;
+        EXPECT_EQ(file.err.find("tsis: note:"), std::string::npos) << file.err;
+        const std::string options = equivalentOptions(c.size, c.relevel) + " --size-mm " +
+                                    exact(c.size) +
+                                    (c.relevel ? std::string() : " --exposure 19.931568");
+        const RunResult cli = runTsis(common + options + " -o " + dir.file("cli.png"));
+        ASSERT_EQ(cli.exitCode, 0) << cli.err;
+        EXPECT_EQ(readFile(dir.file("file.png")), readFile(dir.file("cli.png")))
+            << c.fileOptions << " vs " << options;
+    }
+    // With --env the file's lights are left, and the note says so.
+    ImageF sky{16, 8, 3, std::vector<float>(16 * 8 * 3, 0.2f)};
+    writeImageF(dir.file("sky.exr"), sky);
+    const RunResult env =
+        runTsis(common + "--env " + dir.file("sky.exr") + " -o " + dir.file("env.png"));
+    ASSERT_EQ(env.exitCode, 0) << env.err;
+    EXPECT_NE(env.err.find("mesh '" + gltf + "': 2 lights ignored (--env given: it lights alone)"),
+              std::string::npos)
+        << env.err;
+}
+
+// An OBJ states no unit: --size-mm file takes --units m, cm or mm, and then
+// renders as --size-mm of its diagonal × the unit; the mistakes are one line
+// each, with no output.
+TEST(GltfView, ObjUnitsAndTheMistakesOfFileSizes) {
+    ScratchDir dir;
+    // A tetrahedron of diagonal (bounding box) √3.
+    const std::string obj = dir.file("t.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                     "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    const std::string fast = "render --width 48 --height 48 --atlas-res 128 --light-res 256 ";
+    for (const auto& [unit, mm] : {std::pair<std::string, double>{"cm", 10}, {"mm", 1}}) {
+        const RunResult a = runTsis(fast + "--mesh " + obj + " --size-mm file --units " + unit +
+                                    " -o " + dir.file("a.png"));
+        ASSERT_EQ(a.exitCode, 0) << a.err;
+        const RunResult b = runTsis(fast + "--mesh " + obj + " --size-mm " +
+                                    exact(std::sqrt(3.0) * mm) + " -o " + dir.file("b.png"));
+        ASSERT_EQ(b.exitCode, 0) << b.err;
+        EXPECT_EQ(readFile(dir.file("a.png")), readFile(dir.file("b.png"))) << unit;
+    }
+    dir.file("box.bin", boxBuffer());
+    const std::string gltf = dir.file("box.gltf", boxGltf());
+    const std::pair<std::string, std::string> mistakes[] = {
+        {"--mesh " + obj + " --size-mm file", "does not state its unit; give --units m, cm or mm"},
+        {"--mesh " + obj + " --units cm", "--units cm is the file's unit for --size-mm file"},
+        {"--mesh " + obj + " --size-mm file --units km", "--units 'km': expected m, cm or mm"},
+        {"--mesh " + gltf + " --size-mm file --units m", "states its unit (glTF: metres)"},
+        {"--mesh builtin:sphere --size-mm file", "builtin:sphere has no size of its own"},
+        {"--mesh " + obj + " --size-mm file --units m", ""},  // 1.7 m: fine
+        {"--mesh " + gltf + " --light-units file --light dir:0,-1,0:1,1,1", "not with --light"},
+        {"--mesh " + obj + " --light-units file", "has no lights (KHR_lights_punctual)"},
+        {"--mesh " + gltf + " --light-units watts", "--light-units 'watts': expected tsis or file"},
+        {"--mesh " + gltf + " --size-mm 2e5", "--size-mm"},
+    };
+    for (const auto& [options, message] : mistakes) {
+        const std::string out = dir.file("m.png");
+        std::filesystem::remove(out);
+        const RunResult r = runTsis(fast + options + " -o " + out);
+        if (message.empty()) {
+            EXPECT_EQ(r.exitCode, 0) << options << ": " << r.err;
+            continue;
+        }
+        EXPECT_EQ(r.exitCode, 1) << options;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << options << ": " << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << options << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << options;
+    }
+}
+
 TEST(GltfView, CameraChoiceAndNotesNameTheFile) {
     ScratchDir dir;
     dir.file("box.bin", boxBuffer());

@@ -33,6 +33,12 @@ vec4 mediumOf(float tag) {
     int m = max(int(tag + 0.5) - 1, 0);
     return texelFetch(u_media, ivec2(m % 4096, m / 4096), 0);
 }
+// The medium's single-scattering albedo α′ (gl/material_tables.h: the rows
+// below η's), 0 where the composite adds none.
+vec3 scatterAlbedoOf(float tag) {
+    int m = max(int(tag + 0.5) - 1, 0);
+    return texelFetch(u_media, ivec2(m % 4096, textureSize(u_media, 0).y / 2 + m / 4096), 0).rgb;
+}
 // With u_textured, the albedo factor of each atlas texel (render/albedo_atlas.h):
 // light entering there is scaled by it, light leaving too.
 // A uniform, or a constant in a program compiled for one case (TSIS_TEXTURED
@@ -69,6 +75,17 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 // 0 trips, 0 where the light is behind: llvmpipe runs both sides of a
 // branch, masked, but leaves a loop no lane is in, so a block of pixels
 // facing away skips the lookups (the caller drops their result).
+// A texel of the tent that sees past the point by more than the point's own
+// surface can there (2 + 2 tanθ texels deeper, cosθ ≥ 0.05) does not see that
+// surface: it ends before the texel. Where another texel of the tent sees an
+// occluder at least as far in front (a solid in another's shadow whose edge
+// lines up with the occluder's silhouette, docs/design.md §2 "Shadows"),
+// such texels are left out of the mean — counted lit, they let light into
+// the shadowed solid. Elsewhere (a convex terminator, whose own surface
+// bulges a little in front, a penumbra on a receiver that goes on) V is the
+// tent's mean as it was. The two more compares run only where the taps
+// disagree (a tent all lit is 1 either way, all shadowed 0: a loop of 4 or
+// 0 trips, as above).
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
@@ -78,13 +95,24 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
     vec3 s = c.xyz / c.w * 0.5 + 0.5;
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
     vec2 texel = 1.0 / vec2(textureSize(u_shadowMaps, 0).xy);
-    float sum = 0.0;
+    float lit = 0.0;
     int taps = cosT > 0.0 ? 4 : 0;
     for (int k = 0; k < taps; ++k) {
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
-        sum += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
+        lit += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
     }
-    return 0.25 * sum;
+    vec3 beyond = l * (u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0)));
+    vec4 f = u_lightViewProj[i] * vec4(q - beyond, 1.0);
+    vec4 m = u_lightViewProj[i] * vec4(q + beyond, 1.0);
+    float past = 0.0, near = 0.0;
+    int edge = lit > 0.0 && lit < 4.0 ? 4 : 0;
+    for (int k = 0; k < edge; ++k) {
+        vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
+        past += texture(u_shadowMaps, vec4(s.xy + o, float(i), f.z / f.w * 0.5 + 0.5));
+        near += 1.0 - texture(u_shadowMaps, vec4(s.xy + o, float(i), m.z / m.w * 0.5 + 0.5));
+    }
+    if (near > 0.0 && past > 0.0) return past < 3.999 ? (lit - past) / (4.0 - past) : 1.0;
+    return 0.25 * lit;
 }
 
 // Light i seen from p with normal n: its direction l, c = n·l and falloff;
@@ -151,12 +179,56 @@ vec3 specularRadiance(vec3 p, vec3 n, vec3 v, float alpha, float eta) {
     return s;
 }
 
+// The half-space's single scattering towards v (docs/design.md §14): a beam
+// refracted in at θi′, scattered once (isotropic, albedo α′) on the refracted
+// view ray at θo′ and refracted out,
+//   L⁽¹⁾ = α′ Ft(θi) Ft(θo) E cosθi V / (4π η² (cosθi′ + cosθo′))
+// summed over the lights (E = I·falloff) — what --transport object's walks
+// leave out (volumetric/patch_transfer.h), for the light's own incidence —
+// and, with `lobe`, the GGX lobe's reflection (specularRadiance's) in the same
+// pass over the lights: one visibility a light for both.
+vec3 scatterAndSpecular(vec3 p, vec3 n, vec3 v, float tag, float eta, float alpha, bool lobe) {
+    vec3 albedo = scatterAlbedoOf(tag);
+    float co = clamp(dot(n, v), 0.0, 1.0);
+    float inv2 = 1.0 / (eta * eta);
+    float coT = sqrt(max(0.0, 1.0 - (1.0 - co * co) * inv2));
+    float k = fresnelT(eta, co) * inv2 / (4.0 * PI);
+    vec3 s = vec3(0.0);
+    // A constant trip count, as in irradiance().
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_lightCount) break;
+        vec3 l;
+        float c, falloff;
+        if (!facing(i, p, n, l, c, falloff)) continue;
+        float ciT = sqrt(max(0.0, 1.0 - (1.0 - c * c) * inv2));
+        vec3 e = u_lightRgb[i] * (c * falloff);
+        vec3 r = albedo * (k * fresnelT(eta, c) / (ciT + coT));
+        if (lobe) r += vec3(ggxBrdf(eta, alpha, n, v, l));
+        s += r * e * visibility(i, p, n, l);
+    }
+    return s;
+}
+
+// The tone curve (--tone, render_options.h ToneCurve): 0 Reinhard's
+// Ls/(1 + Ls); 1 the ACES filmic fit of Narkowicz (2015),
+// (Ls(2.51 Ls + 0.03))/(Ls(2.43 Ls + 0.59) + 0.14) clamped to 1 (its input
+// the exposed radiance × 0.6, his pre-scale, so that a mid grey lands near
+// Reinhard's); 2 none: Ls clamped to [0, 1] (linear output).
+uniform int u_tone;
+vec3 toneCurve(vec3 ls) {
+    if (u_tone == 1) {
+        vec3 x = 0.6 * ls;
+        return clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+    }
+    if (u_tone == 2) return clamp(ls, 0.0, 1.0);
+    return ls / (1.0 + ls);
+}
+
 // The display (resolve.frag, radiance.frag's straight-to-display centres):
-// radiance l exposed, Ls = scale · l, through Reinhard's curve Ls/(1 + Ls)
-// where l shows the object (alpha > 0), else the background's colour.
+// radiance l exposed, Ls = scale · l, through the tone curve where l shows
+// the object (alpha > 0), else the background's colour.
 vec3 exposed(vec4 l, float scale, vec3 background) {
-    vec3 ls = scale * l.rgb;
-    return l.a > 0.0 ? ls / (1.0 + ls) : background;
+    return l.a > 0.0 ? toneCurve(scale * l.rgb) : background;
 }
 
 vec3 srgb(vec3 c) {
@@ -164,8 +236,35 @@ vec3 srgb(vec3 c) {
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
-// The background: a dark vertical gradient over the frame's height.
-vec3 backgroundAt(float y, float height) { return vec3(mix(0.004, 0.03, y / height)); }
+// A lat-long map's (u, v) of unit direction d in the map's frame
+// (scene/environment.h latLongCoordinates): v = 0 straight up (+y), the
+// centre column along −z.
+vec2 latLongUv(vec3 d) {
+    return vec2(atan(d.x, -d.z) / (2.0 * PI) + 0.5, acos(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
+// The background (--background, render_options.h Background), as display
+// colour before sRGB: 0 a dark vertical gradient over the frame's height; 1
+// transparent (0, the display's alpha 0); 2 the environment map seen through
+// the camera (the whole map, its sun included, × its intensity), exposed by
+// u_scale and through the tone curve like the object.
+uniform int u_background;
+uniform mat4 u_inverseViewProj;
+uniform mat3 u_backgroundToMap;
+uniform float u_backgroundScale;
+uniform sampler2D u_envBackground;
+uniform vec2 u_frameSize;
+vec3 backgroundAt(vec2 fragCoord, float scale) {
+    if (u_background == 1) return vec3(0.0);
+    if (u_background == 2) {
+        vec2 ndc = fragCoord / u_frameSize * 2.0 - 1.0;
+        vec4 near = u_inverseViewProj * vec4(ndc, -1.0, 1.0);
+        vec4 far = u_inverseViewProj * vec4(ndc, 1.0, 1.0);
+        vec3 d = normalize(u_backgroundToMap * (far.xyz / far.w - near.xyz / near.w));
+        return toneCurve(scale * u_backgroundScale * textureLod(u_envBackground, latLongUv(d), 0.0).rgb);
+    }
+    return vec3(mix(0.004, 0.03, fragCoord.y / u_frameSize.y));
+}
 
 // The log-average's term of radiance l, (log(1e-12 + Y), 1) where l shows the
 // object, else 0 (reduce.frag sums it).

@@ -5,7 +5,7 @@
 // as much as shading every sample, and a point for every pixel costs its
 // vertex pipeline 262K vertices at 512²).
 uniform sampler2D u_edgePixels;  // pixel e's (x, y) at texel (e mod width, e div width)
-uniform vec2 u_frameSize;
+// u_frameSize: common.glsl's.
 flat out ivec2 v_slot;  // the point's slot: its samples' block (radiance.frag)
 
 void main() {

@@ -13,7 +13,8 @@
 // stands for the pixel), packed: a full-screen pass over a target of one
 // u_aa × u_aa block per marked pixel, in the order of u_edgePixels. Features (0 or 1, gl/shader.h
 // ShaderVariants): TSIS_SPECULAR the lobe, TSIS_ENV_REFLECT the
-// environment's reflection with it; the centres' TSIS_DISPLAY writes the
+// environment's reflection with it, TSIS_SINGLE_SCATTER the half-space's
+// single scattering (--transport object); the centres' TSIS_DISPLAY writes the
 // display colour and the log-average's term instead of the radiance, when
 // the exposure is known before the frame (no radiance image is needed then).
 uniform sampler2D u_radiosity;      // B at the frame's pixels
@@ -33,8 +34,7 @@ layout(location = 0) out vec4 o_radiance;
 
 vec3 envReflection(vec3 n, vec3 v, float tag) {
     vec3 r = normalize(u_worldToMap * reflect(-v, n));
-    vec2 uv = vec2(atan(r.x, -r.z) / (2.0 * PI) + 0.5, acos(clamp(r.y, -1.0, 1.0)) / PI);
-    vec3 l = textureLod(u_envPrefiltered, uv, 0.0).rgb;
+    vec3 l = textureLod(u_envPrefiltered, latLongUv(r), 0.0).rgb;
     vec2 size = vec2(textureSize(u_envAlbedo, 0));
     float m = float(max(int(tag + 0.5) - 1, 0));
     float s = sqrt(clamp(dot(n, v), 0.0, 1.0));
@@ -49,11 +49,13 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     if (dot(n, v) < 0.0) n = -n;
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
-#if TSIS_SPECULAR
+#if TSIS_SINGLE_SCATTER
+    l += scatterAndSpecular(p.xyz, n, v, p.w, medium.r, u_alpha, TSIS_SPECULAR != 0);
+#elif TSIS_SPECULAR
     l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
-#if TSIS_ENV_REFLECT
-    l += envReflection(n, v, p.w);
 #endif
+#if TSIS_SPECULAR && TSIS_ENV_REFLECT
+    l += envReflection(n, v, p.w);
 #endif
     return l;
 }
@@ -113,7 +115,6 @@ void main() {
 // Straight to the display: o_radiance the display colour (resolve.frag's
 // tone map of this one sample), and the log-average's term.
 uniform float u_scale;
-uniform float u_frameHeight;
 layout(location = 1) out vec4 o_logLuminance;
 layout(location = 2) out vec4 o_edge;
 #else
@@ -139,8 +140,8 @@ void main() {
     o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
     vec4 l = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
 #if TSIS_DISPLAY
-    vec3 background = backgroundAt(gl_FragCoord.y, u_frameHeight);
-    o_radiance = vec4(srgb(exposed(l, u_scale, background)), 1.0);
+    vec3 background = backgroundAt(gl_FragCoord.xy, u_scale);
+    o_radiance = vec4(srgb(exposed(l, u_scale, background)), u_background == 1 ? l.a : 1.0);
     o_logLuminance = logLuminance(l);
 #else
     o_radiance = l;

@@ -30,19 +30,18 @@ layout(location = 1) out vec4 o_logLuminance;
 
 #ifdef TSIS_TONE_MAP
 uniform float u_scale;
-uniform float u_frameHeight;
 #endif
 
 #ifdef TSIS_BACKGROUND
 void main() {
-    o_color = vec4(srgb(backgroundAt(gl_FragCoord.y, u_frameHeight)), 1.0);
+    o_color = vec4(srgb(backgroundAt(gl_FragCoord.xy, u_scale)), u_background == 1 ? 0.0 : 1.0);
     o_logLuminance = vec4(0.0);
 }
 #else
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
 #ifdef TSIS_TONE_MAP
-    vec3 background = backgroundAt(gl_FragCoord.y, u_frameHeight);
+    vec3 background = backgroundAt(gl_FragCoord.xy, u_scale);
     vec3 display = vec3(0.0);
 #endif
     vec4 radiance;
@@ -73,7 +72,11 @@ void main() {
 #endif
     o_logLuminance = logLuminance(radiance);
 #ifdef TSIS_TONE_MAP
-    o_color = vec4(srgb(display), 1.0);
+    // Transparent: alpha the fraction of the pixel's samples that show the
+    // object, the colour theirs alone (straight alpha, as PNG stores it).
+    float alpha = u_background == 1 ? radiance.a : 1.0;
+    if (u_background == 1) display = alpha > 0.0 ? display / alpha : vec3(0.0);
+    o_color = vec4(srgb(display), alpha);
 #else
     o_color = radiance;
 #endif

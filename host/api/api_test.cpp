@@ -2,9 +2,18 @@
 // messages, scenes from options or arrays, and frames equal to the internal
 // renderer's for the same options.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "cli/args.h"
 #include "cli/scene_options.h"
@@ -158,6 +167,130 @@ TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {
     const Metrics withNan = compare(nan, f.radiance, &f.coverage);
     EXPECT_EQ(withNan.nonfiniteImage, 1);
     EXPECT_EQ(withNan.pixels, same.pixels - 1);
+}
+
+// Threads: one Renderer from two threads (either GL platform) renders every
+// frame whole, the same as from one thread; one made on a thread that is gone
+// renders on another (EGL refused that: "eglMakeCurrent failed (0x3002)").
+TEST(ApiRenderer, OneRendererServesSeveralThreads) {
+    const Options o{{"mesh", "builtin:sphere"},
+                    {"width", "40"},
+                    {"height", "32"},
+                    {"atlas-res", "128"},
+                    {"light-res", "256"}};
+    for (const char* gl : {"osmesa", "egl"}) {
+        SCOPED_TRACE(gl);
+        Options marble = o;
+        marble.set("material", "marble");
+        const Scene scenes[2] = {Scene(o), Scene(marble)};
+        Renderer r("", gl);
+        const std::vector<uint8_t> refs[2] = {r.render(scenes[0], o).rgb8,
+                                              r.render(scenes[1], o).rgb8};
+        std::vector<std::string> errors;
+        int same[2] = {0, 0};
+        std::mutex m;
+        auto work = [&](int k) {
+            for (int i = 0; i < 4; ++i) {
+                try {
+                    const bool equal = r.render(scenes[k], o).rgb8 == refs[k];
+                    const std::lock_guard lock(m);
+                    same[k] += equal;
+                } catch (const Error& e) {
+                    const std::lock_guard lock(m);
+                    errors.push_back(e.what());
+                }
+            }
+        };
+        std::thread a(work, 0), b(work, 1);
+        a.join();
+        b.join();
+        EXPECT_EQ(errors, std::vector<std::string>{});
+        EXPECT_EQ(same[0], 4);
+        EXPECT_EQ(same[1], 4);
+        std::unique_ptr<Renderer> made;
+        std::thread([&] { made = std::make_unique<Renderer>("", gl); }).join();
+        EXPECT_EQ(made->render(scenes[0], o).rgb8, refs[0]);
+    }
+}
+
+// A cancel that answers true stops the frame with tsis::Cancelled wherever it
+// is (the volumetric walk either way, the reference's surface points and
+// gather, between passes), soon after, and the next frame is whole: the same
+// as a fresh renderer's.
+TEST(ApiRenderer, CancelStopsTheFrameAndTheRendererStaysUsable) {
+    const Options small{{"mesh", "builtin:sphere"},
+                        {"width", "32"},
+                        {"height", "32"},
+                        {"atlas-res", "128"},
+                        {"light-res", "256"}};
+    const Scene scene(small);
+    const std::vector<uint8_t> fresh = Renderer().render(scene, small).rgb8;
+    Renderer r;
+    // The options, and the poll that answers true: the third (100 ms in at
+    // least, one per 50 ms) in a long frame, the first in a short one (the
+    // first pass then stops).
+    const std::vector<std::pair<std::vector<std::pair<std::string, std::string>>, int>> frames = {
+        {{{"method", "volumetric"}, {"time", "60"}}, 3},
+        {{{"method", "volumetric"}, {"time", "60"}, {"estimator", "light"}}, 3},
+        {{{"method", "reference"}, {"spacing", "0.01"}, {"force", "true"}}, 3},
+        {{{"method", "tsis"}, {"samples", "64"}}, 1},
+    };
+    for (const auto& [extra, stopAt] : frames) {
+        Options o = small;
+        for (const auto& [name, value] : extra) o.set(name, value);
+        SCOPED_TRACE(o.args().size());
+        int polls = 0;
+        const auto start = std::chrono::steady_clock::now();
+        EXPECT_THROW(r.render(scene, o, [&, stop = stopAt] { return ++polls >= stop; }), Cancelled);
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_EQ(polls, stopAt);
+        EXPECT_LT(s, 20.0);  // not the 60 s asked for (the bound is loose: not a timing)
+        EXPECT_EQ(r.render(scene, small).rgb8, fresh);
+    }
+    // A cancel that never answers true changes nothing.
+    EXPECT_EQ(r.render(scene, small, [] { return false; }).rgb8, fresh);
+}
+
+// After fork(), a renderer made before refuses at once in the child, and so
+// does making one (OpenCL's and GL's threads are gone); the child exits.
+TEST(ApiRenderer, AForkedChildRefusesAtOnce) {
+    const Options o{{"mesh", "builtin:sphere"},
+                    {"width", "16"},
+                    {"height", "16"},
+                    {"atlas-res", "64"},
+                    {"light-res", "256"}};
+    const Scene scene(o);
+    Renderer r;
+    r.render(scene, o);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        const std::string same = errorOf([&] { r.render(scene, o); });
+        const std::string made = errorOf([&] { Renderer again; });
+        const bool ok = same.find("forked child") != std::string::npos &&
+                        made.find("child forked after one was made") != std::string::npos &&
+                        made.find("'spawn'") != std::string::npos;
+        std::_Exit(ok ? 0 : 1);
+    }
+    int status = -1;
+    for (int i = 0; i < 300 && ::waitpid(child, &status, WNOHANG) == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (status == -1) ::kill(child, SIGKILL), ::waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status)) << "the child hung or crashed";
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_FALSE(r.render(scene, o).rgb8.empty());  // the parent's still renders
+}
+
+TEST(ApiCompare, RefusesImagesPastItsLimitsAndShortPixels) {
+    const Image ok{4, 4, 3, std::vector<float>(48, 1.0f)};
+    for (const Image& bad : {Image{70000, 1, 1, {}}, Image{8193, 8193, 1, {}}, Image{4, 4, 5, {}},
+                             Image{0, 4, 3, {}}, Image{4, 4, 3, std::vector<float>(47)}}) {
+        SCOPED_TRACE(bad.width);
+        EXPECT_NE(errorOf([&] { compare(bad, ok); }).find("image: "), std::string::npos);
+        EXPECT_NE(errorOf([&] { compare(ok, bad); }).find("reference: "), std::string::npos);
+    }
+    EXPECT_EQ(compare(ok, ok, &ok).rmse, 0);
 }
 
 }  // namespace

@@ -2,12 +2,14 @@
 
 #include <filesystem>
 #include <functional>
+#include <mutex>
 
 #include "api/api_internal.h"
 #include "cli/args.h"
 #include "cli/scene_options.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
+#include "util/fork_guard.h"
 #include "util/json.h"
 #include "util/output_set.h"
 
@@ -21,21 +23,50 @@ Image fromInternal(ImageF&& image) {
 
 }  // namespace
 
+// One frame at a time, from whichever thread calls: the GL context is made
+// current on the caller's thread for the frame and released after it.
 struct Renderer::Impl {
-    Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {}
+    Impl(const std::string& clDevice, const std::string& gl) : renderer(clDevice, gl) {
+        renderer.releaseGl();
+    }
+    std::timed_mutex frame;
     tsis::Renderer renderer;
 };
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
-    : impl_(guarded([&] { return std::make_unique<Impl>(clDevice, gl); })) {}
+    : impl_(guarded([&] {
+          guardForks();
+          return std::make_unique<Impl>(clDevice, gl);
+      })) {}
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    // In a forked child its GL and CL wait on threads that are not there.
+    if (impl_ && impl_->renderer.forkedAway()) {
+        (void)impl_.release();
+        return;
+    }
+    if (impl_) {
+        const std::lock_guard wait(impl_->frame);  // another thread's frame ends first
+    }
+}
 
-Frame Renderer::render(const Scene& scene, const Options& options) {
+Frame Renderer::render(const Scene& scene, const Options& options,
+                       const std::function<bool()>& cancel) {
     RenderOptions ro = renderOptionsFromArgs(Args("render", sceneOptionSpecs(), options.args()));
     ro.keepAovs = true;
     const tsis::Scene& s = scene.impl_->scene;
-    FrameResult r = guarded([&] { return impl_->renderer.render(s, ro); });
+    Cancel stop(cancel);
+    FrameResult r = guarded([&] {
+        // Waiting for another thread's frame is cancelled as a frame is.
+        std::unique_lock lock(impl_->frame, std::defer_lock);
+        while (!lock.try_lock_for(Cancel::kPollInterval))
+            if (cancel) stop.check();
+        struct Release {
+            tsis::Renderer& r;
+            ~Release() { r.releaseGl(); }
+        } release{impl_->renderer};
+        return impl_->renderer.render(s, ro, cancel ? &stop : nullptr);
+    });
     Frame f;
     f.width = r.width;
     f.height = r.height;

@@ -50,7 +50,7 @@ Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Scene::Scene(const Options& options) : impl_(std::make_unique<Impl>()) {
     const Args args = sceneArgsOf(options);
     impl_->scene = guarded([&] { return sceneFromArgs(args); });
-    impl_->sizeMm = sizeMmFromArgs(args);
+    impl_->sizeMm = impl_->scene.sizeMm;  // --size-mm S, or the file's own
 }
 
 Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<uint32_t>& triangles,

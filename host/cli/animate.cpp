@@ -156,7 +156,9 @@ int runAnimate(const std::vector<std::string>& argv) {
         }
         FrameResult frame = renderer.render(scene, options);
         outputs.write(framePath(f), [&](const std::filesystem::path& file) {
-            writeImage8(file.string(), frame.width, frame.height, 3, frame.rgb8);
+            int channels = 3;
+            const std::vector<uint8_t> pixels = frame.displayPixels(channels);
+            writeImage8(file.string(), frame.width, frame.height, channels, pixels);
         });
         ms.push_back(t.ms());  // everything: scene update, frame, PNG
         Json j = Json::object();

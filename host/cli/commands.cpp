@@ -4,6 +4,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "render/frame_memory.h"
 #include "render/render_params.h"
 #include "render/renderer.h"
+#include "render/truth_check.h"
 #include "util/error.h"
 #include "util/output_set.h"
 #include "util/progress.h"
@@ -66,6 +68,10 @@ std::vector<OptionSpec> renderSpecs() {
                      "N  render the frame N times, report the last (warm timings; default 1)"});
     specs.push_back({"progressive", false, false,
                      "with --frames N: each frame a new sample set, the image their mean"});
+    specs.push_back({"truth-check", true, false,
+                     "S  also render --method volumetric for S seconds at the same view and "
+                     "print the model's error against it (pooled rel. RMSE of the radiance "
+                     "without the surface reflection, the reference's noise taken out)"});
     return specs;
 }
 
@@ -96,6 +102,12 @@ int runRender(const std::vector<std::string>& argv) {
     const int frames = args.getInt("frames", 1, 1, 100000);
     const std::string output = args.getString("output", "tsis.png");
     const auto statsPath = args.value("stats");
+    const std::optional<double> truthSeconds =
+        args.value("truth-check")
+            ? std::optional<double>(args.getDouble("truth-check", 0, 1e-3, 1e6))
+            : std::nullopt;
+    if (truthSeconds && options.method == "volumetric")
+        fail("--truth-check measures a model against --method volumetric: give another method");
 
     OutputSet outputs;
     addImageOutput(outputs, output);
@@ -106,9 +118,21 @@ int runRender(const std::vector<std::string>& argv) {
     Renderer renderer(args.getString("cl-device", ""), gl);
     FrameResult frame = renderer.render(scene, options);
     for (int i = 1; i < frames; ++i) frame = renderer.render(scene, options);
+    std::optional<TruthCheck> truth;
+    if (truthSeconds) {
+        truth = truthCheck(renderer, scene, options, *truthSeconds);
+        std::fprintf(stderr,
+                     "tsis: truth check: the model is %.1f %% from volumetric transport (pooled "
+                     "rel. RMSE over %d pixels, %.1f %% measured, the reference's noise %.1f %%; "
+                     "%g s of paths)\n",
+                     100 * truth->subtracted, truth->pixels, 100 * truth->relRmse,
+                     100 * truth->noise, truth->seconds);
+    }
 
     outputs.write(output, [&](const std::filesystem::path& f) {
-        writeImage8(f.string(), frame.width, frame.height, 3, frame.rgb8);
+        int channels = 3;
+        const std::vector<uint8_t> pixels = frame.displayPixels(channels);
+        writeImage8(f.string(), frame.width, frame.height, channels, pixels);
     });
     if (aovDir) writeAovOutputs(outputs, *aovDir, frame);
     if (statsPath) {
@@ -117,8 +141,14 @@ int runRender(const std::vector<std::string>& argv) {
         j["material"] = scene.material.name;
         // The scene as options: a glTF's camera and lights as they were used.
         j["scene_args"] =
-            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args));
+            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), scene.sizeMm);
         j["lavg"] = frame.lavg;
+        if (truth)
+            j["truth_check"] = Json{{"rel_rmse", truth->relRmse},
+                                    {"noise", truth->noise},
+                                    {"rel_rmse_noise_subtracted", truth->subtracted},
+                                    {"seconds", truth->seconds},
+                                    {"pixels", truth->pixels}};
         outputs.write(*statsPath,
                       [&](const std::filesystem::path& f) { writeText(f, dumpJson(j) + "\n"); });
     }

@@ -1,8 +1,10 @@
 #include "cli/scene_options.h"
 
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <optional>
 #include <sstream>
 
 #include "atlas/atlas.h"
@@ -22,6 +24,8 @@ namespace tsis {
 
 namespace {
 
+constexpr double kPerM2ToPerMm2 = 1e-6;  // W/m² → W/mm²
+
 // " (default V)" with V as the user types it.
 template <typename T>
 std::string byDefault(const T& value) {
@@ -39,7 +43,17 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
             {"mesh", true, false,
              "M  mesh file (.off/.obj/.ply/.stl/.gltf/.glb), builtin:NAME or a data mesh name" +
                  byDefault(sd.mesh)},
-            {"size-mm", true, false, "S  bounding-box diagonal in mm" + byDefault(sd.sizeMm)},
+            {"size-mm", true, false,
+             "S|file  bounding-box diagonal in mm, or file: the file's own size (glTF: metres; "
+             "others: --units)" +
+                 byDefault(sd.sizeMm)},
+            {"units", true, false,
+             "m|cm|mm  with --size-mm file: the unit of a mesh file that does not state one "
+             "(.obj, .ply, .stl, .off)"},
+            {"light-units", true, false,
+             "tsis|file  file: the glTF's lights at their own candela and lux (683 lm/W, no "
+             "re-levelling), --env in W/(m²·sr), and --exposure 19.93 by default (default "
+             "tsis)"},
             {"allow-outside-assets", false, false,
              "read the files a mesh names (.mtl libraries, textures, glTF buffers and images) "
              "also outside its folder (default: inside only, links resolved)"},
@@ -102,8 +116,50 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
     return specs;
 }
 
+bool sizeFromFile(const Args& args) {
+    return args.value("size-mm") == std::optional<std::string>("file");
+}
+
 double sizeMmFromArgs(const Args& args) {
-    return args.getDouble("size-mm", SceneDefaults().sizeMm, 1e-3, 1e5);
+    return args.getDouble("size-mm", SceneDefaults().sizeMm, kMinSizeMm, kMaxSizeMm);
+}
+
+std::optional<double> unitsMmFromArgs(const Args& args) {
+    const auto u = args.value("units");
+    if (!u) return std::nullopt;
+    if (!sizeFromFile(args)) fail("--units ", *u, " is the file's unit for --size-mm file");
+    if (*u == "m") return 1000.0;
+    if (*u == "cm") return 10.0;
+    if (*u == "mm") return 1.0;
+    fail("--units '", *u, "': expected m, cm or mm");
+}
+
+bool fileLightUnits(const Args& args) {
+    const std::string u = args.getString("light-units", "tsis");
+    if (u != "tsis" && u != "file") fail("--light-units '", u, "': expected tsis or file");
+    if (u == "file" && args.has("light"))
+        fail(
+            "--light-units file reads the glTF's lights (and --env in W/(m²·sr)): not with "
+            "--light, whose values are tsis' own");
+    return u == "file";
+}
+
+double fileSizeMm(const Mesh& mesh, const FileView& view, std::optional<double> unitsMm,
+                  const std::string& spec) {
+    if (spec.rfind("builtin:", 0) == 0)
+        fail("--size-mm file: ", spec, " has no size of its own; give --size-mm S");
+    if (view.statedMmPerUnit && unitsMm)
+        fail("--units: mesh '", mesh.name, "' states its unit (glTF: metres); not with --units");
+    const std::optional<double> mmPerUnit = view.statedMmPerUnit ? view.statedMmPerUnit : unitsMm;
+    if (!mmPerUnit)
+        fail("--size-mm file: mesh '", mesh.name,
+             "' does not state its unit; give --units m, cm or mm");
+    const double diagonal = boundingDiagonal(mesh) * *mmPerUnit;
+    if (!(diagonal >= kMinSizeMm && diagonal <= kMaxSizeMm))
+        fail("--size-mm file: mesh '", mesh.name, "' is ", diagonal,
+             " mm across (its bounding-box diagonal), outside [", kMinSizeMm, ", ", kMaxSizeMm,
+             "]; give --size-mm S");
+    return diagonal;
 }
 
 Material materialFromArgs(const Args& args) {
@@ -246,26 +302,13 @@ std::vector<std::string> meshOptionArgs(const MeshOptions& o) {
     return a;
 }
 
-Scene parseScene(const Args& args) {
-    Scene scene;
-    const double size = sizeMmFromArgs(args);
-    scene.material = materialFromArgs(args);
-    meshOptionsFromArgs(args);
-    for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
-    if (static_cast<int>(scene.lights.size()) > kMaxLights)
-        fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
-    if (auto v = args.value("env")) {
-        scene.env.map = loadEnvironment(*v);
-        scene.env.intensity = args.getDouble("env-intensity", 1.0, 0.0, 1e12);
-        scene.env.rotateDegrees = args.getDouble("env-rotate", 0.0, -3600.0, 3600.0);
-    } else if (args.has("env-intensity") || args.has("env-rotate")) {
-        fail("--env-intensity and --env-rotate need --env FILE");
-    }
-    if (scene.lights.empty() && !scene.env) scene.lights = defaultLights(size);
-    applyEnvironment(scene);  // the map's sun: one more directional light
-    if (static_cast<int>(scene.lights.size()) > kMaxLights)
-        fail("too many lights: ", scene.lights.size() - 1, " and the environment's sun (at most ",
-             kMaxLights, " in all)");
+namespace {
+
+// What parseScene places by the object's size: the default lights where
+// neither --light nor --env is given, and the default camera (framing an
+// object of that diagonal) with --eye, --target and --up over it.
+void placeBySize(Scene& scene, const Args& args, double size) {
+    if (!args.has("light") && !scene.env) scene.lights = defaultLights(size);
     float fov = static_cast<float>(args.getDouble("fov", SceneDefaults().fovDegrees, 1.0, 170.0));
     scene.camera = defaultCamera(size, fov);
     if (auto v = args.value("eye")) scene.camera.eye = glm::vec3(parseVec3("--eye", *v));
@@ -275,6 +318,37 @@ Scene parseScene(const Args& args) {
             fail("--up ", *v, ": --up is the camera's X,Y,Z; the mesh's up axis is --mesh-up ", *v);
         scene.camera.up = glm::vec3(parseVec3("--up", *v));
     }
+}
+
+}  // namespace
+
+Scene parseScene(const Args& args) {
+    Scene scene;
+    // With --size-mm file the size is known once the mesh is: loadSceneMesh
+    // places again by it.
+    const double size = sizeFromFile(args) ? SceneDefaults().sizeMm : sizeMmFromArgs(args);
+    unitsMmFromArgs(args);
+    scene.sizeMm = size;
+    scene.material = materialFromArgs(args);
+    meshOptionsFromArgs(args);
+    const bool fileUnits = fileLightUnits(args);
+    for (const std::string& l : args.values("light")) scene.lights.push_back(parseLight(l));
+    if (static_cast<int>(scene.lights.size()) > kMaxLights)
+        fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
+    if (auto v = args.value("env")) {
+        scene.env.map = loadEnvironment(*v);
+        scene.env.intensity = args.getDouble("env-intensity", 1.0, 0.0, 1e12);
+        // --light-units file: the map in W/(m²·sr), as Blender and Cycles read it.
+        if (fileUnits) scene.env.intensity *= kPerM2ToPerMm2;
+        scene.env.rotateDegrees = args.getDouble("env-rotate", 0.0, -3600.0, 3600.0);
+    } else if (args.has("env-intensity") || args.has("env-rotate")) {
+        fail("--env-intensity and --env-rotate need --env FILE");
+    }
+    placeBySize(scene, args, size);
+    applyEnvironment(scene);  // the map's sun: one more directional light
+    if (static_cast<int>(scene.lights.size()) > kMaxLights)
+        fail("too many lights: ", scene.lights.size() - 1, " and the environment's sun (at most ",
+             kMaxLights, " in all)");
     if (args.has("camera") && (args.has("eye") || args.has("target") || args.has("up")))
         fail("--camera picks the mesh file's camera: not with --eye, --target or --up");
     args.getInt("camera", 0, 0, 1 << 20);
@@ -325,12 +399,21 @@ namespace {
 
 // The mesh `spec` names into `scene` (which holds the command line's
 // material, camera and lights): its file's camera and lights where `use`
-// lets them, its materials, then the mesh prepared at sizeMm.
+// lets them, its materials, then the mesh prepared at sizeMm. With
+// `fileSize` (--size-mm file) the size is the file's own (fileSizeMm of
+// --units `unitsMm`), and `fileSize` places the scene's defaults by it first.
 void loadInto(Scene& scene, const std::string& spec, double size, const MeshOptions& o,
-              const FileViewUse& use, const MaterialOverrides& overrides, ProfileModel profile) {
+              const FileViewUse& use, const MaterialOverrides& overrides, ProfileModel profile,
+              const std::function<void(Scene&, double)>& fileSize = {},
+              std::optional<double> unitsMm = std::nullopt) {
     FileView view;
     Mesh mesh = loadMesh(spec, &view);
     turn(mesh, &view, o);
+    if (fileSize) {
+        size = fileSizeMm(mesh, view, unitsMm, spec);
+        fileSize(scene, size);
+    }
+    scene.sizeMm = size;
     normalizeView(view, normalizationOf(mesh, size));
     // Before the atlas: a wrong --camera costs no waiting.
     useFileView(scene, view, use, size, mesh.name);
@@ -349,13 +432,24 @@ FileViewUse fileViewUseFromArgs(const Args& args) {
     if (args.has("camera")) use.cameraIndex = args.getInt("camera", 0, 0, 1 << 20);
     use.fov = !args.has("fov");
     use.lights = !args.has("light") && !args.has("env");
+    use.fileLightUnits = fileLightUnits(args);
+    use.lightsGivenBy = args.has("light") && args.has("env") ? "--light and --env given"
+                        : args.has("light")                  ? "--light given"
+                                                             : "--env given: it lights alone";
     return use;
 }
 
 void loadSceneMesh(Scene& scene, const Args& args) {
-    loadInto(scene, args.getString("mesh", SceneDefaults().mesh), sizeMmFromArgs(args),
-             meshOptionsFromArgs(args), fileViewUseFromArgs(args), materialOverridesFromArgs(args),
-             profileModelFromArgs(args));
+    const bool fromFile = sizeFromFile(args);
+    const auto placeAgain = [&args](Scene& s, double size) {
+        placeBySize(s, args, size);
+        applyEnvironment(s);
+    };
+    loadInto(scene, args.getString("mesh", SceneDefaults().mesh),
+             fromFile ? SceneDefaults().sizeMm : sizeMmFromArgs(args), meshOptionsFromArgs(args),
+             fileViewUseFromArgs(args), materialOverridesFromArgs(args), profileModelFromArgs(args),
+             fromFile ? std::function<void(Scene&, double)>(placeAgain) : nullptr,
+             unitsMmFromArgs(args));
 }
 
 ViewMesh loadViewMesh(const std::string& spec, double sizeMm, const Scene& cli,
@@ -383,6 +477,9 @@ Scene sceneFromArgs(const Args& args) {
 
 RenderOptions renderOptionsFromArgs(const Args& args) {
     RenderOptions o;
+    // The file's light units: radiance in W/(mm²·sr) exposed as Blender's
+    // exposure 0 shows W/(m²·sr) (README "The file's units and light power").
+    if (fileLightUnits(args)) o.exposure = kFileLightUnitsExposure;
     o.method = args.getString("method", o.method);
     validateRenderOptions(o);  // the method's name first
     for (const RenderParam& p : renderParams()) {

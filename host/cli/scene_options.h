@@ -1,6 +1,7 @@
 // `tsis render` options → a Scene and RenderOptions (defaults, parsing, validation).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,24 @@ struct MeshOptions {
 // Options every command that renders shares (render, compare-style tools, bench).
 const std::vector<OptionSpec>& sceneOptionSpecs();
 
-// --size-mm, checked.
+// --size-mm file: the mesh file's own size (fileSizeMm).
+bool sizeFromFile(const Args& args);
+// --size-mm S, checked (kMinSizeMm to kMaxSizeMm).
 double sizeMmFromArgs(const Args& args);
+// --units m|cm|mm as mm per file unit (only with --size-mm file), if given.
+std::optional<double> unitsMmFromArgs(const Args& args);
+// --light-units file (checked: not with --light).
+bool fileLightUnits(const Args& args);
+// The exposure --light-units file defaults to: log2(10⁶), so that radiance
+// in W/(mm²·sr) × 2^EV is the radiance in W/(m²·sr), which Blender shows
+// as it is at its exposure 0.
+constexpr float kFileLightUnitsExposure = 19.931568f;
+// --size-mm file: the turned mesh's bounding-box diagonal in mm through the
+// unit its format states (view, glTF: metres) or else --units; an error for
+// a builtin mesh, a file without a stated unit and no --units, --units on a
+// file that states one, or a size outside kMinSizeMm to kMaxSizeMm.
+double fileSizeMm(const Mesh& mesh, const FileView& view, std::optional<double> unitsMm,
+                  const std::string& spec);
 
 // Material from --material (SceneDefaults::material) with --sigma-s/--sigma-a/--eta overrides.
 // --albedo R,G,B with --mfp R,G,B (or --mfp alone: the material's own albedo)

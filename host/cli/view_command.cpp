@@ -76,6 +76,7 @@ int runView(const std::vector<std::string>& argv) {
     // opened later keeps the view the user has, and the lights are the viewer's.
     FileViewUse use = fileViewUseFromArgs(args);
     use.lights = false;
+    use.lightsGivenBy = "tsis view has its own lights";
     const MaterialOverrides overrides = materialOverridesFromArgs(args);
     const ProfileModel profile = profileModelFromArgs(args);
     config.loadMesh = [meshOptions, scene, use, overrides, profile](const std::string& spec,

@@ -156,6 +156,11 @@ void writeImage8(const std::string& path, int width, int height, int channels,
     TSIS_CHECK_EQ(pixels.size(), static_cast<size_t>(width) * height * channels);
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
+    if (channels == 4) {
+        // Straight alpha, as PNG stores it: written as given.
+        spec.alpha_channel = 3;
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
     writeWith(path, spec, pixels.data());
 }
 

@@ -63,6 +63,9 @@ struct FileView {
     std::vector<FileMaterial> materials;  // Mesh::materialIds index it
     // What normalizeView scaled the positions by: mm per file unit (glTF: per metre).
     double mmPerFileUnit = 1.0;
+    // The unit the format states, in mm (glTF: metres, 1000); none for the
+    // formats that state none (OBJ, PLY, STL, OFF: --units).
+    std::optional<double> statedMmPerUnit;
     bool empty() const { return cameras.empty() && lights.empty() && materials.empty(); }
 };
 

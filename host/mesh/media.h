@@ -14,8 +14,9 @@ struct Media {
     uint32_t count = 0;
     std::vector<uint32_t> ofVertex;  // the medium of each vertex (and so of its triangles)
     // The file material of each medium: its first triangle's (Mesh::materialOf).
-    // A piece whose triangles carry several scatters light as this one; the
-    // others' albedo still shows, per texel (render/albedo_atlas.h).
+    // A piece whose triangles carry several takes η, the exit scale and
+    // volumetric's medium from this one; each of its points scatters with its
+    // own triangle's profile (render/scene_media.h, render/albedo_atlas.h).
     std::vector<uint32_t> materialOf;
 };
 

@@ -70,6 +70,13 @@ double Mesh::enclosedVolume() const {
     return std::abs(sum) / 6.0;
 }
 
+double boundingDiagonal(const Mesh& mesh) {
+    if (mesh.positions.empty()) return 0;
+    glm::dvec3 lo, hi;
+    bounds(mesh, lo, hi);
+    return glm::length(hi - lo);
+}
+
 Normalization normalizationOf(const Mesh& mesh, double sizeMm) {
     if (!(sizeMm > 0.0) || !std::isfinite(sizeMm))
         fail("mesh '", mesh.name, "': size must be a positive number of mm, got ", sizeMm);

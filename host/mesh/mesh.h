@@ -53,6 +53,8 @@ struct Normalization {
 // docs/design.md §2: centre on the bounding-box centre and scale so the bounding-box
 // diagonal equals sizeMm.
 Normalization normalizeMesh(Mesh& mesh, double sizeMm);
+// The bounding-box diagonal in the mesh's own units (0 for no vertices).
+double boundingDiagonal(const Mesh& mesh);
 // What normalizeMesh(mesh, sizeMm) would do, the mesh left as it is.
 Normalization normalizationOf(const Mesh& mesh, double sizeMm);
 

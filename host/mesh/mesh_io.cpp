@@ -62,7 +62,9 @@ Mesh loadSTL(const std::string& path) {
 Mesh loadGLTF(const std::string& path, FileView* view) {
     // External buffers a .gltf names are read from its folder.
     const std::string folder = fs::path(path).parent_path().string();
-    return parseGLTF(readFile(path), path, folder.empty() ? "." : folder, view);
+    Mesh mesh = parseGLTF(readFile(path), path, folder.empty() ? "." : folder, view);
+    if (view) view->statedMmPerUnit = 1000.0;  // glTF 2.0: metres
+    return mesh;
 }
 
 Mesh loadMesh(const std::string& spec, FileView* view) {

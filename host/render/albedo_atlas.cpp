@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 #include "render/albedo_inversion.h"
 #include "util/hash.h"
@@ -25,6 +26,14 @@ glm::dvec3 sampleTexture(const ImageF& image, const glm::vec2& uv) {
         for (int c = 0; c < 3; ++c) sum[c] += w * image.at(px, py, std::min(c, image.channels - 1));
     }
     return sum;
+}
+
+// Distance from c to the segment p–q.
+double segmentDistance(const glm::dvec2& c, const glm::dvec2& p, const glm::dvec2& q) {
+    const glm::dvec2 e = q - p;
+    const double len2 = glm::dot(e, e);
+    const double t = len2 > 0 ? std::clamp(glm::dot(c - p, e) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(c - (p + t * e));
 }
 
 }  // namespace
@@ -57,15 +66,16 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     auto albedoOfId = [&](uint32_t id) {
         return id < scene.objectMaterials.size() ? scene.objectMaterials[id].albedo : defaultAlbedo;
     };
-    std::vector<glm::dvec3> base(media.media.count);
-    for (uint32_t m = 0; m < media.media.count; ++m)
-        base[m] = albedoOfId(media.media.materialOf[m]);
-    bool plain = true;
+    // The albedo each slot's profile reflects: a triangle's factor is against
+    // its own slot's (SceneMedia::slotOfMaterial), which is its medium's
+    // unless the solid holds several materials.
+    std::vector<glm::dvec3> base(media.slots());
+    for (size_t k = 0; k < media.slots(); ++k) base[k] = albedoOfId(media.slotMaterial[k]);
+    bool plain = !media.mixed;
     for (size_t t = 0; t < mesh.triangles.size() && plain; ++t) {
         const uint32_t id = mesh.materialOf(t);
-        const uint32_t m = media.media.ofVertex[mesh.triangles[t][0]];
         if (id < scene.objectMaterials.size() && scene.objectMaterials[id].texture) plain = false;
-        if (id != media.media.materialOf[m] && albedoOfId(id) != base[m]) plain = false;
+        if (albedoOfId(id) != base[media.slotOfMaterial(id)]) plain = false;
     }
     if (plain) return atlas;
 
@@ -74,34 +84,54 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     const size_t n = static_cast<size_t>(resolution) * resolution;
     std::vector<glm::vec3> factor(n, glm::vec3(0.0f));
     std::vector<char> covered(n, 0);
+    std::vector<uint32_t> slot(media.mixed ? n : 0, 0);
+    // How far (texels) the triangle that gave each texel its slot is: 0 for
+    // a covered centre, ∞ for none yet.
+    std::vector<double> slotDistance(slot.size(), HUGE_VAL);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
         const uint32_t id = mesh.materialOf(t);
-        const glm::dvec3 b = base[media.media.ofVertex[tri[0]]];
+        const uint32_t k = media.slotOfMaterial(id);
+        const glm::dvec3 b = base[k];
         const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
                                               e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
         const double det = e1.x * e2.y - e1.y * e2.x;
         if (det == 0) continue;
         glm::dvec2 lo = glm::min(a, glm::min(a + e1, a + e2)) * double(resolution);
         glm::dvec2 hi = glm::max(a, glm::max(a + e1, a + e2)) * double(resolution);
-        const int x0 = std::max(0, static_cast<int>(std::floor(lo.x - 0.5)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(lo.y - 0.5)));
-        const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.x)));
-        const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.y)));
+        // With slots, a texel's width further: those the triangle only
+        // touches (a pixel's texel at a chart's edge) take the nearest
+        // triangle's slot, not a neighbour's of another chart.
+        const double reach = slot.empty() ? 0.5 : 1.5;
+        const int x0 = std::max(0, static_cast<int>(std::floor(lo.x - reach)));
+        const int y0 = std::max(0, static_cast<int>(std::floor(lo.y - reach)));
+        const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.x + reach - 0.5)));
+        const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.y + reach - 0.5)));
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
                 // Barycentrics of the texel centre; a hair outside counts (edges).
                 const glm::dvec2 d = glm::dvec2((x + 0.5) / resolution, (y + 0.5) / resolution) - a;
                 const double s = (d.x * e2.y - d.y * e2.x) / det;
                 const double r = (e1.x * d.y - e1.y * d.x) / det;
-                if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) continue;
+                const size_t i = static_cast<size_t>(y) * resolution + x;
+                if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) {
+                    if (slot.empty()) continue;
+                    const glm::dvec2 c = (a + d) * double(resolution), p0 = a * double(resolution),
+                                     p1 = (a + e1) * double(resolution),
+                                     p2 = (a + e2) * double(resolution);
+                    const double near =
+                        std::min({segmentDistance(c, p0, p1), segmentDistance(c, p1, p2),
+                                  segmentDistance(c, p2, p0)});
+                    if (near < 1.0 && near < slotDistance[i]) slot[i] = k, slotDistance[i] = near;
+                    continue;
+                }
                 glm::vec2 tc(0.0f);
                 if (mesh.hasTexcoords())
                     tc = float(1 - s - r) * mesh.texcoords[tri[0]] +
                          float(s) * mesh.texcoords[tri[1]] + float(r) * mesh.texcoords[tri[2]];
                 const glm::dvec3 albedo = surfaceAlbedo(scene, id, tc, defaultAlbedo);
-                const size_t i = static_cast<size_t>(y) * resolution + x;
                 factor[i] = glm::vec3(glm::sqrt(albedo / b));
+                if (!slot.empty()) slot[i] = k, slotDistance[i] = 0;
                 covered[i] = 1;
             }
     }
@@ -119,7 +149,10 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
                         const int u = x + dx, v = y + dy;
                         if (u < 0 || v < 0 || u >= resolution || v >= resolution) continue;
                         const size_t j = static_cast<size_t>(v) * resolution + u;
-                        if (covered[j]) sum += factor[j], ++count;
+                        if (!covered[j]) continue;
+                        sum += factor[j], ++count;
+                        // Untouched by any triangle: any covered neighbour's.
+                        if (!slot.empty() && slotDistance[i] == HUGE_VAL) slot[i] = slot[j];
                     }
                 if (count > 0) factor[i] = sum / float(count), next[i] = 1;
             }
@@ -128,7 +161,8 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     for (size_t i = 0; i < n; ++i)
         if (!covered[i]) factor[i] = glm::vec3(1.0f);
     atlas.factor = std::move(factor);
-    atlas.key = key.addAll(atlas.factor).digest();
+    atlas.slot = std::move(slot);
+    atlas.key = key.addAll(atlas.factor).addAll(atlas.slot).digest();
     return atlas;
 }
 

@@ -1,15 +1,17 @@
 // Textured and per-triangle albedo (issue 20, docs/design.md §2 "Materials").
-// A medium scatters light with one profile, its material's; where the surface
-// shows another albedo a (a texture, or a triangle of another file material in
-// the same medium) the light entering and the light leaving there are each
-// scaled by √(a / a_medium), a_medium the total reflectance of the medium's
-// own profile — texturing "pre- and post-scatter" (as real-time skin
-// renderers do): a texture of constant a_medium leaves the image unchanged,
-// and far (several diffusion lengths) inside a region of constant albedo a,
-// B = a·E, the closed form of a homogeneous material of albedo a. Near the
-// border of two albedos the blur is the medium's, not each side's own.
-// Baked once per mesh, materials and atlas resolution into a factor per atlas
-// texel: the flux atlas, the light views and the camera's points read it.
+// A solid's points scatter light with the profile of their own triangle's
+// material (its slot, render/scene_media.h); where the surface shows another
+// albedo a than that profile's a_slot (a texture, or a triangle of another
+// file material that scatters alike) the light entering and the light
+// leaving there are each scaled by √(a / a_slot) — texturing "pre- and
+// post-scatter" (as real-time skin renderers do): a texture of constant
+// a_slot leaves the image unchanged, and far (several diffusion lengths)
+// inside a region of constant albedo a, B = a·E, the closed form of a
+// homogeneous material of albedo a. Near the border of two albedos the blur
+// is the profile's, not each side's own. Baked once per mesh, materials and
+// atlas resolution into a factor per atlas texel (and, where a solid holds
+// several materials, the slot of each texel): the flux atlas, the light
+// views and the camera's points read it.
 #pragma once
 
 #include <cstdint>
@@ -28,13 +30,20 @@ struct AlbedoAtlas {
     // √(a / a_medium) per texel, res², row 0 at v = 0 (GL order); empty: 1
     // everywhere (every triangle shows its medium's own albedo).
     std::vector<glm::vec3> factor;
-    uint64_t key = 0;  // changes with whatever changed the factors
+    // The material slot of each texel's triangle (SceneMedia), where a solid
+    // holds several (SceneMedia::mixed); else empty.
+    std::vector<uint32_t> slot;
+    uint64_t key = 0;  // changes with whatever changed the factors or slots
     bool empty() const { return factor.empty(); }
     // The factor at a texel index (the G-buffer's normal w − 1), 1 when empty.
     glm::vec3 atTexel(size_t texel) const {
         return factor.empty() || texel >= factor.size() ? glm::vec3(1.0f) : factor[texel];
     }
     glm::vec3 at(const glm::vec2& uv) const;  // nearest texel
+    // The slot at a texel index, `fallback` (the medium's) when none.
+    uint32_t slotAtTexel(size_t texel, uint32_t fallback) const {
+        return texel < slot.size() ? slot[texel] : fallback;
+    }
 };
 
 // The albedo a triangle of file material `id` shows at texture coordinate

@@ -38,7 +38,9 @@ void writeAovOutputs(OutputSet& outputs, const std::string& dir, const FrameResu
             continue;
         }
         outputs.write(aovPath(dir, a), [&](const std::filesystem::path& f) {
-            writeImageF(f.string(), image, a.channels);
+            std::vector<std::string> names = a.channels;
+            if (image.channels == 4 && names.size() == 3) names.push_back("A");  // transparent
+            writeImageF(f.string(), image, names);
         });
     }
 }

@@ -77,6 +77,7 @@ void FrameGraph::executeIndices(FrameStats& stats, const std::vector<int>& outpu
     executed_.clear();
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!keep[k]) continue;
+        if (cancel_) cancel_->check();
         Resources res(*this, k);
         Timer t;
         CpuTimer cpu;

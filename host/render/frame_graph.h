@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "render/frame_stats.h"
+#include "util/cancel.h"
 
 namespace tsis {
 
@@ -103,6 +104,7 @@ class FrameGraph {
 
     // Runs the passes needed for `outputs`, in the order they were added,
     // recording each one's stage (its name, milliseconds, bytes) in `stats`.
+    // Asks `cancel` (setCancel) before each pass: tsis::Cancelled stops it there.
     template <typename... T>
     void execute(FrameStats& stats, FrameGraphId<T>... outputs) {
         executeIndices(stats, {outputs.index()...});
@@ -119,6 +121,8 @@ class FrameGraph {
         return id.valid() && needed_.size() > static_cast<size_t>(id.index()) &&
                needed_[static_cast<size_t>(id.index())];
     }
+    // Null: never stopped early.
+    void setCancel(Cancel* cancel) { cancel_ = cancel; }
     // Names of the passes the last execute() ran (for tests and --stats).
     const std::vector<std::string>& executed() const { return executed_; }
     // The graph of the last execute(), for --stats: every pass in order with
@@ -148,6 +152,7 @@ class FrameGraph {
     std::vector<bool> needed_, kept_;
     std::vector<std::string> executed_;
     FrameStats* stats_ = nullptr;
+    Cancel* cancel_ = nullptr;
 };
 
 }  // namespace tsis

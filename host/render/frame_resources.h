@@ -49,6 +49,9 @@ struct SurfacePoints {
     // The albedo's exit factor of each point, rgb (render/albedo_atlas.h);
     // empty where every albedo is its medium's.
     std::vector<float> exitAlbedo;
+    // The material slot of each point (SceneMedia): its texel's where a solid
+    // holds several materials; else empty (its medium's, by its tag).
+    std::vector<uint32_t> slot;
     // Each point's atlas coordinates (u, v), when a method asked for them
     // (FrameContext::pointUvs); else empty.
     std::vector<float> uvs;

@@ -1,5 +1,6 @@
 #include "render/gl_cl_staging.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "util/error.h"
@@ -112,9 +113,12 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
                         p.uvs.insert(p.uvs.end(), uv.begin() + i * 2, uv.begin() + i * 2 + 2);
                     if (albedo.empty()) continue;
                     const float texel = normal[static_cast<size_t>(i) * 4 + 3] - 1.0f;
-                    const glm::vec3 f =
-                        albedo.atTexel(texel >= 0 ? static_cast<size_t>(texel) : SIZE_MAX);
+                    const size_t at = texel >= 0 ? static_cast<size_t>(texel) : SIZE_MAX;
+                    const glm::vec3 f = albedo.atTexel(at);
                     p.exitAlbedo.insert(p.exitAlbedo.end(), {f.x, f.y, f.z});
+                    if (!albedo.slot.empty())
+                        p.slot.push_back(albedo.slotAtTexel(
+                            at, ctx.media->slotOfTag(position[static_cast<size_t>(i) * 4 + 3])));
                 }
             p.count = static_cast<int>(p.pixel.size());
             p.xyz = points_.reserve(ctx.cl->context(), p.host.size() * sizeof(float));
@@ -202,12 +206,15 @@ std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& 
         [this, &ctx, out, slots](FrameGraph::Resources& res) {
             const SurfacePoints& all = res.read(ctx.points);
             // Split again only for a new G-buffer (the points' version) or
-            // another assignment of media to slots.
+            // another assignment of media (or texels, render/albedo_atlas.h)
+            // to slots.
             if (slotPointsOf_ != pointsOf_ || slotOfMedium_ != ctx.media->slotOfMedium ||
-                slotPoints_.size() != slots) {
+                slotAlbedo_ != ctx.albedo->key || slotPoints_.size() != slots) {
                 slotPoints_.assign(slots, SurfacePoints());
                 for (size_t i = 0; i < static_cast<size_t>(all.count); ++i) {
-                    SurfacePoints& p = slotPoints_[ctx.media->slotOfTag(all.host[i * 4 + 3])];
+                    const uint32_t slot =
+                        all.slot.empty() ? ctx.media->slotOfTag(all.host[i * 4 + 3]) : all.slot[i];
+                    SurfacePoints& p = slotPoints_[std::min<size_t>(slot, slots - 1)];
                     p.pixel.push_back(all.pixel[i]);
                     p.host.insert(p.host.end(), all.host.begin() + static_cast<long>(i * 4),
                                   all.host.begin() + static_cast<long>(i * 4 + 4));
@@ -235,6 +242,7 @@ std::vector<FrameGraphId<SurfacePoints>> GlClStaging::addSlotPoints(FrameGraph& 
                 res.addBytes(bytes);
                 slotPointsOf_ = pointsOf_;
                 slotOfMedium_ = ctx.media->slotOfMedium;
+                slotAlbedo_ = ctx.albedo->key;
             }
             for (size_t k = 0; k < slots; ++k) res.write(out[k]) = slotPoints_[k];
         });

@@ -51,6 +51,7 @@ class GlClStaging {
     std::vector<std::unique_ptr<GrowingBuffer>> slotXyz_, slotUv_;
     uint64_t slotPointsOf_ = 0;
     std::vector<uint32_t> slotOfMedium_;
+    uint64_t slotAlbedo_ = 0;  // the albedo atlas' key the split was made for
     std::vector<GrowingBuffer> lightMaps_;
     uint64_t fluxUploaded_ = 0, residualUploaded_ = 0, positionUploaded_ = 0, normalUploaded_ = 0,
              lightsUploaded_ = 0;

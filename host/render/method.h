@@ -57,6 +57,14 @@ struct FrameContext {
     // view or the image size differs from the renderer's last frame.
     uint64_t lighting = 0;
     bool cameraMoved = true;
+    // The caller's request to stop (null: none): long passes ask it between
+    // pieces of their work (stopping() inside parallel loops, which then
+    // return early; checkCancel() between them, which throws tsis::Cancelled).
+    Cancel* cancel = nullptr;
+    bool stopping() const { return cancel && cancel->stopping(); }
+    void checkCancel() const {
+        if (cancel) cancel->check();
+    }
 
     FrameGraphId<AtlasCl> fluxAtlas;  // flux rgb per texel
     // The environment residual's share of fluxAtlas alone (docs/design.md

@@ -33,7 +33,8 @@ void HierarchicalMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
 
 void HierarchicalMethod::build(const FrameContext& ctx, double spacing, FrameStats& stats) {
     // Candidates at half the spacing so the thinned set covers the surface evenly.
-    const bool rebuilt = candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical", ctx.albedo);
+    const bool rebuilt =
+        candidates_.update(*ctx.scene, 0.5 * spacing, "hierarchical", ctx.albedo, ctx.cancel);
     if (rebuilt) {
         std::vector<std::vector<SurfacePoint>> byMedium;
         for (const SurfacePoint& s : poissonThin(candidates_.points(), spacing)) {

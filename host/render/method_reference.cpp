@@ -65,7 +65,8 @@ void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
                 checkCost(estimate(ctx.scene->mesh, spacing,
                                    double(ctx.options->width) * ctx.options->height),
                           ctx.options->force);
-            const bool built = points_.update(*ctx.scene, spacing, "reference", ctx.albedo);
+            const bool built =
+                points_.update(*ctx.scene, spacing, "reference", ctx.albedo, ctx.cancel);
             const std::vector<SurfacePoint>& pts = points_.points();
             if (built) {
                 // At least one (zero) sample: a CL buffer cannot be empty.
@@ -131,6 +132,7 @@ double ReferenceMethod::gather(const FrameContext& ctx, const SurfacePoints& poi
             radiosity.createSubBuffer(CL_MEM_READ_WRITE, CL_BUFFER_CREATE_TYPE_REGION, &region);
         gatherer_.run(in, static_cast<int>(len), samples_, n, table, rd_.table().info, out);
         ms += gatherer_.lastMs();  // waits for the chunk
+        ctx.checkCancel();
         progress.update(static_cast<long long>(begin) + static_cast<long long>(len));
     }
     progress.finish();

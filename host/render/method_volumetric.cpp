@@ -100,7 +100,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
         std::vector<std::vector<std::pair<int, glm::dvec3>>> added(ranges);
         parallelFor(ranges, 1, [&](size_t begin, size_t end) {
             WalkCounters c;
-            for (size_t r = begin; r < end; ++r) {
+            for (size_t r = begin; r < end && !ctx.stopping(); ++r) {
                 const size_t first = r * kRange, n = std::min(kRange, perPass - first);
                 traceLight(
                     walk, pinhole, ctx.boundingRadius, s * perPass + first, n, seed,
@@ -121,6 +121,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
             lightPass(s);
         else
             parallelFor(count, 64, [&](size_t begin, size_t end) {
+                if (ctx.stopping()) return;  // the pass is dropped below
                 WalkCounters c;
                 for (size_t k = begin; k < end; ++k) {
                     if (!seen[k]) continue;
@@ -132,6 +133,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
                 }
                 tally(c);
             });
+        ctx.checkCancel();
         ++done;
         const double seconds = timer.ms() / 1000.0;
         progress.update(timed ? static_cast<long long>(std::min(seconds, o.timeSeconds) * 1000)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 
 #include "image/image_io.h"
 #include "mesh/lod.h"
@@ -116,6 +117,15 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         const float eta = ctx.media->etaOfMedium[m];
         media.emplace_back(eta, static_cast<float>(exitScale(ctx.options->exit, eta)));
     }
+    // --transport object's single scattering in the composite, unless
+    // --single-scatter adds Jensen's on the CL side.
+    std::vector<glm::vec3> scatter;
+    if (addsTransport(*ctx.options) && !addsSingleScatter(*ctx.options))
+        for (size_t m = 0; m < ctx.media->etaOfMedium.size(); ++m) {
+            const Material& mat =
+                ctx.scene->materialOf(ctx.media->slotMaterial[ctx.media->slotOfMedium[m]]);
+            scatter.emplace_back(mat.sigmaSPrime / (mat.sigmaSPrime + mat.sigmaA));
+        }
     Hasher etas;
     for (const glm::vec2& m : media) etas.add(m.x);
     const uint64_t eta = etas.digest();
@@ -123,8 +133,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
 
     graph.addPass(
         "upload_mesh", [&](FrameGraph::Builder& b) { b.write(h.mesh); },
-        [this, &ctx, meshHash, h, media](FrameGraph::Resources& res) {
-            materials_.updateMedia(media);
+        [this, &ctx, meshHash, h, media, scatter](FrameGraph::Resources& res) {
+            materials_.updateMedia(media, scatter);
             materials_.updateAlbedo(ctx.albedo->factor, ctx.atlasResolution, ctx.albedo->key);
             uploadMesh(ctx.scene->mesh, meshHash);
             res.write(h.mesh) = gpuMesh_.get();
@@ -365,6 +375,26 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
             static_cast<float>(env.intensity)};
 }
 
+DisplayBackground RasterPasses::displayBackground(const FrameContext& ctx) {
+    DisplayBackground b;
+    const Environment& env = ctx.scene->env;
+    b.mode = static_cast<int>(ctx.options->background);
+    if (ctx.options->background != Background::Env || !env) return b;
+    if (!envBackground_ || env.map->hash != envBackgroundKey_) {
+        int w = 0, h = 0;
+        const std::vector<float> rgba = wholeMapRgba(*env.map, kBackgroundMapWidth, w, h);
+        envBackground_ = std::make_unique<FloatTexture>(w, h);
+        filterLinear(*envBackground_, true);
+        envBackground_->upload(rgba.data());
+        envBackgroundKey_ = env.map->hash;
+    }
+    b.envMap = envBackground_->id();
+    b.inverseViewProj = glm::inverse(ctx.viewProj);
+    b.worldToMap = glm::transpose(glm::mat3(env.toWorld()));
+    b.scale = static_cast<float>(env.intensity);
+    return b;
+}
+
 FrameGraphId<RadiosityImage> RasterPasses::addRadiosityLookup(FrameGraph& graph,
                                                               const FrameContext& ctx,
                                                               const RasterHandles& gl,
@@ -422,6 +452,7 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             const bool direct = !o.keepAovs && !o.autoExposure;
             if (direct) out.exposureScale = exposureScale(o, out.lavg);
             const RadiosityImage& b = res.read(radiosity);
+            compositePass_.setDisplay(static_cast<int>(o.tone), displayBackground(ctx));
             compositePass_.radiance(b.texture ? nullptr : b.rgba.data(), b.texture, *gbuffer.target,
                                     gbuffer.version, *res.read(gl.samples).target, o.aa,
                                     *lights.views, *lights.shadows, ctx.eye, materials_, alpha,
@@ -435,8 +466,10 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
                 compositePass_.toneMap(out.exposureScale);
             }
             if (!o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
-            out.rgb8 =
-                fromGlRgba(compositePass_.colorTarget().readRGBA8(0), ctx.width, ctx.height, 3);
+            const std::vector<uint8_t> rgba = compositePass_.colorTarget().readRGBA8(0);
+            out.rgb8 = fromGlRgba(rgba, ctx.width, ctx.height, 3);
+            if (o.background == Background::Transparent)
+                out.alpha8 = fromGlRgba(rgba, ctx.width, ctx.height, 1, 3);
         });
     return image;
 }

@@ -33,6 +33,7 @@ struct GlLights {
 // The tone-mapped frame and the radiance it was made from.
 struct FrameImage {
     std::vector<uint8_t> rgb8;    // sRGB, row 0 = top
+    std::vector<uint8_t> alpha8;  // with Background::Transparent the coverage, else empty
     std::vector<float> radiance;  // RGBA, GL row order; only with RenderOptions::keepAovs
     float lavg = 1;               // log-average luminance of the radiance
     float exposureScale = 1;      // Ls = exposureScale·L before the tone curve
@@ -104,6 +105,11 @@ class RasterPasses {
     // composite: none without --env or with --no-specular; re-filtered only
     // when the map or the roughness changed, the albedo table when an η did.
     EnvReflectionTextures environmentReflection(const FrameContext& ctx, FrameStats& stats);
+    // What the display shows around the object (--background); with env the
+    // whole map as a texture (at most kBackgroundMapWidth wide), uploaded
+    // when the map changes.
+    DisplayBackground displayBackground(const FrameContext& ctx);
+    static constexpr int kBackgroundMapWidth = 4096;
 
     LightViewPass lightPass_;
     GeometryAtlasPass geometryAtlasPass_;
@@ -118,6 +124,8 @@ class RasterPasses {
     uint64_t envTextureKey_ = 0;  // transfer and lighting the texture holds
     std::unique_ptr<FloatTexture> envPrefiltered_, envAlbedo_;
     uint64_t envPrefilteredKey_ = 0, envAlbedoKey_ = 0;
+    std::unique_ptr<FloatTexture> envBackground_;
+    uint64_t envBackgroundKey_ = 0;
     std::unique_ptr<GpuMesh> gpuMesh_;
     uint64_t meshHash_ = 0;
     std::unique_ptr<GpuMesh> lodMesh_;

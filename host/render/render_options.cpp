@@ -29,8 +29,15 @@ constexpr Choice<ExitTerm> kExitTerms[] = {{ExitTerm::Jensen, "jensen"},
                                            {ExitTerm::Normalized, "normalized"}};
 constexpr Choice<EnergyTarget> kEnergyTargets[] = {{EnergyTarget::SemiInfinite, "semi-infinite"},
                                                    {EnergyTarget::Object, "object"}};
+constexpr Choice<Transport> kTransports[] = {{Transport::Off, "off"},
+                                             {Transport::Object, "object"}};
 constexpr Choice<VolumetricEstimator> kEstimators[] = {{VolumetricEstimator::Camera, "camera"},
                                                        {VolumetricEstimator::Light, "light"}};
+constexpr Choice<ToneCurve> kToneCurves[] = {
+    {ToneCurve::Reinhard, "reinhard"}, {ToneCurve::Aces, "aces"}, {ToneCurve::None, "none"}};
+constexpr Choice<Background> kBackgrounds[] = {{Background::Color, "color"},
+                                               {Background::Transparent, "transparent"},
+                                               {Background::Env, "env"}};
 
 // The value named `name`; anything else is an error naming `option` and the
 // names ("expected a, b or c").
@@ -61,6 +68,20 @@ const char* pyramidCacheName(PyramidCache cache) {
     return choiceName(cache, kPyramidCaches);
 }
 
+ToneCurve parseToneCurve(const std::string& name) {
+    return parseChoice("--tone", name, kToneCurves);
+}
+const char* toneCurveName(ToneCurve tone) {
+    return choiceName(tone, kToneCurves);
+}
+
+Background parseBackground(const std::string& name) {
+    return parseChoice("--background", name, kBackgrounds);
+}
+const char* backgroundName(Background background) {
+    return choiceName(background, kBackgrounds);
+}
+
 RdPart parseRdPart(const std::string& name) {
     return parseChoice("--rd-part", name, kRdParts);
 }
@@ -87,6 +108,13 @@ EnergyTarget parseEnergyTarget(const std::string& name) {
 }
 const char* energyTargetName(EnergyTarget energy) {
     return choiceName(energy, kEnergyTargets);
+}
+
+Transport parseTransport(const std::string& name) {
+    return parseChoice("--transport", name, kTransports);
+}
+const char* transportName(Transport transport) {
+    return choiceName(transport, kTransports);
 }
 
 VolumetricEstimator parseVolumetricEstimator(const std::string& name) {

@@ -46,6 +46,14 @@ enum class EnergyTarget { SemiInfinite, Object };
 EnergyTarget parseEnergyTarget(const std::string& name);
 const char* energyTargetName(EnergyTarget energy);
 
+// The object's own transport (render/object_transport.h): off, or the
+// volumetric walk's patch-to-patch flux in place of the profile's, added to
+// every profile method's radiosity.
+enum class Transport { Off, Object };
+// "off" or "object"; throws tsis::Error for anything else.
+Transport parseTransport(const std::string& name);
+const char* transportName(Transport transport);
+
 // volumetric's estimator (render/method_volumetric.h): paths from the camera
 // (connected to the lights through the boundary) or photons from the lights
 // (connected to the pinhole).
@@ -53,6 +61,24 @@ enum class VolumetricEstimator { Camera, Light };
 // "camera" or "light"; throws tsis::Error for anything else.
 VolumetricEstimator parseVolumetricEstimator(const std::string& name);
 const char* volumetricEstimatorName(VolumetricEstimator estimator);
+
+// The display's tone curve (gl/shaders/common.glsl toneCurve, README
+// "Exposure, reflection and antialiasing"): Reinhard's Ls/(1 + Ls), ACES
+// fitted (Narkowicz 2015) or none (the exposed radiance clamped to [0, 1]).
+// The values are the shader's u_tone.
+enum class ToneCurve { Reinhard = 0, Aces = 1, None = 2 };
+// "reinhard", "aces" or "none"; throws tsis::Error for anything else.
+ToneCurve parseToneCurve(const std::string& name);
+const char* toneCurveName(ToneCurve tone);
+
+// What the display shows where the object does not (gl/passes.h
+// DisplayBackground): the dark gradient (color), nothing (transparent: alpha
+// 0 in the PNG, the radiance EXR's alpha the coverage) or the --env map seen
+// through the camera (env). The values are the shader's u_background.
+enum class Background { Color = 0, Transparent = 1, Env = 2 };
+// "color", "transparent" or "env"; throws tsis::Error for anything else.
+Background parseBackground(const std::string& name);
+const char* backgroundName(Background background);
 
 // The user-set fields' names, ranges, help and the methods that read them
 // are declared once, in render/render_params.cpp; a new field needs a row there.
@@ -74,6 +100,8 @@ struct RenderOptions {
     float exposure = 3.3f;
     bool autoExposure = false;
     float key = 0.18f;
+    ToneCurve tone = ToneCurve::Reinhard;
+    Background background = Background::Color;
     // The GGX lobe (physics/ggx.h): on, and its roughness R (α = R²); 0.3
     // reads as polished marble or skin.
     bool specular = true;
@@ -92,6 +120,9 @@ struct RenderOptions {
     // methods' radiosity (render/single_scatter.h; volumetric has it already).
     bool singleScatter = false;
     EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
+    // The object's own transport (render/object_transport.h): the default,
+    // chosen by error against volumetric truth; --model thesis turns it off.
+    Transport transport = Transport::Object;
     VolumetricEstimator estimator = VolumetricEstimator::Camera;
     int ltsmRings = 4;  // ltsm / hybrid local part: L rings of C samples + the centre
     int ltsmPerRing = 4;
@@ -125,6 +156,11 @@ struct RenderOptions {
 // Whether the frame adds the single-scattering term (render/single_scatter.h).
 inline bool addsSingleScatter(const RenderOptions& o) {
     return o.singleScatter && o.method != "volumetric";
+}
+
+// Whether the frame adds the object's transport (render/object_transport.h).
+inline bool addsTransport(const RenderOptions& o) {
+    return o.transport == Transport::Object && o.method != "volumetric";
 }
 
 // Checks the method's name and every parameter's value against its row of

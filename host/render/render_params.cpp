@@ -69,6 +69,30 @@ RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
     return p;
 }
 
+// --model: "thesis" sets the thesis' model whole (the rows after it may
+// change a part), "object" turns the object's transport on; it reads back
+// "thesis" while the transport is off.
+RenderParam model(RenderParam p) {
+    p.text = [](const RenderOptions& o) {
+        return std::string(o.transport == Transport::Off ? "thesis" : "object");
+    };
+    p.set = [](RenderOptions& o, const std::string& value) {
+        if (value == "object") {
+            o.transport = Transport::Object;
+        } else if (value == "thesis") {
+            o.transport = Transport::Off;
+            o.profile = ProfileModel::Dipole;
+            o.exit = ExitTerm::Jensen;
+            o.energy = EnergyTarget::SemiInfinite;
+            o.singleScatter = false;
+        } else {
+            fail("--model ", value, " is not a model (object or thesis)");
+        }
+    };
+    p.example = "thesis";
+    return p;
+}
+
 using M = std::vector<std::string>;
 const M kEvery;  // a frame-wide setting
 // The methods that integrate a profile: every one but volumetric.
@@ -124,6 +148,12 @@ std::vector<RenderParam> makeParams() {
         choice({"rd-part", "P  integrate Rd (full), Rd·Wl (local) or Rd·Wg (global)",
                 M{"tsis", "ltsm"}, kRadiosity},
                &O::rdPart, parseRdPart, rdPartName, RdPart::Local),
+        model({"model",
+               "M  the subsurface model: object (the default: the profile with the object's own "
+               "transport, chosen by error against volumetric truth) or thesis (the thesis' "
+               "dipole and exit term alone; sets --transport off, --profile dipole, --exit "
+               "jensen, --energy semi-infinite); README \"Physical accuracy\"",
+               kProfiled, kRadiosity}),
         choice({"profile",
                 "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's), pbd (photon "
                 "beam diffusion) or mc (Monte Carlo, cached on disk); README \"Physical "
@@ -136,6 +166,13 @@ std::vector<RenderParam> makeParams() {
                 "accuracy\"",
                 kProfiled, kRadiosity},
                &O::energy, parseEnergyTarget, energyTargetName, EnergyTarget::Object),
+        choice({"transport",
+                "T  the object's own transport: off (the profile alone) or object (the "
+                "volumetric walk's flux between patches of the surface in place of the "
+                "profile's, fitted once per mesh and material and cached); README \"Physical "
+                "accuracy\"",
+                kProfiled, kRadiosity},
+               &O::transport, parseTransport, transportName, Transport::Object),
         // The exit term changes only the radiance, but volumetric's radiosity
         // is divided by it.
         choice(
@@ -197,6 +234,16 @@ std::vector<RenderParam> makeParams() {
              &O::autoExposure, true),
         number({"key", "K  --auto-exposure's key: key/L_avg × radiance", kEvery, kDisplay}, &O::key,
                {1e-4, 100}),
+        choice({"tone",
+                "T  the display's tone curve after the exposure: reinhard (Ls/(1+Ls)), aces "
+                "(Narkowicz's ACES fit) or none (linear, clamped to 1)",
+                kEvery, kDisplay},
+               &O::tone, parseToneCurve, toneCurveName, ToneCurve::Aces),
+        choice({"background",
+                "B  what the image shows around the object: color (a dark gradient), "
+                "transparent (alpha 0 in the PNG) or env (the --env map through the camera)",
+                kEvery, kDisplay},
+               &O::background, parseBackground, backgroundName, Background::Env),
         number({"roughness", "R  the surface's GGX roughness (alpha = R^2), 0.05 to 1", kEvery,
                 kDisplay},
                &O::roughness, {0.05, 1}),

@@ -1,6 +1,9 @@
 #include "render/renderer.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -56,7 +59,9 @@ void collectAovs(FrameGraph& graph, const RasterHandles& gl, FrameGraphId<Radios
                  FrameGraphId<FrameImage> image, const FrameContext& ctx, FrameResult& result) {
     const int w = ctx.width, h = ctx.height, res = ctx.atlasResolution;
     result.radiosity = toImage(graph.get(radiosity).rgba, w, h, 3);
-    result.radiance = toImage(graph.get(image).radiance, w, h, 3);
+    // Transparent: the alpha channel too (the fraction of the pixel covered).
+    result.radiance = toImage(graph.get(image).radiance, w, h,
+                              ctx.options->background == Background::Transparent ? 4 : 3);
     const RenderTarget& gbuffer = *graph.get(gl.gbuffer).target;
     const std::vector<float> position = gbuffer.readRGBA(0);
     result.position = toImage(position, w, h, 3);
@@ -99,15 +104,53 @@ std::unique_ptr<GlWorker> makeGlWorker(const GlContext& gl) {
     }
 }
 
+// The process whose threads started OpenCL and GL (the first renderer's):
+// PoCL's and Mesa's worker threads are not copied by fork(), so a child
+// waits on them forever, with its parent's renderers or a new one.
+std::atomic<pid_t> gStartedIn{0};
+
+pid_t startedIn() {
+    pid_t expected = 0;
+    const pid_t self = ::getpid();
+    if (gStartedIn.compare_exchange_strong(expected, self)) return self;
+    if (expected != self)
+        fail("no renderer in a child forked after one was made (in process ", expected,
+             "): OpenCL and GL cannot start again without their threads, which fork() does not "
+             "copy; fork before making any renderer, or use multiprocessing's 'spawn' start "
+             "method");
+    return self;
+}
+
 }  // namespace
 
 Renderer::Renderer(const std::string& clDevice, const std::string& gl)
-    : gl_(parseGlChoice(gl)),
+    : pid_(startedIn()),
+      gl_(parseGlChoice(gl)),
       glWorker_(makeGlWorker(gl_)),
       cl_(clDevice),
       sharing_(chooseGlClSharing({gl_.platform(), gl_.vendor(), gl_.renderer()},
                                  clSharingSide(cl_.device()))) {
     raster_.setGlWorker(glWorker_.get());
+}
+
+bool Renderer::forkedAway() const {
+    return ::getpid() != pid_;
+}
+
+void Renderer::forgetAfterAbort() {
+    // A task the worker still draws may use the frame's resources.
+    if (glWorker_) {
+        try {
+            glWorker_->wait();
+        } catch (const std::exception&) {  // the frame's error, already on its way
+        }
+    }
+    cl_.queue().finish();
+    // A pass may have stopped between making a result and recording its key.
+    raster_.invalidateLighting();
+    methods_.clear();
+    singleScatter_.reset();
+    lastView_ = 0;
 }
 
 // The passes free their GL objects in this renderer's context, whichever
@@ -172,14 +215,31 @@ int autoLightResolution(const Scene& scene) {
 const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                                const FrameContext& ctx, bool residual) {
     const SceneMedia& sm = *ctx.media;
-    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) || opt.keepAovs ||
-        !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
+    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) ||
+        addsTransport(opt) || opt.keepAovs || !ctx.albedo->empty() ||
+        !raster_.lightingCurrent(ctx.lighting))
         return nullptr;
     return method(opt.method, 0)
         .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
 }
 
-FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested) {
+std::vector<uint8_t> FrameResult::displayPixels(int& channels) const {
+    channels = alpha8.empty() ? 3 : 4;
+    if (alpha8.empty()) return rgb8;
+    std::vector<uint8_t> rgba(alpha8.size() * 4);
+    for (size_t i = 0; i < alpha8.size(); ++i) {
+        for (size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = rgb8[i * 3 + c];
+        rgba[i * 4 + 3] = alpha8[i];
+    }
+    return rgba;
+}
+
+FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested, Cancel* cancel) {
+    if (forkedAway())
+        fail("this renderer was made in process ", pid_, " and cannot render in its forked child ",
+             ::getpid(),
+             ": OpenCL's and GL's threads are not copied by fork(); fork before making any "
+             "renderer, or use multiprocessing's 'spawn' start method");
     // The one check of the frame's user input; past here a bad value is a bug.
     validateRenderOptions(requested);
     validateMaterial(scene.material);
@@ -188,6 +248,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
     gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
+    if (opt.background == Background::Env && !scene.env)
+        fail("--background env shows the --env map: give --env FILE");
     if (static_cast<int>(scene.lights.size()) > kMaxLights)
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     // The composite's samples are one render target (docs/design.md "The composite").
@@ -200,6 +262,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
     FrameResult result;
     FrameStats& stats = result.stats;
     FrameContext ctx = frameContext(scene, opt, cl_, stats);
+    ctx.cancel = cancel;
 
     // A frame that moves only the camera (or changes σ, N, the method…) reuses
     // the light maps and the flux atlas: same lighting key.
@@ -259,6 +322,15 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
         if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
         singleScatter_->addPass(graph, ctx, gl, radiosity);
     }
+    // The object's own transport, likewise for every method but volumetric.
+    if (addsTransport(opt)) {
+        if (!transport_) transport_ = std::make_unique<ObjectTransport>(cl_);
+        std::vector<KeyedProfile> profiles;
+        for (size_t k = 0; k < sm.slots(); ++k)
+            profiles.push_back(
+                materialContext(ctx, scene.materialOf(sm.slotMaterial[k])).profile());
+        transport_->addPass(graph, ctx, std::move(profiles), radiosity);
+    }
     if (opt.progressive)
         graph.addPass(
             "accumulate",
@@ -273,11 +345,18 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested)
                                 static_cast<double>(accumulator_.framesFor(accumulation)));
             });
     const FrameGraphId<FrameImage> image = raster_.addComposite(graph, ctx, gl, radiosity);
-    graph.execute(stats, image);
+    graph.setCancel(cancel);
+    try {
+        graph.execute(stats, image);
+    } catch (...) {
+        forgetAfterAbort();
+        throw;
+    }
 
     result.width = opt.width;
     result.height = opt.height;
     result.rgb8 = std::move(graph.get(image).rgb8);
+    result.alpha8 = std::move(graph.get(image).alpha8);
     result.lavg = graph.get(image).lavg;
     if (opt.keepAovs) collectAovs(graph, gl, radiosity, image, ctx, result);
     stats.addStage("total", total.ms(), -1, totalCpu.ms());

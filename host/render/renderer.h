@@ -3,6 +3,8 @@
 // material or size re-renders without re-creating anything).
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -18,16 +20,23 @@
 #include "render/gl_cl_sharing.h"
 #include "render/gl_cl_staging.h"
 #include "render/method.h"
+#include "render/object_transport.h"
 #include "render/raster_passes.h"
 #include "render/render_options.h"
 #include "render/single_scatter.h"
 #include "scene/scene.h"
+#include "util/cancel.h"
 
 namespace tsis {
 
 struct FrameResult {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb8;  // tone-mapped sRGB image, row 0 = top
+    // With --background transparent: its alpha (straight, the fraction of
+    // the pixel the object covers), row 0 = top; else empty.
+    std::vector<uint8_t> alpha8;
+    // rgb8 (3 channels) or with alpha8 RGBA (4), as the PNG holds it.
+    std::vector<uint8_t> displayPixels(int& channels) const;
     // With RenderOptions::keepAovs (row 0 = top; atlas row 0 = v = 1):
     ImageF radiosity, radiance, position, normal, coverage, fluxAtlas;
     ImageF medium;   // the pixel's medium (mesh/media.h), −1 where uncovered
@@ -42,7 +51,16 @@ class Renderer {
     explicit Renderer(const std::string& clDevice = "", const std::string& gl = "");
     ~Renderer();
 
-    FrameResult render(const Scene& scene, const RenderOptions& options);
+    // cancel (null: none) is asked between passes and inside the long ones
+    // (volumetric, reference): tsis::Cancelled then, and the next frame starts
+    // afresh. Throws tsis::Error in a child forked after this renderer was made.
+    FrameResult render(const Scene& scene, const RenderOptions& options, Cancel* cancel = nullptr);
+    // Whether this process is not the one that made the renderer (a fork's
+    // child): it may then only be leaked, as its GL and CL threads are gone.
+    bool forkedAway() const;
+    // Leaves the calling thread with no context of this renderer current, so
+    // that another thread may make it current (render() does).
+    void releaseGl() { gl_.release(); }
     // The next progressive frame starts a new mean even if nothing changed.
     void restartAccumulation() { accumulator_ = RadiosityAccumulator(); }
 
@@ -68,6 +86,10 @@ class Renderer {
     const AtlasRadiosity* atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                          const FrameContext& ctx, bool residual);
 
+    // What the next frame cannot reuse after one that stopped early.
+    void forgetAfterAbort();
+
+    pid_t pid_;  // the process that made this renderer
     GlContext gl_;
     // A second GL thread for passes that overlap (gl/gl_worker.h); null where
     // no shared context is offered or TSIS_GL_WORKER=0. Outlives raster_.
@@ -78,6 +100,7 @@ class Renderer {
     GlClSharing sharing_;  // decided, not yet used: staging_ copies (gl_cl_sharing.h)
     RadiosityAccumulator accumulator_;
     std::unique_ptr<SingleScatter> singleScatter_;  // made on first use (its kernel)
+    std::unique_ptr<ObjectTransport> transport_;    // made on first use
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;

@@ -1,7 +1,8 @@
-// The media of a scene (mesh/media.h) and the material each scatters in: a
+// The media of a scene (mesh/media.h) and the materials they scatter in: a
 // frame runs its method once per distinct material ("slot") and keeps, for
-// every point, the run of its own medium's material (docs/design.md §2
-// "Materials"). One material: one slot, the frame as it always was.
+// every point, the run of the material of its own triangle, over the entry
+// points of its whole medium (docs/design.md §2 "Materials": a solid of
+// several materials). One material: one slot, the frame as it always was.
 #pragma once
 
 #include <cstdint>
@@ -15,11 +16,19 @@ namespace tsis {
 struct SceneMedia {
     Media media;
     std::vector<uint32_t> slotMaterial;  // the file material of each slot (Mesh::materialIds)
-    std::vector<uint32_t> slotOfMedium;  // the slot of each medium
-    std::vector<float> etaOfMedium;      // η of each medium's material (GL's Fresnel terms)
+    std::vector<uint32_t> slotOfMedium;  // the slot of each medium's first triangle
+    // The slot of each file material (Mesh::materialIds), and of
+    // kNoFileMaterial last; materials no triangle uses: 0.
+    std::vector<uint32_t> slotOfId;
+    // Some solid holds triangles of two slots: a point's slot is its texel's
+    // (render/albedo_atlas.h), not its medium's.
+    bool mixed = false;
+    std::vector<float> etaOfMedium;  // η of each medium's material (GL's Fresnel terms)
     size_t slots() const { return slotMaterial.size(); }
     // The slot of a point that carries medium tag `tag` (1 + medium; 0: none → slot 0).
     uint32_t slotOfTag(float tag) const;
+    // The slot of file material `id` (kNoFileMaterial: the scene's material).
+    uint32_t slotOfMaterial(uint32_t id) const;
 };
 
 SceneMedia sceneMedia(const Scene& scene, Media media);

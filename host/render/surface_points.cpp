@@ -14,6 +14,7 @@
 #include "render/frame_keys.h"
 #include "render/ray_caster.h"
 #include "tsis_shared.h"
+#include "util/cancel.h"
 #include "util/error.h"
 #include "util/parallel.h"
 #include "util/progress.h"
@@ -27,16 +28,6 @@ namespace {
 // mesh's bounding-box diagonal: far above float rounding of the positions
 // (~1e-7 of the size), far below any feature the dipole resolves.
 constexpr double kShadowOffset = 1e-4;
-
-double boundingDiagonal(const Mesh& mesh) {
-    if (mesh.positions.empty()) return 0.0;
-    glm::dvec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
-    for (const glm::vec3& p : mesh.positions) {
-        lo = glm::min(lo, glm::dvec3(p));
-        hi = glm::max(hi, glm::dvec3(p));
-    }
-    return glm::length(hi - lo);
-}
 
 }  // namespace
 
@@ -338,7 +329,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
                                         const std::vector<Light>& lights, const Media& media,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress) {
+                                        Progress* progress, Cancel* cancel) {
     TSIS_CHECK(!etaOfMedium.empty());
     std::vector<IrradianceSampler> samplers;
     samplers.reserve(etaOfMedium.size());
@@ -351,6 +342,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
     std::atomic<size_t> done{0};
     std::mutex progressMutex;
     parallelFor(k.size(), 64, [&](size_t begin, size_t end) {
+        if (cancel && cancel->stopping()) return;  // thrown below
         for (size_t t = begin; t < end; ++t) {
             const uint32_t medium = media.ofVertex[mesh.triangles[t][0]];
             samplers[std::min<size_t>(medium, samplers.size() - 1)].sampleFacet(
@@ -364,6 +356,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
             progressMutex.unlock();
         }
     });
+    if (cancel) cancel->check();
     return points;
 }
 
@@ -457,7 +450,7 @@ bool SurfaceSampleCache::holds(const Scene& scene, double spacing,
 }
 
 bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::string& label,
-                                const AlbedoAtlas* albedo) {
+                                const AlbedoAtlas* albedo, Cancel* cancel) {
     const uint64_t key = keyOf(scene, spacing, albedo);
     if (valid_ && key == key_) return false;
     Timer t;
@@ -473,7 +466,7 @@ bool SurfaceSampleCache::update(const Scene& scene, double spacing, const std::s
         for (uint32_t m = 0; m < media.count; ++m)
             eta.push_back(scene.materialOf(media.materialOf[m]).eta);
         points_ = sampleSurface(scene.mesh, spacing, scene.lights, media, eta, rays,
-                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress);
+                                kShadowOffset * diagonal, 2.0 * diagonal + 1.0, &progress, cancel);
         addEnvironmentIrradiance(points_, scene, kShadowOffset * diagonal);
         if (albedo) scaleByAlbedo(points_, scene.mesh, spacing, *albedo);
     }

@@ -15,6 +15,7 @@
 
 namespace tsis {
 
+class Cancel;
 class Progress;
 class RayCaster;
 struct AlbedoAtlas;
@@ -60,7 +61,7 @@ std::vector<SurfacePoint> sampleSurface(const Mesh& mesh, double spacing,
                                         const std::vector<Light>& lights, const Media& media,
                                         const std::vector<double>& etaOfMedium,
                                         const RayCaster& rays, double offset, double reach,
-                                        Progress* progress = nullptr);
+                                        Progress* progress = nullptr, Cancel* cancel = nullptr);
 // E of sampleSurface's points (in its order, every light and the environment
 // added) times the albedo factor at each (the light that enters,
 // render/albedo_atlas.h).
@@ -81,9 +82,10 @@ std::vector<SurfacePoint> poissonThin(const std::vector<SurfacePoint>& points, d
 class SurfaceSampleCache {
   public:
     // Returns true when it (re)built the points; `label` names the progress line.
-    // With `albedo`, E carries its entry factor (scaleByAlbedo).
+    // With `albedo`, E carries its entry factor (scaleByAlbedo). `cancel`
+    // (null: none) stops the build with tsis::Cancelled, the points kept.
     bool update(const Scene& scene, double spacing, const std::string& label,
-                const AlbedoAtlas* albedo = nullptr);
+                const AlbedoAtlas* albedo = nullptr, Cancel* cancel = nullptr);
     // True when update() would keep the points it has.
     bool holds(const Scene& scene, double spacing, const AlbedoAtlas* albedo = nullptr) const;
     const std::vector<SurfacePoint>& points() const { return points_; }

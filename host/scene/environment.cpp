@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -103,14 +104,42 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
     map->height = height;
     const size_t n = static_cast<size_t>(width) * height;
     map->residual.resize(n * 3);
+    // NaN and infinity are errors; negatives down to kEnvNegativeTolerance ×
+    // the largest value are resampling's ringing (Blender's shipped worlds
+    // hold thousands, down to −3·10⁻⁶), clamped to 0 with one note.
+    float largest = 0;
     for (size_t i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) {
             const float v = pixels[i * channels + std::min(c, channels - 1)];
-            if (!std::isfinite(v) || v < 0)
+            if (!std::isfinite(v))
                 fail("--env '", path, "': pixel (", i % width, ", ", i / width,
-                     ") has a NaN, infinite or negative value");
-            map->residual[i * 3 + c] = v;
+                     ") has a NaN or infinite value");
+            largest = std::max(largest, v);
         }
+    const float floor = -kEnvNegativeTolerance * largest;
+    size_t clamped = 0;
+    float lowest = 0;
+    for (size_t i = 0; i < n; ++i) {
+        bool negative = false;
+        for (int c = 0; c < 3; ++c) {
+            const float v = pixels[i * channels + std::min(c, channels - 1)];
+            if (v < 0 && !(v >= floor))
+                fail("--env '", path, "': pixel (", i % width, ", ", i / width,
+                     ") has a negative value ", v, ", below -", kEnvNegativeTolerance,
+                     " of the map's largest (", largest, ")");
+            negative = negative || v < 0;
+            lowest = std::min(lowest, v);
+            map->residual[i * 3 + c] = std::max(v, 0.0f);
+        }
+        clamped += negative;
+    }
+    if (clamped)
+        std::fprintf(stderr,
+                     "tsis: note: --env '%s': %zu %s with negative values clamped to 0 (the "
+                     "lowest %.3g; within %g of the map's largest, %.3g)\n",
+                     printable(path).c_str(), clamped, clamped == 1 ? "pixel" : "pixels",
+                     static_cast<double>(lowest), static_cast<double>(kEnvNegativeTolerance),
+                     static_cast<double>(largest));
     // The sun: the brightest texel's neighbourhood, when it stands out.
     size_t brightest = 0;
     double mean = 0, solid = 0;
@@ -139,6 +168,7 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
             const glm::dvec3 e = glm::dvec3(p[0], p[1], p[2]) * texelSolidAngle(y, width, height);
             sum += e;
             dir += d * luminance(p) * texelSolidAngle(y, width, height);
+            map->sunTexels.emplace_back(i, glm::vec3(p[0], p[1], p[2]));
             p[0] = p[1] = p[2] = 0;
         }
         map->sunIrradiance = sum;
@@ -164,6 +194,25 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
                 weight[j] > 0 ? static_cast<float>(sum[j * 3 + c] / weight[j]) : 0.0f;
     map->hash = Hasher().addAll(map->residual).add(map->sunIrradiance).add(width).digest();
     return map;
+}
+
+std::vector<float> wholeMapRgba(const EnvironmentMap& map, int maxWidth, int& width, int& height) {
+    int f = 1;
+    while (map.width / f > maxWidth && map.height / f > 1) f *= 2;
+    width = map.width / f;
+    height = map.height / f;
+    std::vector<float> whole = map.residual;
+    for (const auto& [i, rgb] : map.sunTexels)
+        for (int c = 0; c < 3; ++c) whole[i * 3 + c] = rgb[c];
+    std::vector<float> out(static_cast<size_t>(width) * height * 4, 0.0f);
+    for (int y = 0; y < height * f; ++y)
+        for (int x = 0; x < width * f; ++x) {
+            const float* p = &whole[(static_cast<size_t>(y) * map.width + x) * 3];
+            float* q = &out[(static_cast<size_t>(y / f) * width + x / f) * 4];
+            for (int c = 0; c < 3; ++c) q[c] += p[c] / static_cast<float>(f * f);
+            q[3] = 1.0f;
+        }
+    return out;
 }
 
 std::shared_ptr<const EnvironmentMap> loadEnvironment(const std::string& path) {

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tsis {
@@ -30,6 +31,7 @@ using ShCoefficients = std::array<double, kEnvShCount>;
 ShCoefficients shBasis(const glm::dvec3& d);
 
 constexpr int kShMapWidth = 256;
+constexpr float kEnvNegativeTolerance = 1e-3f;
 
 // A map as loaded, split: radiance in W/(mm²·sr) per texel, RGB, row 0 = top.
 struct EnvironmentMap {
@@ -45,6 +47,9 @@ struct EnvironmentMap {
     // direction towards it, in the map's frame; zero when the map has none.
     glm::dvec3 sunIrradiance{0.0};
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};
+    // The sun's texels as they were before they left the residual: texel
+    // index and RGB radiance (the whole map is residual + these).
+    std::vector<std::pair<size_t, glm::vec3>> sunTexels;
     uint64_t hash = 0;  // of the pixels, for the frame keys
 
     // Radiance of the residual arriving from direction d (map frame), nearest texel.
@@ -56,11 +61,17 @@ struct EnvironmentMap {
 // The map's pixels split: the sun is the texels within 10° of the brightest
 // one that are over 20× the map's mean luminance; a map without such a peak
 // (a uniform sky, a gradient) has no sun (the light is then zero).
-// Throws tsis::Error (one line) for a map that is not 2:1, has no pixels or a
-// NaN, infinite or negative value.
+// Negative values down to −kEnvNegativeTolerance × the map's largest value
+// (resampling's ringing) are clamped to 0 with one note on stderr (their
+// count and the lowest). Throws tsis::Error (one line) for a map that is not
+// 2:1, has no pixels, a NaN or infinite value or a lower negative one.
 std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, int width,
                                                        int height, int channels,
                                                        const std::vector<float>& pixels);
+// The whole map (residual and sun) as RGBA floats, row 0 = top, averaged by
+// a power-of-two factor down to at most maxWidth wide (width, height: the
+// copy's): what --background env shows.
+std::vector<float> wholeMapRgba(const EnvironmentMap& map, int maxWidth, int& width, int& height);
 // Reads FILE (.exr, .hdr, … through OpenImageIO) and splits it.
 std::shared_ptr<const EnvironmentMap> loadEnvironment(const std::string& path);
 

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "scene/scene.h"
 #include "support/error_of.h"
@@ -124,6 +126,67 @@ TEST(Environment, BadMapsAreOneLineErrors) {
               std::string::npos);
     EXPECT_NE(errorOf([] { loadEnvironment("/nonexistent/sky.exr"); }).find("no such file"),
               std::string::npos);
+}
+
+// Resampling's tiny negatives (Blender's worlds: thousands, down to −3·10⁻⁶)
+// are clamped to 0 with one note giving their count and the lowest, over
+// maps of several sizes, channel counts and peaks; one just past the
+// tolerance, NaN and ±infinity stay errors naming the pixel.
+TEST(Environment, TinyNegativesAreClampedWithOneNote) {
+    using test::errorOf;
+    for (const int channels : {1, 3, 4})
+        for (const float peak : {1e-4f, 1.0f, 5e3f})
+            for (const int w : {8, 64}) {
+                const int h = w / 2;
+                std::vector<float> px(static_cast<size_t>(w) * h * channels, 0.25f * peak);
+                px[channels] = peak;  // pixel (1, 0)
+                // Pixels (0, 2) and (w − 1, h − 1), channel 0.
+                const size_t a = static_cast<size_t>(w) * 2 * channels,
+                             b = (static_cast<size_t>(w) * h - 1) * channels;
+                px[a] = -1e-6f * peak;
+                px[b] = -0.9f * kEnvNegativeTolerance * peak;
+                testing::internal::CaptureStderr();
+                auto map = splitEnvironment("t.exr", w, h, channels, px);
+                const std::string err = testing::internal::GetCapturedStderr();
+                const std::string scope = std::to_string(channels) + " ch, peak " +
+                                          std::to_string(peak) + ", " + std::to_string(w);
+                EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << scope << ": " << err;
+                char lowest[32];
+                std::snprintf(lowest, sizeof lowest, "%.3g",
+                              static_cast<double>(-0.9f * kEnvNegativeTolerance * peak));
+                EXPECT_NE(
+                    err.find(
+                        "tsis: note: --env 't.exr': 2 pixels with negative values clamped to 0 "
+                        "(the lowest " +
+                        std::string(lowest) + ";"),
+                    std::string::npos)
+                    << scope << ": " << err;
+                for (const float v : map->residual) EXPECT_GE(v, 0.0f) << scope;
+                // Past the tolerance: an error naming the pixel, and no note.
+                px[b] = -1.1f * kEnvNegativeTolerance * peak;
+                testing::internal::CaptureStderr();
+                const std::string e =
+                    errorOf([&] { splitEnvironment("t.exr", w, h, channels, px); });
+                EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << scope;
+                EXPECT_NE(e.find(") has a negative value"), std::string::npos) << scope << e;
+                EXPECT_NE(
+                    e.find("pixel (" + std::to_string(w - 1) + ", " + std::to_string(h - 1) + ")"),
+                    std::string::npos)
+                    << scope << e;
+                for (const float bad : {std::nanf(""), INFINITY, -INFINITY}) {
+                    px[b] = bad;
+                    const std::string f =
+                        errorOf([&] { splitEnvironment("t.exr", w, h, channels, px); });
+                    EXPECT_NE(f.find("pixel (" + std::to_string(w - 1) + ", " +
+                                     std::to_string(h - 1) + ") has a NaN or infinite value"),
+                              std::string::npos)
+                        << scope << f;
+                }
+            }
+    // No negative: no note.
+    testing::internal::CaptureStderr();
+    splitEnvironment("u.exr", 8, 4, 3, uniformPixels(8, 4, 1));
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ Camera cameraFromFile(const FileCamera& c, double sizeMm) {
 }
 
 std::vector<Light> lightsFromFile(const std::vector<FileLight>& lights, double mmPerFileUnit,
-                                  double sizeMm) {
+                                  double sizeMm, bool relevel) {
     std::vector<glm::dvec3> rgb;
     double strongest = 0;  // the largest irradiance at the centre, W/mm²
     for (const FileLight& l : lights) {
@@ -66,7 +66,8 @@ std::vector<Light> lightsFromFile(const std::vector<FileLight>& lights, double m
             strongest = std::max(strongest, maxComponent(rgb.back()) / d2);
         }
     }
-    const double exposure = strongest > 0 && std::isfinite(1.0 / strongest) ? 1.0 / strongest : 1.0;
+    const double exposure =
+        relevel && strongest > 0 && std::isfinite(1.0 / strongest) ? 1.0 / strongest : 1.0;
     std::vector<Light> out;
     for (size_t i = 0; i < lights.size(); ++i) {
         Light t;
@@ -109,13 +110,16 @@ void useFileView(Scene& scene, const FileView& view, const FileViewUse& use, dou
     }
 
     const size_t lights = view.lights.size();
+    if (use.fileLightUnits && lights == 0 && !scene.env)
+        fail("--light-units file: mesh '", name,
+             "' has no lights (KHR_lights_punctual) and no --env is given");
     if (lights && !use.lights) {
-        note(name,
-             concat(lights, " ", plural(lights, "light", "lights"), " ignored (--light given)"));
+        note(name, concat(lights, " ", plural(lights, "light", "lights"), " ignored (",
+                          use.lightsGivenBy, ")"));
     } else if (lights) {
         const size_t used = std::min(lights, static_cast<size_t>(kMaxLights));
         const std::vector<FileLight> file(view.lights.begin(), view.lights.begin() + used);
-        scene.lights = lightsFromFile(file, view.mmPerFileUnit, sizeMm);
+        scene.lights = lightsFromFile(file, view.mmPerFileUnit, sizeMm, !use.fileLightUnits);
         for (const Light& l : scene.lights)
             if (!std::isfinite(l.rgb.x + l.rgb.y + l.rgb.z + l.vec.x + l.vec.y + l.vec.z))
                 fail("mesh '", name, "': a light's position or intensity is out of range");

@@ -17,7 +17,10 @@ struct FileViewUse {
     bool camera = true;              // false: --eye, --target or --up given
     std::optional<int> cameraIndex;  // --camera N (default: the first camera)
     bool fov = true;                 // the camera's yfov (false: --fov given)
-    bool lights = true;              // false: --light given
+    bool lights = true;              // false: the scene's own lights (why: lightsGivenBy)
+    std::string lightsGivenBy = "--light given";  // the note's reason when !lights
+    // --light-units file: the lights at the file's candela and lux, no re-levelling.
+    bool fileLightUnits = false;
 };
 
 // The file's camera: its eye, up and yfov; the target on its view ray at the
@@ -33,8 +36,10 @@ Camera cameraFromFile(const FileCamera& camera, double sizeMm);
 // level of the default light: the file's balance and colours are kept and the
 // radiosity AOVs stay in the default scene's range. Spot lights become point
 // lights.
+// With `relevel` false (--light-units file) that factor is left out: the
+// lights are the file's own power in tsis' units.
 std::vector<Light> lightsFromFile(const std::vector<FileLight>& lights, double mmPerFileUnit,
-                                  double sizeMm);
+                                  double sizeMm, bool relevel = true);
 
 // Replaces the scene's camera and lights (already the command line's or the
 // defaults) by the file's where `use` lets it, with one note on stderr per

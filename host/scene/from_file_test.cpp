@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/error_of.h"
 
 namespace tsis {
@@ -48,6 +50,31 @@ TEST(FromFile, LightsKeepTheirBalanceAndTheStrongestGivesOne) {
     EXPECT_EQ(
         lightsFromFile({light(FileLight::Type::Point, {0, 0, 9}, {1, 1, 1}, 0)}, 1, 10)[0].rgb,
         glm::vec3(0));
+}
+
+// --light-units file: the file's own power, no common factor, at any scale
+// and over point, spot and directional lights: candela/683 × (s/1000)² W/sr
+// and lux/683 × 10⁻⁶ W/mm² (a Blender light of P W exported as
+// P/4π·683 cd is P/4π W/sr at the file's size, s = 1000 mm per metre).
+TEST(FromFile, FileLightUnitsKeepTheFilesPower) {
+    for (const double mmPerMetre : {1000.0, 10.0, 2.5e4})
+        for (const double cd : {1.0, 683.0 * 100 / (4 * M_PI)}) {
+            const std::vector<Light> out =
+                lightsFromFile({light(FileLight::Type::Point, {0, 0, 30}, {1, 0.5, 0}, cd),
+                                light(FileLight::Type::Spot, {0, 9, 0}, {1, 1, 1}, 2 * cd),
+                                light(FileLight::Type::Directional, {0, -1, 0}, {1, 1, 1}, 3)},
+                               mmPerMetre, 10.0, false);
+            const double k = mmPerMetre / 1000.0;
+            EXPECT_NEAR(out[0].rgb.x, cd / 683.0 * k * k, 1e-6 * cd * k * k) << mmPerMetre;
+            EXPECT_NEAR(out[0].rgb.y, 0.5 * cd / 683.0 * k * k, 1e-6 * cd * k * k);
+            EXPECT_NEAR(out[1].rgb.z, 2 * cd / 683.0 * k * k, 1e-6 * cd * k * k);
+            EXPECT_NEAR(out[2].rgb.x, 3 / 683.0 * 1e-6, 1e-15) << mmPerMetre;
+            // Re-levelled, the same lights give 1 W/mm² at the centre instead.
+            const std::vector<Light> relevelled =
+                lightsFromFile({light(FileLight::Type::Directional, {0, -1, 0}, {1, 1, 1}, 3)},
+                               mmPerMetre, 10.0, true);
+            EXPECT_NEAR(relevelled[0].rgb.x, 1.0, 1e-6);
+        }
 }
 
 TEST(FromFile, CameraTargetIsNearestTheCentreAndAtLeastHalfTheSize) {
@@ -139,6 +166,12 @@ TEST(FromFile, LightsLeftOutAreNoted) {
     EXPECT_EQ(notesOf(given, v, cli),
               "tsis: note: mesh 's.gltf': 9 lights ignored (--light given)\n");
     EXPECT_EQ(given.lights.size(), 1u);
+    // The note gives the reason it was handed (the command line's own words).
+    for (const std::string why : {"--env given: it lights alone", "tsis view has its own lights"}) {
+        cli.lightsGivenBy = why;
+        EXPECT_EQ(notesOf(given, v, cli),
+                  "tsis: note: mesh 's.gltf': 9 lights ignored (" + why + ")\n");
+    }
 }
 
 }  // namespace

@@ -64,6 +64,9 @@ struct Scene {
     std::vector<Light> lights;
     Camera camera;
     Environment env;  // --env: its residual; its sun is among the lights
+    // The object's bounding-box diagonal, mm (--size-mm S, or with
+    // --size-mm file the file's own once the mesh is loaded).
+    double sizeMm = 10;
 };
 
 // The largest number of lights a frame takes (GL uniform arrays and the mis

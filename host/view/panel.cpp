@@ -64,8 +64,17 @@ bool sigmaSliders(const char* label, glm::dvec3& sigma, float lo, float hi) {
     return true;
 }
 
-void settings(ViewState& s) {
+void settings(ViewState& s, const PanelInfo& info) {
     comboOf("method", s.options.method, methodNames());
+    // The file's materials are its own (σ from the file, its albedo or
+    // texture); the sliders set the material of the objects without one.
+    if (!info.fileMaterials.empty()) {
+        ImGui::Text("the file's materials:");
+        for (const std::string& line : info.fileMaterials) ImGui::BulletText("%s", line.c_str());
+        ImGui::TextDisabled(info.sceneMaterialUsed
+                                ? "the sliders: the objects without a file material"
+                                : "the sliders: no object (each has a file material)");
+    }
     std::vector<std::string> presets;
     for (const Material& m : presetMaterials()) presets.push_back(m.name);
     std::string material = s.material.name;
@@ -79,7 +88,7 @@ void settings(ViewState& s) {
     }
     if (custom) s.material.name = "custom";
     float size = float(s.sizeMm);
-    if (ImGui::SliderFloat("size mm", &size, float(kMinSizeMm), float(kMaxSizeMm), "%.1f",
+    if (ImGui::SliderFloat("size mm", &size, float(kMinSizeMm), float(kMaxSizeMm), "%.4g",
                            ImGuiSliderFlags_Logarithmic))
         resize(s, std::clamp(double(size), kMinSizeMm, kMaxSizeMm));
     ImGui::SliderInt("N samples", &s.options.samples, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic);
@@ -138,6 +147,12 @@ void reference(const PanelInfo& info, PanelFields& fields, PanelActions& actions
     } else if (info.referenceStale) {
         ImGui::TextDisabled("the reference is of an earlier view");
     }
+    // The model's own error (key T, script `truth`).
+    if (info.truthRunning)
+        ImGui::Text("truth check: volumetric transport running");
+    else if (info.truthError)
+        ImGui::Text("model vs volumetric %.1f%% (noise %.1f%%)%s", 100.0 * *info.truthError,
+                    100.0 * info.truthNoise, info.truthStale ? ", earlier view" : "");
 }
 
 void files(const PanelInfo& info, PanelFields& fields, PanelActions& actions) {
@@ -207,7 +222,7 @@ PanelActions drawPanel(ViewState& state, PanelFields& fields, const PanelInfo& i
     ImGui::PushItemWidth(-110);
     meshSection(info, fields, actions);
     ImGui::Separator();
-    settings(state);
+    settings(state, info);
     ImGui::Separator();
     environmentSection(state, fields);
     ImGui::Separator();

@@ -16,7 +16,10 @@ namespace tsis {
 // What the panel shows but does not change.
 struct PanelInfo {
     std::string mesh;  // name, triangles
-    double fps = 0;    // frames rendered per second, lately
+    // The file's materials (fileMaterialLines), shown beside the sliders'.
+    std::vector<std::string> fileMaterials;
+    bool sceneMaterialUsed = true;
+    double fps = 0;  // frames rendered per second, lately
     int accumulated = 0;
     const FrameStats* stats = nullptr;  // the last frame's
     std::string frameError;
@@ -30,7 +33,12 @@ struct PanelInfo {
     std::optional<double> relRmse;  // of the shown frame against the reference
     double heatScale = 0;           // relative error at the top of the heat map's colours
     bool referenceStale = false;    // a reference of an earlier view
-    std::string status;             // the last file written, or why not
+    // The model against volumetric transport (render/truth_check.h).
+    bool truthRunning = false;
+    std::optional<double> truthError;  // pooled rel. RMSE, the reference's noise taken out
+    double truthNoise = 0;
+    bool truthStale = false;
+    std::string status;  // the last file written, or why not
     bool statusIsError = false;
 };
 

@@ -32,6 +32,7 @@ const Syntax kSyntax[] = {
     {"heatmap", Kind::Heatmap, "b"},
     {"open-mesh", Kind::OpenMesh, "p"},
     {"reference", Kind::Reference, ""},
+    {"truth", Kind::Truth, ""},
     {"screenshot", Kind::Screenshot, "p"},
     {"save", Kind::Save, "p"},
     {"aov", Kind::Aov, "p"},

@@ -38,6 +38,7 @@ struct ScriptCommand {
         Heatmap,
         OpenMesh,
         Reference,
+        Truth,
         Screenshot,
         Save,
         Aov,

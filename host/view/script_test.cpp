@@ -69,7 +69,7 @@ TEST(Script, BadLinesAreRefusedWithFileAndLine) {
         {"zoom x", "not a finite number"},
         {"panel maybe", "not on or off"},
         {"set material unobtainium", "unobtainium"},
-        {"set size-mm 500", "size-mm"},
+        {"set size-mm 5e5", "size-mm"},
         {"set colour red", "unknown parameter 'colour'"},
         {"screenshot", "expected 1 operand"},
         {"close now", "expected 0 operands"},

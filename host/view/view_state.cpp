@@ -1,6 +1,7 @@
 #include "view/view_state.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "mesh/media.h"
 #include "render/method.h"
@@ -97,6 +98,38 @@ std::string objectsSummary(const Mesh& mesh, const ViewState& state) {
         line += concat(i ? ", " : "", names[i].first,
                        names[i].second > 1 ? concat(" ×", names[i].second) : std::string());
     return line;
+}
+
+namespace {
+
+std::string triple(const glm::dvec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%.3g %.3g %.3g", v.x, v.y, v.z);
+    return text;
+}
+
+}  // namespace
+
+FileMaterialLines fileMaterialLines(const Mesh& mesh, const ViewState& state) {
+    FileMaterialLines out;
+    out.sceneMaterialUsed = false;
+    const Media media = findMedia(mesh);
+    std::vector<uint32_t> shown;
+    for (uint32_t id : media.materialOf) {
+        if (!state.objectMaterials || id >= state.objectMaterials->size()) {
+            out.sceneMaterialUsed = true;
+            continue;
+        }
+        if (std::find(shown.begin(), shown.end(), id) != shown.end()) continue;
+        shown.push_back(id);
+        const ObjectMaterial& o = (*state.objectMaterials)[id];
+        const Material& m = o.medium;
+        out.lines.push_back(concat(m.name, ": sigma_s' ", triple(m.sigmaSPrime), " /mm, sigma_a ",
+                                   triple(m.sigmaA), " /mm, eta ", m.eta,
+                                   o.texture ? ", albedo: texture x " + triple(o.textureScale)
+                                             : ", albedo " + triple(o.albedo)));
+    }
+    return out;
 }
 
 bool drawsSamples(const std::string& method) {

@@ -44,8 +44,20 @@ struct ViewMesh {
 // tile (textured), jade").
 std::string objectsSummary(const Mesh& mesh, const ViewState& state);
 
-// The sizes the size slider spans, mm.
-constexpr double kMinSizeMm = 1, kMaxSizeMm = 100;
+// The panel's lines for the mesh file's materials the objects use, once each
+// in the objects' order: name, σs′ and σa (mm⁻¹), η and the albedo (a
+// textured one: the texture's scale) — the file's, which the material
+// sliders (state.material: the objects without one) do not show. Empty
+// without file materials.
+struct FileMaterialLines {
+    std::vector<std::string> lines;
+    bool sceneMaterialUsed = true;  // some object has no file material
+};
+FileMaterialLines fileMaterialLines(const Mesh& mesh, const ViewState& state);
+
+// The sizes --size-mm takes (tsis render and tsis view alike) and the size
+// slider spans, mm.
+constexpr double kMinSizeMm = 1e-3, kMaxSizeMm = 1e5;
 
 // A new size: the camera and point lights scale with the object (a point
 // light's intensity by the square, so that the irradiance stays).

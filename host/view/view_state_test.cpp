@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <glm/geometric.hpp>
 
 #include "mesh/builtin.h"
@@ -40,8 +42,10 @@ TEST(ViewState, ResizeScalesCameraAndPointLightsKeepingIrradiance) {
     EXPECT_FLOAT_EQ(s.lights[0].rgb.x / glm::dot(s.lights[0].vec, s.lights[0].vec), 2.0f / 25.0f);
     EXPECT_EQ(s.lights[1].vec, glm::vec3(0, -1, 0));
     EXPECT_EQ(s.lights[1].rgb, glm::vec3(0.5f));
-    EXPECT_THROW(resize(s, 0.5), Error);
-    EXPECT_THROW(resize(s, 101), Error);
+    // The range is render's --size-mm's (kMinSizeMm to kMaxSizeMm).
+    EXPECT_THROW(resize(s, 0.5e-3), Error);
+    EXPECT_THROW(resize(s, 1.01e5), Error);
+    EXPECT_THROW(resize(s, 0), Error);
     EXPECT_EQ(s.sizeMm, 30);
 }
 
@@ -90,7 +94,7 @@ TEST(ViewState, SetParameterChangesOneThingOrNothing) {
     EXPECT_EQ(s.maxFrames, 8);
     EXPECT_EQ(s.sizeMm, 20);
     const std::pair<const char*, const char*> bad[] = {
-        {"material", "unobtainium"}, {"sigma-s", "1,2"}, {"eta", "0.5"},        {"size-mm", "1000"},
+        {"material", "unobtainium"}, {"sigma-s", "1,2"}, {"eta", "0.5"},        {"size-mm", "1e6"},
         {"method", "magic"},         {"samples", "0"},   {"atlas-res", "1000"}, {"light-res", "12"},
         {"progressive", "maybe"},    {"frames", "x"},    {"colour", "red"},     {"roughness", "2"},
         {"exposure", "nan"},
@@ -157,6 +161,65 @@ TEST(ViewState, ObjectsSummaryNamesEachObjectsMaterial) {
     EXPECT_EQ(objectsSummary(mesh, state), "4 objects: jade ×2, tile (textured), skin1");
     state.objectMaterials = nullptr;
     EXPECT_EQ(objectsSummary(mesh, state), "4 objects: skin1 ×4");
+}
+
+// The panel shows the file's materials' own σ, η and albedo (issue 39: it
+// showed skin1's), each material once, and says whether the sliders'
+// material is used by any object; over meshes where none, some or all
+// objects have a file material.
+TEST(ViewState, PanelShowsTheFilesMaterials) {
+    auto materials = std::make_shared<std::vector<ObjectMaterial>>(2);
+    (*materials)[0].medium = presetMaterial("marble");
+    (*materials)[0].medium.name = "stone";
+    (*materials)[0].albedo = glm::dvec3(0.8, 0.7, 0.6);
+    (*materials)[1].medium = presetMaterial("ketchup");
+    (*materials)[1].medium.name = "tile";
+    (*materials)[1].texture = std::make_shared<AlbedoTexture>();
+    (*materials)[1].textureScale = glm::dvec3(0.5);
+    const Material& stone = (*materials)[0].medium;
+    char sigma[128];
+    std::snprintf(sigma, sizeof sigma, "stone: sigma_s' %.3g %.3g %.3g /mm", stone.sigmaSPrime.x,
+                  stone.sigmaSPrime.y, stone.sigmaSPrime.z);
+    const std::vector<std::vector<uint32_t>> layouts = {
+        {kNoFileMaterial, kNoFileMaterial}, {0, kNoFileMaterial, 0}, {1, 0, 1}, {0, 0}};
+    for (const std::vector<uint32_t>& ids : layouts) {
+        Mesh mesh;
+        for (size_t k = 0; k < ids.size(); ++k) {
+            Mesh sphere = builtinSphere();
+            const auto base = static_cast<uint32_t>(mesh.positions.size());
+            for (const glm::vec3& p : sphere.positions)
+                mesh.positions.push_back(p + glm::vec3(3.0f * k, 0, 0));
+            for (const glm::uvec3& t : sphere.triangles) {
+                mesh.triangles.push_back(t + glm::uvec3(base));
+                mesh.materialIds.push_back(ids[k]);
+            }
+        }
+        ViewState state;
+        state.material = presetMaterial("skin1");
+        state.objectMaterials = materials;
+        const FileMaterialLines f = fileMaterialLines(mesh, state);
+        const bool none = std::count(ids.begin(), ids.end(), kNoFileMaterial) == int(ids.size());
+        EXPECT_EQ(f.sceneMaterialUsed,
+                  std::find(ids.begin(), ids.end(), kNoFileMaterial) != ids.end());
+        std::vector<uint32_t> distinct;
+        for (uint32_t id : ids)
+            if (id != kNoFileMaterial &&
+                std::find(distinct.begin(), distinct.end(), id) == distinct.end())
+                distinct.push_back(id);
+        ASSERT_EQ(f.lines.size(), distinct.size());
+        EXPECT_EQ(none, f.lines.empty());
+        for (size_t i = 0; i < distinct.size(); ++i) {
+            const std::string& line = f.lines[i];
+            EXPECT_EQ(line.find("skin1"), std::string::npos) << line;
+            if (distinct[i] == 0) {
+                EXPECT_EQ(line.rfind(sigma, 0), 0u) << line;
+                EXPECT_NE(line.find("albedo 0.8 0.7 0.6"), std::string::npos) << line;
+            } else {
+                EXPECT_EQ(line.rfind("tile: ", 0), 0u) << line;
+                EXPECT_NE(line.find("albedo: texture x 0.5 0.5 0.5"), std::string::npos) << line;
+            }
+        }
+    }
 }
 
 }  // namespace

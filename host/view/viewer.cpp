@@ -19,6 +19,7 @@
 #include "physics/material.h"
 #include "render/aov_files.h"
 #include "render/method.h"
+#include "render/truth_check.h"
 #include "util/error.h"
 #include "util/output_set.h"
 #include "view/background_task.h"
@@ -39,6 +40,8 @@ constexpr int kMinWindowHeight = 660;
 constexpr float kAutoOrbitPixels = 0.0349066f / kRadiansPerPixel;
 // Wheel notches and size steps of the keys.
 constexpr double kSizeStep = 1.25;
+// The `truth` command's volumetric budget (two seeds of half each).
+constexpr double kViewTruthSeconds = 20;
 
 double secondsBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
@@ -117,12 +120,20 @@ class Viewer {
     std::string meshError_;
     const Mesh* objectsOf_ = nullptr;  // the mesh objects_ describes (once a mesh, for the panel)
     std::string objects_, objectsMaterial_;
+    FileMaterialLines fileMaterials_;  // the file's materials, for the panel (with objects_)
     std::unique_ptr<BackgroundTask<FrameResult>> referenceTask_;
     ViewState referenceTaskState_;
     Clock::time_point referenceStart_;
     std::optional<FrameResult> reference_;
     ViewState referenceState_;
     std::optional<double> relRmse_;
+    // The model's error against volumetric transport (the `truth` command, T):
+    // its own Renderer in the background, the view when it was asked.
+    void startTruth();
+    std::unique_ptr<BackgroundTask<TruthCheck>> truthTask_;
+    ViewState truthTaskState_;
+    std::optional<TruthCheck> truth_;
+    ViewState truthState_;
     double heatScale_ = 0;
 
     // The panel.
@@ -213,6 +224,20 @@ void Viewer::startReference() {
         GlWindow::wake);
 }
 
+void Viewer::startTruth() {
+    if (truthTask_ || !state_.mesh) return;
+    truthTaskState_ = state_;
+    Scene scene = sceneOf(state_, scaledMesh(state_));
+    const RenderOptions options = state_.options;
+    const std::string device = config_.clDevice, gl = config_.gl;
+    truthTask_ = std::make_unique<BackgroundTask<TruthCheck>>(
+        [scene = std::move(scene), options, device, gl] {
+            Renderer renderer(device, gl);
+            return truthCheck(renderer, scene, options, kViewTruthSeconds);
+        },
+        GlWindow::wake);
+}
+
 void Viewer::onReference() {
     std::unique_ptr<BackgroundTask<FrameResult>> task = std::move(referenceTask_);
     try {
@@ -283,6 +308,18 @@ void Viewer::collect() {
     if (std::optional<FrameDone> done = worker_->take()) onFrame(std::move(*done));
     if (meshTask_ && meshTask_->done()) onMesh();
     if (referenceTask_ && referenceTask_->done()) onReference();
+    if (truthTask_ && truthTask_->done()) {
+        std::unique_ptr<BackgroundTask<TruthCheck>> task = std::move(truthTask_);
+        try {
+            truth_ = task->take();
+            truthState_ = truthTaskState_;
+            if (config_.script)
+                std::fprintf(stderr, "tsis: view: truth check %.1f %% (noise %.1f %%)\n",
+                             100 * truth_->subtracted, 100 * truth_->noise);
+        } catch (...) {
+            report("truth check: " + currentErrorMessage(), true);
+        }
+    }
 }
 
 void Viewer::changeSize(double factor) {
@@ -325,11 +362,12 @@ void Viewer::input() {
     if (pressed(GLFW_KEY_EQUAL) || pressed(GLFW_KEY_KP_ADD)) changeSize(kSizeStep);
     if (pressed(GLFW_KEY_MINUS) || pressed(GLFW_KEY_KP_SUBTRACT)) changeSize(1.0 / kSizeStep);
     if (pressed(GLFW_KEY_C)) startReference();
+    if (pressed(GLFW_KEY_T)) startTruth();
     if (pressed(GLFW_KEY_S)) screenshotPending_ = fields_.screenshotPath;
 }
 
 bool Viewer::busy() const {
-    return meshTask_ || referenceTask_ || awaiting_;
+    return meshTask_ || referenceTask_ || truthTask_ || awaiting_;
 }
 
 // A script's next command waits for the frame of the view so far, the frames
@@ -374,6 +412,9 @@ void Viewer::runCommand(const ScriptCommand& c) {
         case Kind::Reference:
             startReference();
             break;
+        case Kind::Truth:
+            startTruth();
+            break;
         case Kind::Screenshot:
             screenshotPending_ = c.value;
             screenshotDelay_ = 1;  // ImGui lays a changed panel out over two frames
@@ -415,7 +456,10 @@ void Viewer::panel() {
             objectsOf_ = state_.mesh.get();
             objectsMaterial_ = state_.material.name;
             objects_ = objectsSummary(*state_.mesh, state_);
+            fileMaterials_ = fileMaterialLines(*state_.mesh, state_);
         }
+        info.fileMaterials = fileMaterials_.lines;
+        info.sceneMaterialUsed = fileMaterials_.sceneMaterialUsed;
         // The objects: separate solids, light never crossing between them.
         info.mesh = concat(state_.meshSpec, "  (", state_.mesh->triangles.size(), " triangles; ",
                            objects_, ")");
@@ -437,6 +481,9 @@ void Viewer::panel() {
         info.referenceSeconds = secondsBetween(referenceStart_, Clock::now());
     }
     info.relRmse = relRmse_;
+    info.truthRunning = truthTask_ != nullptr;
+    if (truth_) info.truthError = truth_->subtracted, info.truthNoise = truth_->noise;
+    info.truthStale = truth_ && !sameScene(truthState_, state_);
     info.heatScale = heatScale_;
     info.referenceStale = reference_ && !sameScene(referenceState_, state_);
     info.status = status_;
@@ -620,6 +667,7 @@ ViewerResult Viewer::run() {
     stats["min_ui_updates_per_s_while_busy"] =
         minBusyUpdatesPerS_ < 0 ? Json() : Json(minBusyUpdatesPerS_);
     if (relRmse_) stats["reference_rel_rmse"] = *relRmse_;
+    if (truth_) stats["truth_check_rel_rmse"] = truth_->subtracted;
     if (frame_.width > 0) stats["last_frame"] = frame_.stats.toJson();
     result.stats = stats;
     return result;

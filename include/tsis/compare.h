@@ -16,9 +16,17 @@ struct Metrics {
     long long nonfiniteImage = 0, nonfiniteReference = 0;
 };
 
+// The largest images compare takes (checked before anything is copied from
+// Python): 2^26 pixels, the largest frame tsis renders (8192²), at most
+// 65536 on a side, 1 to 4 channels.
+constexpr long long kMaxComparePixels = 1LL << 26;
+constexpr long long kMaxCompareSide = 65536;
+constexpr int kMaxCompareChannels = 4;
+
 // mask: null for every pixel, else the pixels whose first channel > 0.5 (e.g.
 // Frame::coverage). Throws tsis::Error for mismatched sizes or channel counts,
-// and when no selected pixel is finite in both.
+// images past the limits above or whose pixels do not fill width × height ×
+// channels, and when no selected pixel is finite in both.
 Metrics compare(const Image& image, const Image& reference, const Image* mask = nullptr);
 
 }  // namespace tsis::api

@@ -12,4 +12,11 @@ class Error : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// A frame stopped because its caller asked (api::Renderer::render's `cancel`
+// returned true; Ctrl-C in Python): the renderer stays usable.
+class Cancelled : public Error {
+  public:
+    Cancelled() : Error("the frame was cancelled") {}
+};
+
 }  // namespace tsis

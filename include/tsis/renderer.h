@@ -1,9 +1,18 @@
 // Renders frames of a Scene with the render options (method, samples, width,
 // height, …: Options). One Renderer keeps its GL context, OpenCL programs and
 // light maps across frames: make it once, render many.
+//
+// Threads: a Renderer may be used from any thread; its frames run one at a
+// time (a second thread's render() waits for the first's), its GL context
+// current on the calling thread for the frame only. Renderers of their own
+// render in parallel. Processes: OpenCL's and GL's threads are not copied by
+// fork(), so in a child forked after a Renderer was made, render() and making
+// a new Renderer throw tsis::Error at once (fork before making any, or start
+// processes by spawning); the child's copy of a Renderer is then leaked.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,8 +49,13 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // The scene options among `options` are checked, not used (the scene has them).
-    Frame render(const Scene& scene, const Options& options = {});
+    // The scene options among `options` are checked, not used (the scene has
+    // them). cancel (optional) is called on this thread between pieces of the
+    // frame's work, at most every 50 ms: true stops the frame with
+    // tsis::Cancelled, and the Renderer stays usable. It is asked while
+    // render() waits for another thread's frame too.
+    Frame render(const Scene& scene, const Options& options = {},
+                 const std::function<bool()>& cancel = {});
 
   private:
     struct Impl;

@@ -1,7 +1,10 @@
-// Axis-aligned boxes for the scenes of several objects (media, materials).
+// Axis-aligned boxes and spheres for the scenes of several objects (media,
+// materials, shadows).
 #pragma once
 
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <optional>
 
 #include "mesh/mesh.h"
@@ -29,6 +32,26 @@ inline void addBox(Mesh& m, glm::vec3 lo, glm::vec3 hi,
         m.triangles.emplace_back(base, base + 2, base + 3);
         if (material) m.materialIds.insert(m.materialIds.end(), {*material, *material});
     }
+}
+
+// A sphere of `rings` × 2·rings quads (the poles' rows triangles), smooth
+// normals, outward counter-clockwise faces.
+inline void addSphere(Mesh& m, glm::vec3 centre, float radius, unsigned rings = 32) {
+    const unsigned segments = 2 * rings, base = static_cast<unsigned>(m.positions.size());
+    for (unsigned i = 0; i <= rings; ++i)
+        for (unsigned j = 0; j < segments; ++j) {
+            const double t = std::numbers::pi * i / rings, p = 2 * std::numbers::pi * j / segments;
+            const glm::vec3 n(std::sin(t) * std::cos(p), std::cos(t), -std::sin(t) * std::sin(p));
+            m.positions.push_back(centre + radius * n);
+            m.normals.push_back(n);
+        }
+    auto at = [&](unsigned i, unsigned j) { return base + i * segments + j % segments; };
+    for (unsigned i = 0; i < rings; ++i)
+        for (unsigned j = 0; j < segments; ++j) {
+            if (i > 0) m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i, j + 1));
+            if (i + 1 < rings)
+                m.triangles.emplace_back(at(i, j + 1), at(i + 1, j), at(i + 1, j + 1));
+        }
 }
 
 }  // namespace tsis::test

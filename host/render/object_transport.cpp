@@ -1,0 +1,320 @@
+#include "render/object_transport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "cl/launch.h"
+#include "physics/fresnel.h"
+#include "tsis_shared.h"
+#include "util/error.h"
+#include "util/hash.h"
+#include "util/parse.h"
+
+namespace tsis {
+
+namespace {
+
+constexpr int kMaxGridCells = 64;
+const glm::dvec3 kLuma(TSIS_LUMA_R, TSIS_LUMA_G, TSIS_LUMA_B);
+
+// TSIS_TRANSPORT_PATCHES / _PHOTONS (tests, benches) over the defaults.
+PatchTransferOptions transferOptions(uint32_t seed) {
+    PatchTransferOptions o;
+    o.seed = seed;
+    auto read = [](const char* name, int& field, long long lo, long long hi) {
+        if (const char* v = std::getenv(name))
+            field = static_cast<int>(std::clamp(parseInteger(name, v), lo, hi));
+    };
+    read("TSIS_TRANSPORT_PATCHES", o.patches, 1, 4096);
+    read("TSIS_TRANSPORT_PHOTONS", o.photons, 1, 1 << 20);
+    if (const char* v = std::getenv("TSIS_TRANSPORT_ENTRY_SIN"))
+        o.entrySin = std::clamp(parseNumber("TSIS_TRANSPORT_ENTRY_SIN", v), 0.05, 0.95);
+    int single = 1;
+    read("TSIS_TRANSPORT_EXCLUDE_SINGLE", single, 0, 1);
+    o.excludeSingle = single != 0;
+    return o;
+}
+
+// The lights for the kernel: (vec, type: 0 point, 1 directional), (rgb, 0).
+std::vector<float> lightTable(const Scene& scene) {
+    std::vector<float> out;
+    for (const Light& l : scene.lights)
+        out.insert(out.end(),
+                   {l.vec.x, l.vec.y, l.vec.z, l.type == Light::Type::Point ? 0.0f : 1.0f, l.rgb.x,
+                    l.rgb.y, l.rgb.z, 0.0f});
+    return out;
+}
+
+}  // namespace
+
+glm::vec3 TransportGrid::at(const glm::vec3& x) const {
+    glm::vec3 f = (x - origin) / cell;
+    glm::ivec3 i0;
+    for (int a = 0; a < 3; ++a) {
+        f[a] = std::clamp(f[a], 0.0f, static_cast<float>(dims[a] - 1));
+        i0[a] = std::min(static_cast<int>(f[a]), std::max(dims[a] - 2, 0));
+        f[a] -= static_cast<float>(i0[a]);
+    }
+    glm::vec3 sum(0.0f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::ivec3 q = glm::min(i0 + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1), dims - 1);
+        const float w = ((c & 1) ? f.x : 1 - f.x) * (((c >> 1) & 1) ? f.y : 1 - f.y) *
+                        (((c >> 2) & 1) ? f.z : 1 - f.z);
+        sum += w * value[(static_cast<size_t>(q.z) * dims.y + q.y) * dims.x + q.x];
+    }
+    return sum;
+}
+
+TransportGrid transportGrid(const PatchTransfer& t, int m) {
+    TransportGrid g;
+    const int first = t.mediumStart[static_cast<size_t>(m)];
+    const int last = t.mediumStart[static_cast<size_t>(m) + 1];
+    if (first == last) return g;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    float r = 0;
+    for (int p = first; p < last; ++p) {
+        lo = glm::min(lo, t.centre[static_cast<size_t>(p)]);
+        hi = glm::max(hi, t.centre[static_cast<size_t>(p)]);
+        r = std::max(r, t.radius[static_cast<size_t>(p)]);
+    }
+    lo -= glm::vec3(2 * r);
+    hi += glm::vec3(2 * r);
+    const float extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    g.cell = std::max(0.5f * r, extent / (kMaxGridCells - 1));
+    g.origin = lo;
+    for (int a = 0; a < 3; ++a)
+        g.dims[a] =
+            std::clamp(static_cast<int>(std::ceil((hi[a] - lo[a]) / g.cell)) + 1, 2, kMaxGridCells);
+    g.patch.assign(g.nodes() * TransportGrid::kTaps, -1);
+    g.weight.assign(g.nodes() * TransportGrid::kTaps, 0.0f);
+    g.value.assign(g.nodes(), glm::vec3(0.0f));
+    // Gaussian weights of width r over the nearest kTaps centres.
+    const float inv = 1.0f / (r * r);
+    std::vector<std::pair<float, int>> near;
+    for (size_t n = 0; n < g.nodes(); ++n) {
+        const glm::ivec3 q(
+            static_cast<int>(n % static_cast<size_t>(g.dims.x)),
+            static_cast<int>(n / static_cast<size_t>(g.dims.x) % static_cast<size_t>(g.dims.y)),
+            static_cast<int>(n / (static_cast<size_t>(g.dims.x) * g.dims.y)));
+        const glm::vec3 x = g.origin + glm::vec3(q) * g.cell;
+        near.clear();
+        for (int p = first; p < last; ++p) {
+            const glm::vec3 d = x - t.centre[static_cast<size_t>(p)];
+            near.emplace_back(glm::dot(d, d), p);
+        }
+        const size_t k = std::min<size_t>(TransportGrid::kTaps, near.size());
+        std::partial_sort(near.begin(), near.begin() + static_cast<long>(k), near.end());
+        // Relative to the nearest, so far nodes still get their nearest patches.
+        const float d0 = near[0].first;
+        float sum = 0;
+        for (size_t j = 0; j < k; ++j) sum += std::exp(-(near[j].first - d0) * inv);
+        for (size_t j = 0; j < k; ++j) {
+            g.patch[n * TransportGrid::kTaps + j] = near[j].second;
+            g.weight[n * TransportGrid::kTaps + j] = std::exp(-(near[j].first - d0) * inv) / sum;
+        }
+    }
+    return g;
+}
+
+std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
+                                       const std::vector<glm::vec3>& flux,
+                                       const std::vector<glm::vec3>& direction,
+                                       double exitancePerB) {
+    const int first = t.mediumStart[static_cast<size_t>(m)];
+    const int last = t.mediumStart[static_cast<size_t>(m) + 1];
+    const auto k = static_cast<size_t>(last - first);
+    std::vector<glm::dvec3> sum(k, glm::dvec3(0.0));
+    for (size_t i = 0; i < k; ++i) {
+        const glm::dvec3 phi(flux[static_cast<size_t>(first) + i]);
+        if (phi == glm::dvec3(0.0)) continue;
+        // The mean tangential direction of the light entering the patch.
+        const double y = kLuma.x * phi.x + kLuma.y * phi.y + kLuma.z * phi.z;
+        const glm::dvec3 s =
+            y > 0 ? glm::dvec3(direction[static_cast<size_t>(first) + i]) / y : glm::dvec3(0.0);
+        const size_t row = t.blockStart[static_cast<size_t>(m)] + i * k;
+        for (size_t j = 0; j < k; ++j) {
+            const glm::vec3* g = &t.gradient[(row + j) * 3];
+            const glm::dvec3 d(t.delta[row + j]);
+            sum[j] += phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), s),
+                                       d.y + glm::dot(glm::dvec3(g[1]), s),
+                                       d.z + glm::dot(glm::dvec3(g[2]), s));
+        }
+    }
+    std::vector<glm::vec3> out(k);
+    for (size_t j = 0; j < k; ++j)
+        out[j] = glm::vec3(
+            sum[j] / (static_cast<double>(t.area[static_cast<size_t>(first) + j]) * exitancePerB));
+    return out;
+}
+
+ObjectTransport::ObjectTransport(ClRuntime& cl)
+    : cl_(cl), kernel_(cl.kernel("patch_flux.cl", "tsis_patch_flux")) {}
+
+void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
+                          const AtlasCl& position, const AtlasCl& normal,
+                          FrameGraph::Resources& res) {
+    const SceneMedia& sm = *ctx.media;
+    const size_t media = sm.etaOfMedium.size();
+    // What the fit depends on besides the geometry: each medium's material,
+    // profile and exit term.
+    Hasher inputs;
+    inputs.add(kPatchTransferVersion).add(ctx.options->exit).add(ctx.options->seed);
+    std::vector<TransferMedium> mediaIn(media);
+    exitancePerB_.assign(media, 1.0);
+    for (size_t m = 0; m < media; ++m) {
+        const size_t slot = sm.slotOfMedium[m];
+        const Material& mat = ctx.scene->materialOf(sm.slotMaterial[slot]);
+        mediaIn[m].material = mat;
+        // Exitance per unit B: Jensen's Ft/π·B lets out c·B, the normalised term B.
+        exitancePerB_[m] = exitScale(ctx.options->exit, mat.eta) / normalizedExitScale(mat.eta);
+        inputs.add(mat.sigmaSPrime).add(mat.sigmaA).add(mat.eta).add(slotProfiles[slot].key);
+    }
+    const PatchTransferOptions opt = transferOptions(ctx.options->seed);
+    inputs.add(opt.patches)
+        .add(opt.photons)
+        .add(opt.modelSamples)
+        .add(opt.excludeSingle)
+        .add(opt.entrySin);
+    const uint64_t geometry = Hasher(position.version).add(normal.version).digest();
+    if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return;
+
+    const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
+    std::vector<float> pos(texels * 4), nrm(texels * 4);
+    cl::CommandQueue& q = cl_.queue();
+    q.enqueueReadBuffer(position.buffer, CL_TRUE, 0, texels * 16, pos.data());
+    q.enqueueReadBuffer(normal.buffer, CL_TRUE, 0, texels * 16, nrm.data());
+    SurfaceTexels tx;
+    for (size_t i = 0; i < texels; ++i) {
+        const float tag = pos[i * 4 + 3], area = nrm[i * 4 + 3];
+        if (!(tag > 0) || !(area > 0)) continue;
+        tx.position.emplace_back(pos[i * 4], pos[i * 4 + 1], pos[i * 4 + 2]);
+        glm::vec3 n(nrm[i * 4], nrm[i * 4 + 1], nrm[i * 4 + 2]);
+        const float len = glm::length(n);
+        tx.normal.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
+        tx.area.push_back(area);
+        tx.medium.push_back(
+            std::min(static_cast<int>(std::lround(tag)) - 1, static_cast<int>(media) - 1));
+        tx.texel.push_back(static_cast<int>(i));
+    }
+    const double rMax = ctx.maxDistance();
+    for (size_t m = 0; m < media; ++m) {
+        const KeyedProfile& p = slotProfiles[sm.slotOfMedium[m]];
+        const double k = exitancePerB_[m];
+        mediaIn[m].exitance = ProfileTable::build([&](double r) { return p.f(r) * k; }, rMax);
+    }
+    const uint64_t key =
+        Hasher(inputs.digest()).addAll(tx.position).addAll(tx.normal).addAll(tx.area).digest();
+    bool loaded = false;
+    transfer_ = cachedPatchTransfer(ctx.scene->mesh, tx, mediaIn, opt, key, &loaded);
+    res.stats().set("transport_fit_s", transfer_.seconds);
+    res.stats().set("transport_loaded", loaded ? 1.0 : 0.0);
+    fitted_ = true;
+    geometryOf_ = geometry;
+    inputsKey_ = inputs.digest();
+    fluxOf_ = 0;
+
+    // The patches' texels for the device's sums (CSR by patch).
+    const auto patches = static_cast<size_t>(transfer_.patches());
+    std::vector<int> start(patches + 1, 0), list(tx.size());
+    for (int p : transfer_.texelPatch) ++start[static_cast<size_t>(p) + 1];
+    for (size_t p = 0; p < patches; ++p) start[p + 1] += start[p];
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (size_t k = 0; k < tx.size(); ++k)
+        list[static_cast<size_t>(fill[static_cast<size_t>(transfer_.texelPatch[k])]++)] =
+            tx.texel[k];
+    q.enqueueWriteBuffer(start_.reserve(cl_.context(), start.size() * sizeof(int)), CL_TRUE, 0,
+                         start.size() * sizeof(int), start.data());
+    q.enqueueWriteBuffer(texels_.reserve(cl_.context(), std::max<size_t>(list.size(), 1) * 4),
+                         CL_TRUE, 0, list.size() * sizeof(int), list.data());
+    grids_.clear();
+    for (size_t m = 0; m < media; ++m)
+        grids_.push_back(transportGrid(transfer_, static_cast<int>(m)));
+}
+
+void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
+                              std::vector<KeyedProfile> slotProfiles,
+                              FrameGraphId<RadiosityImage> radiosity) {
+    graph.addPass(
+        "object_transport",
+        [&](FrameGraph::Builder& b) {
+            b.read(ctx.fluxAtlas);
+            b.read(ctx.positionAtlas);
+            b.read(ctx.normalAtlas);
+            b.read(ctx.points);
+            b.read(radiosity);
+            b.write(radiosity);
+        },
+        [this, &ctx, profiles = std::move(slotProfiles), radiosity](FrameGraph::Resources& res) {
+            const AtlasCl& flux = res.read(ctx.fluxAtlas);
+            fit(ctx, profiles, res.read(ctx.positionAtlas), res.read(ctx.normalAtlas), res);
+            const auto patches = static_cast<size_t>(transfer_.patches());
+            if (patches == 0) return;
+            if (flux.version != fluxOf_) {
+                cl::CommandQueue& q = cl_.queue();
+                const std::vector<float> lights = lightTable(*ctx.scene);
+                const SceneMedia& sm = *ctx.media;
+                cl::Buffer& lightBuffer =
+                    lights_.reserve(cl_.context(), std::max<size_t>(lights.size(), 4) * 4);
+                if (!lights.empty())
+                    q.enqueueWriteBuffer(lightBuffer, CL_TRUE, 0, lights.size() * 4, lights.data());
+                cl::Buffer& etaBuffer = etas_.reserve(cl_.context(), sm.etaOfMedium.size() * 4);
+                q.enqueueWriteBuffer(etaBuffer, CL_TRUE, 0, sm.etaOfMedium.size() * 4,
+                                     sm.etaOfMedium.data());
+                cl::Buffer& out = flux_.reserve(cl_.context(), patches * 16);
+                cl::Buffer& dirOut = direction_.reserve(cl_.context(), patches * 16);
+                setKernelArgs(kernel_, flux.buffer, res.read(ctx.positionAtlas).buffer,
+                              res.read(ctx.normalAtlas).buffer, etaBuffer, lightBuffer,
+                              static_cast<int>(lights.size() / 8), start_.buffer, texels_.buffer,
+                              static_cast<int>(patches), out, dirOut);
+                enqueue1D(q, kernel_, patches, kLocalSize, nullptr);
+                std::vector<float> sums(patches * 4), dirs(patches * 4);
+                q.enqueueReadBuffer(out, CL_TRUE, 0, patches * 16, sums.data());
+                q.enqueueReadBuffer(dirOut, CL_TRUE, 0, patches * 16, dirs.data());
+                std::vector<glm::vec3> phi(patches), dir(patches);
+                for (size_t p = 0; p < patches; ++p) {
+                    phi[p] = glm::vec3(sums[p * 4], sums[p * 4 + 1], sums[p * 4 + 2]);
+                    dir[p] = glm::vec3(dirs[p * 4], dirs[p * 4 + 1], dirs[p * 4 + 2]);
+                }
+                for (size_t m = 0; m < grids_.size(); ++m) {
+                    TransportGrid& g = grids_[m];
+                    if (g.value.empty()) continue;
+                    const std::vector<glm::vec3> c =
+                        patchCorrection(transfer_, static_cast<int>(m), phi, dir, exitancePerB_[m]);
+                    const int first = transfer_.mediumStart[m];
+                    for (size_t n = 0; n < g.nodes(); ++n) {
+                        glm::vec3 v(0.0f);
+                        for (int k = 0; k < TransportGrid::kTaps; ++k) {
+                            const int p =
+                                g.patch[n * TransportGrid::kTaps + static_cast<size_t>(k)];
+                            if (p >= 0)
+                                v += g.weight[n * TransportGrid::kTaps + static_cast<size_t>(k)] *
+                                     c[static_cast<size_t>(p - first)];
+                        }
+                        g.value[n] = v;
+                    }
+                }
+                fluxOf_ = flux.version;
+            }
+            const SurfacePoints& points = res.read(ctx.points);
+            std::vector<float>& rgba = res.write(radiosity).rgba;
+            for (size_t k = 0; k < static_cast<size_t>(points.count); ++k) {
+                const float tag = points.host[k * 4 + 3];
+                const int m = static_cast<int>(std::lround(tag)) - 1;
+                if (m < 0 || static_cast<size_t>(m) >= grids_.size() || grids_[m].value.empty())
+                    continue;
+                glm::vec3 add = grids_[static_cast<size_t>(m)].at(
+                    glm::vec3(points.host[k * 4], points.host[k * 4 + 1], points.host[k * 4 + 2]));
+                if (!points.exitAlbedo.empty())
+                    add *= glm::vec3(points.exitAlbedo[k * 3], points.exitAlbedo[k * 3 + 1],
+                                     points.exitAlbedo[k * 3 + 2]);
+                float* b = &rgba[static_cast<size_t>(points.pixel[k]) * 4];
+                for (int c = 0; c < 3; ++c) b[c] = std::max(0.0f, b[c] + add[c]);
+            }
+            res.stats().set("transport_patches", static_cast<double>(patches));
+        });
+}
+
+}  // namespace tsis

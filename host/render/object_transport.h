@@ -1,0 +1,78 @@
+// --transport object (docs/design.md §14): the object's own transport added
+// to every profile method's radiosity, once per frame, as single scattering
+// is. The fit (volumetric/patch_transfer.h) gives per medium the difference
+// Δ(i, j) between the volumetric walk's and the profile's flux from patch i
+// to patch j; a frame sums the flux atlas per patch on the device, takes
+// ΔE_j = Σ_i Δ(i, j)·Φ_i on the host, and adds ΔE_j over patch j's area (as
+// radiosity: over the exit term's exitance per unit B) at every covered point,
+// interpolated between patch centres through a grid per medium. The fit is
+// made once per mesh, atlas, materials and profile (a minute at most, cached
+// on disk with the atlases); a frame costs the patch sums, a K×K product and
+// a trilinear read per point.
+#pragma once
+
+#include <cstdint>
+#include <glm/ext/vector_int3.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "render/frame_graph.h"
+#include "render/frame_resources.h"
+#include "render/method.h"
+#include "volumetric/patch_transfer.h"
+
+namespace tsis {
+
+// A medium's correction on a grid: each node the normalised weights of the
+// patch centres near it (kTransportTaps at most), so a frame's values are a
+// weighted sum of the patches' and a point reads them trilinearly.
+struct TransportGrid {
+    static constexpr int kTaps = 6;
+    glm::vec3 origin{0.0f};
+    float cell = 1.0f;
+    glm::ivec3 dims{1};
+    std::vector<int> patch;     // kTaps per node, −1 unused
+    std::vector<float> weight;  // kTaps per node
+    std::vector<glm::vec3> value;
+    size_t nodes() const { return static_cast<size_t>(dims.x) * dims.y * dims.z; }
+    // The trilinear value at x (clamped to the grid).
+    glm::vec3 at(const glm::vec3& x) const;
+};
+
+// The grid of medium m over its patches (cell: half the largest patch radius,
+// at most kMaxGridCells a side).
+TransportGrid transportGrid(const PatchTransfer& t, int m);
+
+// Per patch of medium m, the radiosity to add: Σ_i (Δ(i, j) + G(i, j)·s_i)·flux_i
+// over (area_j · exitance per unit B of the medium), s_i the luminance-weighted
+// mean tangential direction of the light entering patch i (`direction`: its
+// sum over the patch's texels, weighted by their flux's luminance).
+std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
+                                       const std::vector<glm::vec3>& flux,
+                                       const std::vector<glm::vec3>& direction,
+                                       double exitancePerB);
+
+class ObjectTransport {
+  public:
+    explicit ObjectTransport(ClRuntime& cl);
+    // B += the correction at every covered point; `slotProfiles` the profile
+    // each material slot's run integrated (FrameContext::profile()).
+    void addPass(FrameGraph& graph, const FrameContext& ctx, std::vector<KeyedProfile> slotProfiles,
+                 FrameGraphId<RadiosityImage> radiosity);
+    const PatchTransfer* transfer() const { return fitted_ ? &transfer_ : nullptr; }
+
+  private:
+    void fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
+             const AtlasCl& position, const AtlasCl& normal, FrameGraph::Resources& res);
+
+    ClRuntime& cl_;
+    cl::Kernel kernel_;
+    GrowingBuffer start_, texels_, flux_, direction_, lights_, etas_;
+    PatchTransfer transfer_;
+    bool fitted_ = false;
+    std::vector<TransportGrid> grids_;
+    std::vector<double> exitancePerB_;  // per medium
+    uint64_t geometryOf_ = 0, fitKey_ = 0, fluxOf_ = 0, inputsKey_ = 0;
+};
+
+}  // namespace tsis
