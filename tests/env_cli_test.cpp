@@ -46,7 +46,7 @@ TEST(EnvCli, BadMapsAndValuesAreOneLineErrorsWithNoOutput) {
     const std::string text = dir.file("text.exr", "not an image\n");
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"--env " + dir.file("missing.exr"), "no such file"},
-        {"--env " + dir.path().string(), "no such file"},
+        {"--env " + dir.path().string(), "is a directory"},
         {"--env " + text, "not an image"},
         {"--env " + square, "not a lat-long map"},
         {"--env " + dir.file("nan.exr"), "NaN"},

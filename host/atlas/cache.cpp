@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "util/cache_dir.h"
+#include "util/error.h"
 #include "util/input_file.h"
 #include "util/output_file.h"
 #include "util/timer.h"
@@ -110,10 +111,12 @@ std::optional<Mesh> loadCachedAtlas(const std::filesystem::path& file, const Mes
                                     AtlasStats* stats) {
     // A folder, FIFO or device where the entry should be is a miss (reading
     // one would throw or block).
-    if (!notRegularFile(file.string()).empty()) return std::nullopt;
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string bytes;
+    try {
+        bytes = readRegularFile(file.string(), "atlas cache entry");
+    } catch (const Error&) {
+        return std::nullopt;
+    }
     if (bytes.size() < sizeof(Header) + sizeof(uint64_t)) return std::nullopt;
     Header h;
     std::memcpy(&h, bytes.data(), sizeof h);

@@ -199,6 +199,8 @@ int runAtlas(const std::vector<std::string>& argv) {
         {"atlas", true, false, "MODE  auto (default), file or build"},
         {"rotate", true, false, "X,Y,Z  turn the mesh as tsis render --rotate does"},
         {"mesh-up", true, false, "y|z  the mesh's up axis, as tsis render --mesh-up (default y)"},
+        {"allow-outside-assets", false, false,
+         "read a glTF's buffers also outside its folder, as tsis render"},
         {"atlas-res", true, false, findRenderParam("atlas-res")->usage()},  // as tsis render
         {"output|o", true, false, "FILE  PNG: charts in colour and a heat map of the area ratio r"},
         {"json", false, false, "print the statistics as JSON"},

@@ -18,6 +18,7 @@
 #include "render/render_params.h"
 #include "scene/from_file.h"
 #include "util/error.h"
+#include "util/input_file.h"
 
 namespace tsis {
 
@@ -53,6 +54,9 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
              "tsis|file  file: the glTF's lights at their own candela and lux (683 lm/W, no "
              "re-levelling), --env in W/(m²·sr), and --exposure 19.93 by default (default "
              "tsis)"},
+            {"allow-outside-assets", false, false,
+             "read the files a mesh names (.mtl libraries, textures, glTF buffers and images) "
+             "also outside its folder (default: inside only, links resolved)"},
             {"material", true, false,
              "NAME  preset material (see tsis materials)" + byDefault(sd.material)},
             {"sigma-s", true, false,
@@ -281,6 +285,7 @@ MeshOptions meshOptionsFromArgs(const Args& args) {
     o.creaseDegrees = args.getDouble("crease", SceneDefaults().creaseDegrees, 0, 180);
     o.atlasMode = atlasMode(args);
     o.atlas = atlasOptionsFromArgs(args);
+    setOutsideAssetsAllowed(args.flag("allow-outside-assets"));
     return o;
 }
 
@@ -412,6 +417,7 @@ void loadInto(Scene& scene, const std::string& spec, double size, const MeshOpti
     normalizeView(view, normalizationOf(mesh, size));
     // Before the atlas: a wrong --camera costs no waiting.
     useFileView(scene, view, use, size, mesh.name);
+    keepUsedMaterials(mesh, view);
     scene.objectMaterials = objectMaterials(view.materials, scene.material, overrides, profile,
                                             view.mmPerFileUnit, mesh.name);
     scene.mesh = finish(std::move(mesh), size, o);

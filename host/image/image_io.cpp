@@ -15,6 +15,8 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/input_file.h"
+#include "util/memory.h"
 
 namespace tsis {
 
@@ -162,66 +164,102 @@ void writeImage8(const std::string& path, int width, int height, int channels,
     writeWith(path, spec, pixels.data());
 }
 
-ImageF readImageF(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) fail("cannot read image '", path, "': ", OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    ImageF img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.pixels.resize(static_cast<size_t>(img.width) * img.height * img.channels);
-    if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-        fail("cannot read image '", path, "': ", in->geterror());
-    return img;
-}
-
 namespace {
 
 double srgbToLinear(double c) {
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-// A file name OIIO can pick a reader by, for bytes in memory.
-std::string memoryName(const std::string& name, const std::string& bytes) {
-    if (bytes.rfind("\x89PNG", 0) == 0) return "texture.png";
-    if (bytes.rfind("\xff\xd8", 0) == 0) return "texture.jpg";
-    if (bytes.rfind("\x76\x2f\x31\x01", 0) == 0) return "texture.exr";
-    return name;
+// The format OIIO reads `bytes` with: by the signature, else `name`'s extension.
+std::string formatOf(const std::string& name, const std::string& bytes) {
+    if (bytes.rfind("\x89PNG", 0) == 0) return "png";
+    if (bytes.rfind("\xff\xd8", 0) == 0) return "jpg";
+    if (bytes.rfind("\x76\x2f\x31\x01", 0) == 0) return "exr";
+    if (bytes.rfind("#?RADIANCE", 0) == 0 || bytes.rfind("#?RGBE", 0) == 0) return "hdr";
+    std::string ext = std::filesystem::path(name).extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
 }
 
 }  // namespace
 
-ImageF readColorTexture(const std::string& name, const std::string& bytes, bool srgb) {
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    std::unique_ptr<OIIO::ImageInput> in;
-    if (bytes.empty()) {
-        in = OIIO::ImageInput::open(name);
-    } else {
-        OIIO::ImageSpec config;
-        OIIO::Filesystem::IOProxy* proxy = &memory;
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        in = OIIO::ImageInput::open(memoryName(name, bytes), &config);
+uint64_t decodedImageBytes(int width, int height, int channels) {
+    // The floats decoded, and the copy a caller makes of them (RGB, a map).
+    return static_cast<uint64_t>(width) * static_cast<uint64_t>(height) *
+           static_cast<uint64_t>(channels + 3) * sizeof(float);
+}
+
+ImageF decodeImage(const std::string& name, const std::string& given, const ImageDecoding& how) {
+    const std::string fileBytes =
+        given.empty() ? readRegularFile(name, how.what, kMaxImageFileBytes) : std::string();
+    const std::string& bytes = given.empty() ? fileBytes : given;
+    auto bad = [&](const auto&... args) -> void { fail(how.what, " '", name, "': ", args...); };
+    const std::string format = formatOf(name, bytes);
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(format.empty() ? name : format);
+    if (!in || !in->supports("ioproxy")) {
+        OIIO::geterror();
+        bad("not an image format tsis reads (PNG, JPEG, EXR, HDR, TIFF, …)");
     }
-    if (!in) fail("cannot read texture '", name, "': ", OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
-        static_cast<long long>(spec.width) * spec.height > (1LL << 28))
-        fail("texture '", name, "': ", spec.width, "×", spec.height, " is not a usable size");
-    std::vector<float> raw(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))
-        fail("cannot read texture '", name, "': ", in->geterror());
-    const bool decode = srgb && !spec.format.is_floating_point();
-    ImageF img{spec.width, spec.height, 3, {}};
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    OIIO::ImageSpec config;
+    OIIO::Filesystem::IOProxy* proxy = &memory;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    OIIO::ImageSpec spec;
+    // open() reads the header only: the size is checked before any pixel.
+    if (!in->open(name, spec, config)) {
+        std::string why = in->geterror();
+        OIIO::geterror();
+        why = why.substr(0, why.find('\n'));
+        bad("not an image tsis can read (", why.empty() ? "no reason given" : why, ")");
+    }
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 64)
+        bad(spec.width, "×", spec.height, " with ", spec.nchannels,
+            " channels is not a usable image");
+    const uint64_t pixels = static_cast<uint64_t>(spec.width) * static_cast<uint64_t>(spec.height);
+    if (pixels > kMaxImagePixels)
+        bad(spec.width, "×", spec.height, " is more than the limit of ", kMaxImagePixels >> 20,
+            " M pixels (8192×8192)");
+    requireMemory(
+        decodedImageBytes(spec.width, spec.height, spec.nchannels), availableMemoryBytes(),
+        concat("decoding ", how.what, " '", name, "' (", spec.width, "×", spec.height, ")"));
+    ImageF img{spec.width, spec.height, spec.nchannels, {}};
+    img.pixels.resize(pixels * static_cast<size_t>(spec.nchannels));
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
+        std::string why = in->geterror();
+        OIIO::geterror();
+        bad("cannot read it (", why.substr(0, why.find('\n')), ")");
+    }
+    if (how.srgb && !spec.format.is_floating_point()) {
+        // Colour channels only: alpha (the 4th, or the 2nd of grey+alpha) is linear.
+        const int colour = spec.nchannels >= 3 ? 3 : 1;
+        for (size_t i = 0; i < pixels; ++i)
+            for (int c = 0; c < colour; ++c) {
+                float& v = img.pixels[i * spec.nchannels + c];
+                v = static_cast<float>(srgbToLinear(v));
+            }
+    }
+    return img;
+}
+
+ImageF readImageF(const std::string& path) {
+    return decodeImage(path, "", ImageDecoding{"image", false});
+}
+
+ImageF readColorTexture(const std::string& name, const std::string& bytes, bool srgb) {
+    const ImageF raw = decodeImage(name, bytes, ImageDecoding{"texture", srgb});
+    ImageF img{raw.width, raw.height, 3, {}};
     img.pixels.resize(static_cast<size_t>(img.width) * img.height * 3);
-    const int colour = spec.nchannels >= 3 ? 3 : 1;  // grey (and alpha): repeated
+    const int colour = raw.channels >= 3 ? 3 : 1;  // grey (and alpha): repeated
     for (size_t i = 0; i < static_cast<size_t>(img.width) * img.height; ++i)
         for (int c = 0; c < 3; ++c) {
-            const double v = raw[i * spec.nchannels + std::min(c, colour - 1)];
+            const float v = raw.pixels[i * raw.channels + std::min(c, colour - 1)];
             if (!std::isfinite(v) || v < 0)
                 fail("texture '", name, "': pixel ", i % img.width, ",", i / img.width,
                      " is negative or not a number");
-            img.pixels[i * 3 + c] = static_cast<float>(decode ? srgbToLinear(v) : v);
+            img.pixels[i * 3 + c] = v;
         }
     return img;
 }

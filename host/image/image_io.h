@@ -37,13 +37,35 @@ std::string writableExtensions();
 void writeImage8(const std::string& path, int width, int height, int channels,
                  const std::vector<uint8_t>& pixels);
 
+// Images tsis reads are checked before they are decoded: the file through
+// util/input_file.h (a regular file, at most kMaxImageFileBytes), then the
+// dimensions its header declares against kMaxImagePixels and the memory
+// available (util/memory.h), so a small file declaring 50000² is refused
+// without a pixel decoded. RGBA is read unassociated (alpha is not multiplied
+// into the colour: a texel of alpha 0 keeps its colour).
+inline constexpr uint64_t kMaxImagePixels = 1ull << 26;  // 8192² (e.g. 16384×4096)
+
+// How a file's pixels become linear floats.
+struct ImageDecoding {
+    std::string what = "image";  // names the image in errors ("texture", "--env")
+    bool srgb = false;  // 8/16-bit colour channels decoded from sRGB (float formats are linear)
+};
+
+// Every channel as floats, row 0 = top: from `bytes` (an encoded image held
+// in memory; `name` for messages and, by its extension or the bytes'
+// signature, the format) or, when `bytes` is empty, the file `name`. Throws
+// Error "<what> '<name>': <problem>".
+ImageF decodeImage(const std::string& name, const std::string& bytes, const ImageDecoding& how);
+
+// The bytes of the decoded image decodeImage would make of a W×H×C file
+// (what it asks of the memory available).
+uint64_t decodedImageBytes(int width, int height, int channels);
+
+// An image to compare or measure: linear as stored (decodeImage, no sRGB).
 ImageF readImageF(const std::string& path);
 
 // A colour texture as linear RGB (three channels; a grey one repeated, alpha
-// dropped): from `bytes` (an encoded PNG/JPEG/EXR held in memory; `name` for
-// messages and, by its extension or the bytes' signature, the format) or,
-// when empty, the file `name`. With `srgb`, 8/16-bit pixels are decoded from
-// sRGB (float formats are linear already). Throws Error naming it.
+// dropped): decodeImage with `srgb`; a negative or non-finite texel is an Error.
 ImageF readColorTexture(const std::string& name, const std::string& bytes, bool srgb);
 
 // Reorders rows so that row 0 becomes the last (GL read-backs → images).

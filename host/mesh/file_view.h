@@ -76,6 +76,25 @@ inline void normalizeView(FileView& view, const Normalization& n) {
     view.mmPerFileUnit = n.scale;
 }
 
+// Only the materials some triangle uses, renumbered in their order (the
+// mesh's materialIds follow): a file's unused materials then cost nothing
+// later (no texture decoded, no inversion, no note).
+inline void keepUsedMaterials(Mesh& mesh, FileView& view) {
+    std::vector<uint32_t> renumber(view.materials.size(), kNoFileMaterial);
+    for (uint32_t id : mesh.materialIds)
+        if (id < renumber.size()) renumber[id] = 0;
+    std::vector<FileMaterial> used;
+    for (size_t m = 0; m < view.materials.size(); ++m)
+        if (renumber[m] == 0) {
+            renumber[m] = static_cast<uint32_t>(used.size());
+            used.push_back(std::move(view.materials[m]));
+        }
+    for (uint32_t& id : mesh.materialIds)
+        id = id < renumber.size() ? renumber[id] : kNoFileMaterial;
+    if (used.empty()) mesh.materialIds.clear();
+    view.materials = std::move(used);
+}
+
 // The cameras and lights turned as rotateMesh turned the mesh (about `centre`).
 inline void rotateView(FileView& view, const glm::dmat3& rotation, const glm::dvec3& centre) {
     for (FileCamera& c : view.cameras) {

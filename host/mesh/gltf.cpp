@@ -73,8 +73,10 @@ bool noWrite(std::string*, const std::string&, const std::vector<unsigned char>&
     return false;
 }
 
-// With a folder: files inside it only. tinygltf joins the URI to the folder
-// (and then to "."); "../", an absolute path or a link that leads out is refused.
+// With a folder: files inside it only (util/input_file.h assetFile, unless
+// --allow-outside-assets), regular files of at most kMaxMeshFileBytes.
+// tinygltf joins the (decoded) URI to the folder (and then to "."); "../",
+// an absolute path or a link that leads out is refused.
 struct Folder {
     std::filesystem::path root;  // canonical
 };
@@ -84,17 +86,11 @@ bool anyFile(const std::string& path, void*) {
 }
 bool readInside(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                 void* user) {
-    namespace fs = std::filesystem;
-    const fs::path& root = static_cast<const Folder*>(user)->root;
-    std::error_code ec;
-    const fs::path file = fs::canonical(path, ec);
-    const auto [r, f] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
-    if (ec || r != root.end() || f == file.end()) {
-        if (err) *err = "outside the glTF's folder";
-        return false;
-    }
+    const std::filesystem::path& root = static_cast<const Folder*>(user)->root;
     try {
-        const std::string bytes = readRegularFile(file.string(), "buffer");
+        const std::string file =
+            assetFile(root.string(), std::filesystem::absolute(path).string(), "external file");
+        const std::string bytes = readRegularFile(file, "external file");
         out->assign(bytes.begin(), bytes.end());
         return true;
     } catch (const Error& e) {

@@ -6,12 +6,33 @@
 #include <filesystem>
 
 #include "mesh/parse_util.h"
+#include "util/input_file.h"
 
 namespace tsis::gltf {
 
 namespace {
 
 using namespace meshparse;
+
+// A URI's %XX escapes decoded (RFC 3986), as tinygltf decodes it to read the file.
+std::string percentDecoded(const std::string& uri) {
+    auto hex = [](char c) {
+        return c >= '0' && c <= '9'   ? c - '0'
+               : c >= 'a' && c <= 'f' ? c - 'a' + 10
+               : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                      : -1;
+    };
+    std::string out;
+    for (size_t k = 0; k < uri.size(); ++k) {
+        if (uri[k] == '%' && k + 2 < uri.size() && hex(uri[k + 1]) >= 0 && hex(uri[k + 2]) >= 0) {
+            out += static_cast<char>(hex(uri[k + 1]) * 16 + hex(uri[k + 2]));
+            k += 2;
+        } else {
+            out += uri[k];
+        }
+    }
+    return out;
+}
 
 struct Reader {
     const tinygltf::Model& model;
@@ -86,15 +107,25 @@ struct Reader {
                 droppedTextures.add("an external image, not read when parsing from memory");
                 return;
             }
+            // tinygltf read the file through gltf.cpp's checked callback
+            // (inside the folder, a regular file): its bytes, or why not.
+            const std::string uri = percentDecoded(image.uri);
             const std::string path =
-                (std::filesystem::path(folder) / image.uri).lexically_normal().string();
-            std::error_code ec;
-            if (!std::filesystem::exists(path, ec)) {
-                note(name, concat("material '", materialName(i), "': texture '", path,
-                                  "' not found: albedo factor only"));
+                (std::filesystem::path(folder) / uri).lexically_normal().string();
+            if (img < images.size() && !images[img].empty()) {
+                fm.textureBytes = images[img];
+                fm.texturePath = path;
                 return;
             }
-            fm.texturePath = path;
+            std::string why = "could not be read";
+            try {
+                why = notRegularFile(assetFile(folder, uri, "texture"));
+                if (why.empty()) why = "could not be read";
+                why = concat("texture '", path, "' ", why);
+            } catch (const Error& e) {
+                why = e.what();
+            }
+            note(name, concat("material '", materialName(i), "': ", why, ": albedo factor only"));
             return;
         }
         // In the file (a bufferView or a data URI): the bytes tinygltf handed over.
@@ -148,6 +179,11 @@ struct Reader {
         FileMaterial fm;
         fm.name = m.name.empty() ? concat("#", i) : m.name;
         const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
+        // A baseColorFactor that is not an array of numbers (a string, one
+        // number) is skipped by tinygltf: glTF's white, noted.
+        if (const auto given = m.values.find("baseColorFactor");
+            given != m.values.end() && given->second.number_array.size() != 4)
+            ignored.add("baseColorFactor not 4 numbers (white used)");
         const glm::dvec3 base = rgb(f, i, "baseColorFactor");
         if (f.size() > 3 && !(f[3] >= 1)) ignored.add("baseColorFactor alpha < 1");
         // White is glTF's default, given or not: no albedo of the file's then

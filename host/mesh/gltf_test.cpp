@@ -17,6 +17,7 @@
 #include "support/scoped_env.h"
 #include "support/scratch_dir.h"
 #include "util/error.h"
+#include "util/input_file.h"
 
 namespace tsis {
 namespace {
@@ -266,16 +267,16 @@ TEST(GLTF, ExternalFilesOutsideTheFolderOrNotRegularAreRefused) {
         }
         return std::string();
     };
-    EXPECT_NE(load("../quad.bin").find("outside the glTF's folder"), std::string::npos);
+    EXPECT_NE(load("../quad.bin").find("outside the asset's folder"), std::string::npos);
     // tinygltf joins an absolute URI to the folder, then to the working
     // folder: not found, or found outside.
     for (const std::string& uri : {(dir / "quad.bin").string(), std::string("/dev/zero")}) {
         const std::string msg = load(uri);
         EXPECT_TRUE(msg.find("not found") != std::string::npos ||
-                    msg.find("outside the glTF's folder") != std::string::npos)
+                    msg.find("outside the asset's folder") != std::string::npos)
             << uri << ": " << msg;
     }
-    EXPECT_NE(load("link.bin").find("outside the glTF's folder"), std::string::npos);
+    EXPECT_NE(load("link.bin").find("outside the asset's folder"), std::string::npos);
     EXPECT_NE(load("fifo.bin").find("is a FIFO"), std::string::npos);
     fs::rename(dir / "quad.bin", dir / "sub" / "quad.bin");
     EXPECT_EQ(load("quad.bin"), "");
@@ -612,6 +613,81 @@ TEST(GLTF, BadMaterialValuesAreOneLineErrors) {
     EXPECT_THAT(
         load(R"({"name": "M", "pbrMetallicRoughness": {"baseColorTexture": {"index": 4}}})"),
         HasSubstr("material 'M': baseColorTexture: texture 4 does not exist"));
+}
+
+// A glTF's external images pass the checked open tinygltf reads them with:
+// inside the folder only (a note naming the path, or --allow-outside-assets),
+// never a FIFO or a device; a percent-encoded URI names the decoded file,
+// whose bytes the material keeps.
+TEST(GLTF, ExternalImagesAreReadCheckedAndDecoded) {
+    test::ScratchDir dir;
+    namespace fs = std::filesystem;
+    fs::create_directories(dir.path() / "a" / "my  maps");
+    const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + "rest";
+    dir.file("a/my  maps/wood  2.png", png);
+    const std::string outside = dir.file("outside.png", png);
+    fs::create_symlink(outside, dir.file("a/out.png"));
+    fs::create_symlink("/dev/zero", dir.file("a/zero.png"));
+    ASSERT_EQ(::mkfifo(dir.file("a/fifo.png").c_str(), 0600), 0);
+    const std::string textured =
+        R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}, {}])";
+    auto load = [&](const std::string& uri, std::string& notes) {
+        const std::string file = dir.file(
+            "a/t.gltf",
+            materialScene(textured, R"([{"source": 0}])", R"([{"uri": ")" + uri + R"("}])"));
+        FileView view;
+        testing::internal::CaptureStderr();
+        const auto start = std::chrono::steady_clock::now();
+        loadMesh(file, &view);
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                  5.0)
+            << uri;
+        notes = testing::internal::GetCapturedStderr();
+        return view.materials.at(0);
+    };
+    std::string notes;
+    const FileMaterial decoded = load("my%20%20maps/wood%20%202.png", notes);
+    EXPECT_EQ(decoded.textureBytes, png) << notes;
+    EXPECT_EQ(decoded.texturePath, dir.file("a/my  maps/wood  2.png"));
+    for (const bool allowed : {false, true}) {
+        setOutsideAssetsAllowed(allowed);
+        for (const std::string& uri : {std::string("../outside.png"), std::string("out.png"),
+                                       std::string("zero.png"), std::string("fifo.png")}) {
+            const FileMaterial m = load(uri, notes);
+            const bool device = uri == "zero.png" || uri == "fifo.png";
+            EXPECT_EQ(m.textureBytes.empty(), !allowed || device) << uri << " " << allowed;
+            if (m.textureBytes.empty())
+                EXPECT_THAT(notes, ::testing::HasSubstr(allowed || uri == "fifo.png"
+                                                            ? "not a regular file"
+                                                            : "lies outside the asset's folder"))
+                    << uri;
+        }
+    }
+    setOutsideAssetsAllowed(false);
+}
+
+// A baseColorFactor that is not 4 numbers (a string, one number, an object)
+// falls back to glTF's white, noted with the count of materials.
+TEST(GLTF, MistypedBaseColorFactorIsNoted) {
+    for (const std::string factor : {R"("0.8 0.2 0.2 1")", "0.5", R"({"r": 1})", "true"}) {
+        FileView view;
+        testing::internal::CaptureStderr();
+        parseGLTF(materialScene(R"([{"pbrMetallicRoughness": {"baseColorFactor": )" + factor +
+                                R"(}}, {}])"),
+                  "t.gltf", "", &view);
+        const std::string notes = testing::internal::GetCapturedStderr();
+        EXPECT_THAT(notes, ::testing::HasSubstr("baseColorFactor not 4 numbers (white used) (1)"))
+            << factor;
+        EXPECT_FALSE(view.materials.at(0).albedo.has_value()) << factor;
+    }
+    FileView view;
+    testing::internal::CaptureStderr();
+    parseGLTF(
+        materialScene(R"([{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}}, {}])"),
+        "t.gltf", "", &view);
+    EXPECT_THAT(testing::internal::GetCapturedStderr(),
+                ::testing::Not(::testing::HasSubstr("baseColorFactor")));
+    EXPECT_EQ(view.materials.at(0).albedo, glm::dvec3(0.5));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "mesh/parse_util.h"
+#include "util/input_file.h"
 
 namespace tsis {
 
@@ -24,12 +25,16 @@ bool isRead(std::string_view key) {
 std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& path,
                                    const std::string& meshName) {
     namespace fs = std::filesystem;
-    const fs::path folder = fs::path(path).parent_path();
-    Lines lines(text, '#');
+    const std::string folder = fs::path(path).parent_path().string();
+    std::string_view body(text);
+    if (body.substr(0, 3) == "\xEF\xBB\xBF") body.remove_prefix(3);  // UTF-8 BOM
+    Lines lines(body, '#');
     std::vector<std::string_view> tok;
     std::vector<FileMaterial> out;
     KindCounts ignored;  // keywords
     size_t outside = 0;  // statements before the first newmtl
+    size_t noIndex = 0;  // materials with "Ni 1": exporters' "no index given"
+    std::string firstNoIndex;
     auto where = [&](size_t line) { return concat("material library '", path, "': line ", line); };
     auto failLine = [&](size_t line, const auto&... args) -> void {
         failIn(meshName, where(line), ": ", args...);
@@ -74,6 +79,12 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             if (!std::isfinite(eta) || !(eta > 0))
                 failLine(line, "material '", out.back().name, "': Ni ", eta,
                          " must be finite and > 0");
+            // Many exporters write Ni 1 for "no index of refraction given"
+            // (a subsurface medium of η = 1 has no boundary): the default η.
+            if (eta == 1.0) {
+                if (noIndex++ == 0) firstNoIndex = out.back().name;
+                continue;
+            }
             out.back().eta = eta;
         } else if (key == "map_Kd") {
             FileMaterial& m = out.back();
@@ -85,18 +96,24 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                                       tok[1], " not supported: texture ignored (Kd only)"));
                 continue;
             }
-            // A file name may hold spaces: the rest of the line.
-            std::string file(tok[1]);
-            for (size_t k = 2; k < tok.size(); ++k) file += concat(" ", tok[k]);
-            const std::string resolved = (folder / file).lexically_normal().string();
-            std::error_code ec;
-            if (!fs::exists(resolved, ec)) {
-                note(meshName, concat(where(line), ": material '", m.name, "': texture '", resolved,
-                                      "' not found: albedo factor only"));
-                m.texturePath.clear();
+            // A file name may hold spaces, even doubled ones: the rest of the
+            // line as written, from its second token.
+            const std::string file(
+                tok[1].data(),
+                static_cast<size_t>(tok.back().data() + tok.back().size() - tok[1].data()));
+            m.texturePath.clear();
+            try {
+                m.texturePath = assetFile(folder.empty() ? "." : folder, file, "texture");
+            } catch (const Error& e) {
+                note(meshName, concat(where(line), ": material '", m.name, "': ", e.what(),
+                                      ": albedo factor only"));
                 continue;
             }
-            m.texturePath = resolved;
+            if (const std::string why = notRegularFile(m.texturePath); !why.empty()) {
+                note(meshName, concat(where(line), ": material '", m.name, "': texture '",
+                                      m.texturePath, "' ", why, ": albedo factor only"));
+                m.texturePath.clear();
+            }
         } else {
             ignored.add(key);
         }
@@ -105,6 +122,10 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
         note(meshName, concat("material library '", path, "': ", outside, " ",
                               plural(outside, "statement", "statements"),
                               " before the first newmtl ignored"));
+    if (noIndex)
+        note(meshName, concat("material library '", path, "': Ni 1 (material '", firstNoIndex, "'",
+                              noIndex > 1 ? concat(" and ", noIndex - 1, " more") : "",
+                              ") read as no index of refraction given: the default η"));
     if (!ignored.empty())
         note(meshName, concat("material library '", path, "': statements ignored: ", ignored.list(),
                               " (read: newmtl, Kd, map_Kd, Ni)"));

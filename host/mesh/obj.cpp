@@ -153,10 +153,11 @@ std::vector<FileMaterial> readLibraries(const std::vector<std::string>& librarie
                               "' not read (parsing from memory): its materials are undefined"));
             continue;
         }
-        const std::string path = (std::filesystem::path(folder) / lib).lexically_normal().string();
+        std::string path = (std::filesystem::path(folder) / lib).lexically_normal().string();
         std::string text;
         try {
-            text = readRegularFile(path, "material library");
+            path = assetFile(folder, lib, "material library");
+            text = readRegularFile(path, "material library", kMaxLibraryFileBytes);
         } catch (const Error& e) {
             note(name, concat(e.what(), ": its materials are undefined"));
             continue;

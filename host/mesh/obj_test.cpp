@@ -1,9 +1,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
 
 #include "mesh/mesh_io.h"
 #include "support/error_of.h"
 #include "support/scratch_dir.h"
+#include "util/input_file.h"
 
 namespace tsis {
 namespace {
@@ -221,8 +225,7 @@ TEST(OBJ, MaterialsFromMtlLibraries) {
     EXPECT_THAT(notes, HasSubstr(n + mtl +
                                  ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
                                  "Kd, map_Kd, Ni)\n"));
-    EXPECT_THAT(notes,
-                HasSubstr(n + "material library '" + dir.file("gone.mtl") + "': cannot open"));
+    EXPECT_THAT(notes, HasSubstr(n + "material library '" + dir.file("gone.mtl") + "' not found"));
     EXPECT_THAT(notes,
                 HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
     EXPECT_THAT(notes, HasSubstr(n + "material 'ghost' (usemtl) defined in no material library: "
@@ -266,6 +269,92 @@ TEST(OBJ, BadMaterialValuesAreOneLineErrors) {
     EXPECT_THAT(load("newmtl a\nNi 0\n"),
                 HasSubstr(lib + ": line 2: material 'a': Ni 0 must be finite and > 0"));
     EXPECT_THAT(load("newmtl\n"), HasSubstr(lib + ": line 1: newmtl needs a name"));
+}
+
+// The one-quad OBJ of the library tests: its faces use material "m" of `lib`.
+std::string quadUsing(const test::ScratchDir& dir, const std::string& folder,
+                      const std::string& lib) {
+    std::filesystem::create_directories(dir.path() / folder);
+    return dir.file(folder + "/q.obj", "mtllib " + lib +
+                                           "\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 "
+                                           "1\nusemtl m\nf 1/1 2/2 3/3\n");
+}
+
+// Exporters' habits read as they mean them: a UTF-8 BOM before the first
+// newmtl, Ni 1 for "no index given" (the default η, noted), a map_Kd name
+// with doubled spaces kept as written.
+TEST(OBJ, MtlQuirksAreReadAsExportersMeanThem) {
+    test::ScratchDir dir;
+    std::filesystem::create_directories(dir.path() / "a" / "my  maps");
+    dir.file("a/my  maps/wood  2.png", "x");
+    for (const std::string ni : {"1", "1.0", "1.000000"}) {
+        dir.file("a/q.mtl", "\xEF\xBB\xBFnewmtl m\nKd 0.5 0.5 0.5\nNi " + ni +
+                                "\nmap_Kd my  maps/wood  2.png\nnewmtl n\nNi 1.33\n");
+        const std::string obj = quadUsing(dir, "a", "q.mtl");
+        FileView view;
+        testing::internal::CaptureStderr();
+        loadMesh(obj, &view);
+        const std::string notes = testing::internal::GetCapturedStderr();
+        ASSERT_EQ(view.materials.size(), 2u) << notes;
+        EXPECT_EQ(view.materials[0].name, "m") << "the BOM is not part of the first keyword";
+        EXPECT_EQ(view.materials[0].albedo, glm::dvec3(0.5));
+        EXPECT_FALSE(view.materials[0].eta.has_value()) << "Ni " << ni;
+        EXPECT_EQ(view.materials[1].eta, 1.33);
+        EXPECT_EQ(view.materials[0].texturePath,
+                  std::filesystem::canonical(dir.file("a/my  maps/wood  2.png")).string());
+        EXPECT_THAT(notes, HasSubstr("Ni 1 (material 'm') read as no index of refraction given: "
+                                     "the default η"));
+        EXPECT_THAT(notes, Not(HasSubstr("statements ignored")));
+    }
+}
+
+// An OBJ's library and its textures come from its folder only: "../", an
+// absolute path, a link out (to a file or a device) are refused with a note
+// naming the path; a FIFO inside is refused at once; --allow-outside-assets
+// lets the outside files in, never a FIFO or a device.
+TEST(OBJ, LibrariesAndTexturesOnlyFromTheFolder) {
+    test::ScratchDir dir;
+    namespace fs = std::filesystem;
+    const std::string outside = dir.file("outside.png", "x");
+    dir.file("outside.mtl", "newmtl m\nKd 0.2 0.2 0.2\n");
+    fs::create_directories(dir.path() / "a");
+    fs::create_symlink(outside, dir.file("a/out.png"));
+    fs::create_symlink("/dev/zero", dir.file("a/zero.png"));
+    ASSERT_EQ(::mkfifo(dir.file("a/fifo.png").c_str(), 0600), 0);
+    auto notesOf = [&](const std::string& mapKd, FileView& view) {
+        dir.file("a/q.mtl", "newmtl m\nKd 0.5 0.5 0.5\nmap_Kd " + mapKd + "\n");
+        const std::string obj = quadUsing(dir, "a", "q.mtl");
+        testing::internal::CaptureStderr();
+        loadMesh(obj, &view);
+        return testing::internal::GetCapturedStderr();
+    };
+    for (const bool allowed : {false, true}) {
+        setOutsideAssetsAllowed(allowed);
+        for (const std::string& map :
+             {std::string("../outside.png"), outside, std::string("out.png"),
+              std::string("zero.png"), std::string("/dev/urandom"), std::string("fifo.png")}) {
+            FileView view;
+            const std::string notes = notesOf(map, view);
+            ASSERT_EQ(view.materials.size(), 1u) << map;
+            const bool device = map == "zero.png" || map == "/dev/urandom" || map == "fifo.png";
+            const bool read = allowed && !device;
+            EXPECT_EQ(view.materials[0].texturePath.empty(), !read) << map << " " << allowed;
+            if (!read)
+                EXPECT_THAT(notes, HasSubstr(allowed || map == "fifo.png"
+                                                 ? "not a regular file: albedo factor only"
+                                                 : "lies outside the asset's folder"))
+                    << map;
+            if (!read && !allowed && map != "fifo.png")
+                EXPECT_THAT(notes, HasSubstr("--allow-outside-assets")) << map;
+        }
+        FileView view;
+        testing::internal::CaptureStderr();
+        loadMesh(quadUsing(dir, "b", "../outside.mtl"), &view);
+        const std::string notes = testing::internal::GetCapturedStderr();
+        EXPECT_EQ(view.materials.size(), allowed ? 1u : 0u) << notes;
+        if (!allowed) EXPECT_THAT(notes, HasSubstr("lies outside the asset's folder"));
+    }
+    setOutsideAssetsAllowed(false);
 }
 
 }  // namespace

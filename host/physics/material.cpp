@@ -44,6 +44,9 @@ std::string materialProblem(const Material& m) {
         if (v < 0.0)
             return concat("material '", m.name, "': ", field, " ", channel[c], " is negative (", v,
                           " mm^-1)");
+        if (v > kMaxSigma)
+            return concat("material '", m.name, "': ", field, " ", channel[c], " is ", v,
+                          " mm^-1; it must lie in [0, ", kMaxSigma, "] mm^-1");
         return "";
     };
     for (int c = 0; c < 3; ++c) {
@@ -54,6 +57,11 @@ std::string materialProblem(const Material& m) {
         if (m.sigmaSPrime[c] + m.sigmaA[c] <= 0.0)
             return concat("material '", m.name, "': sigma_t' = sigma_s' + sigma_a ", channel[c],
                           " is 0; the dipole needs a scattering or absorbing medium");
+        if (m.sigmaSPrime[c] + m.sigmaA[c] < kMinSigmaT)
+            return concat("material '", m.name, "': sigma_t' = sigma_s' + sigma_a ", channel[c],
+                          " is ", m.sigmaSPrime[c] + m.sigmaA[c], " mm^-1; it must be at least ",
+                          kMinSigmaT, " mm^-1 (a mean free path of at most ", 1 / kMinSigmaT,
+                          " mm)");
     }
     // !(a < x && x < b) also rejects NaN.
     if (!(1.0 < m.eta && m.eta < 4.0))

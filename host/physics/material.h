@@ -22,8 +22,15 @@ const std::vector<Material>& presetMaterials();
 // The preset with this name; throws Error listing the valid names.
 const Material& presetMaterial(std::string_view name);
 
-// What is wrong with m ("" when nothing): NaN/inf/negative coefficients, σt' = 0
-// in a channel, or η outside (1, 4).
+// The physical range of the coefficients (README "Scenes and materials"):
+// σs′ and σa each in [0, kMaxSigma] mm⁻¹ and σt′ = σs′ + σa at least
+// kMinSigmaT (a mean free path of at most 10 m): values past them are input
+// mistakes, and in the kernels' floats they become infinities and NaNs.
+inline constexpr double kMaxSigma = 1e4;
+inline constexpr double kMinSigmaT = 1e-4;
+
+// What is wrong with m ("" when nothing): NaN/inf/negative coefficients or
+// ones outside the range above in a channel, or η outside (1, 4).
 std::string materialProblem(const Material& m);
 // User input, checked once where it enters (the CLI, the viewer's script,
 // Renderer::render): throws Error with materialProblem.

@@ -86,6 +86,35 @@ TEST(Material, RejectsBadCoefficientsNamingFieldAndChannel) {
     EXPECT_EQ(rejection(a), "");
 }
 
+// The physical range: each coefficient in [0, 1e4] mm⁻¹ and σt′ at least
+// 1e-4 mm⁻¹, over every channel and both coefficients; the ends are taken.
+TEST(Material, CoefficientsOutsideThePhysicalRangeAreRejected) {
+    const Material m = presetMaterial("marble");
+    for (int c = 0; c < 3; ++c) {
+        for (double big : {1e300, 1.0001e4, 1e5}) {
+            Material a = m;
+            a.sigmaSPrime[c] = big;
+            expectRejected(a, {"sigma_s'", "[0, 10000] mm^-1"});
+            a = m;
+            a.sigmaA[c] = big;
+            expectRejected(a, {"sigma_a", "[0, 10000] mm^-1"});
+        }
+        for (double tiny : {1e-300, 4e-5}) {
+            Material a = m;
+            a.sigmaSPrime[c] = a.sigmaA[c] = tiny;
+            expectRejected(a, {"sigma_t'", "at least 0.0001 mm^-1"});
+        }
+        Material ends = m;
+        ends.sigmaSPrime[c] = kMaxSigma;
+        ends.sigmaA[c] = kMaxSigma;
+        EXPECT_EQ(rejection(ends), "");
+        ends.sigmaSPrime[c] = kMinSigmaT;
+        ends.sigmaA[c] = 0;
+        EXPECT_EQ(rejection(ends), "");
+    }
+    for (const Material& p : presetMaterials()) EXPECT_EQ(rejection(p), "") << p.name;
+}
+
 // User input is validated where it enters; the physics' constructors CHECK.
 TEST(Material, DipoleOfBadMaterialIsACheck) {
     Material m = presetMaterial("apple");

@@ -37,7 +37,9 @@ std::string albedoProblem(const glm::dvec3& albedo) {
 }
 
 std::string meanFreePathProblem(const glm::dvec3& mfp) {
-    return channelProblem("mean free path", mfp, 0.0, 1e6, true);
+    const std::string p =
+        channelProblem("mean free path", mfp, kMinMeanFreePath, kMaxMeanFreePath, false);
+    return p.empty() ? p : p + " mm";
 }
 
 Material materialFromAlbedo(const std::string& name, const glm::dvec3& albedo,

@@ -14,8 +14,13 @@
 
 namespace tsis {
 
+// The mean free paths taken (mm): 0.1 µm to 10 m, the range of σt′ (physics/material.h).
+inline constexpr double kMinMeanFreePath = 1e-4;
+inline constexpr double kMaxMeanFreePath = 1e4;
+
 // What is wrong with an albedo or mean free path ("" when nothing): each
-// channel of the albedo in (0, kMaxAlbedo], of the mean free path > 0 and finite.
+// channel of the albedo in (0, kMaxAlbedo], of the mean free path in
+// [kMinMeanFreePath, kMaxMeanFreePath] mm.
 std::string albedoProblem(const glm::dvec3& albedo);
 std::string meanFreePathProblem(const glm::dvec3& mfp);
 // The largest albedo taken: the total reflectance tends to 1 as σa → 0.

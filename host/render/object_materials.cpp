@@ -1,7 +1,9 @@
 #include "render/object_materials.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "render/albedo_inversion.h"
 #include "util/error.h"
@@ -13,6 +15,26 @@ namespace {
 void note(const std::string& file, const std::string& what) {
     std::fprintf(stderr, "tsis: note: mesh '%s': %s\n", file.c_str(), what.c_str());
 }
+
+// The inversions made (materialFromAlbedo bisects through the profile's
+// total reflectance, tens of ms each): a file's materials often share one.
+class Inversions {
+  public:
+    Material of(const std::string& name, const glm::dvec3& a, const glm::dvec3& mfp, double eta,
+                ProfileModel model) {
+        const std::array<double, 8> key{a.x,   a.y,   a.z, mfp.x,
+                                        mfp.y, mfp.z, eta, static_cast<double>(model)};
+        auto it = made_.find(key);
+        if (it == made_.end())
+            it = made_.emplace(key, materialFromAlbedo(name, a, mfp, eta, model)).first;
+        Material m = it->second;
+        m.name = name;
+        return m;
+    }
+
+  private:
+    std::map<std::array<double, 8>, Material> made_;
+};
 
 // The mean of a texture's texels.
 glm::dvec3 meanTexel(const ImageF& image) {
@@ -28,9 +50,9 @@ glm::dvec3 meanTexel(const ImageF& image) {
 // the file does not attenuate takes `fallback`'s.
 std::optional<glm::dvec3> volumeMeanFreePath(const FileMaterial& f, const glm::dvec3& a, double eta,
                                              ProfileModel model, double mmPerFileUnit,
-                                             const glm::dvec3& fallback) {
+                                             const glm::dvec3& fallback, Inversions& inversions) {
     if (!f.attenuationDistance || !(*f.attenuationDistance > 0)) return std::nullopt;
-    const Material unit = materialFromAlbedo("", a, glm::dvec3(1.0), eta, model);  // σs′ = α′
+    const Material unit = inversions.of("", a, glm::dvec3(1.0), eta, model);  // σs′ = α′
     glm::dvec3 mfp = fallback;
     bool any = false;
     for (int c = 0; c < 3; ++c) {
@@ -40,12 +62,17 @@ std::optional<glm::dvec3> volumeMeanFreePath(const FileMaterial& f, const glm::d
         mfp[c] = (1.0 - unit.sigmaSPrime[c]) / sigmaA;  // 1/σt′ = (1 − α′)/σa
         any = true;
     }
+    if (any && !meanFreePathProblem(mfp).empty())
+        fail("material '", f.name, "': KHR_materials_volume attenuationDistance ",
+             *f.attenuationDistance, " (", *f.attenuationDistance * mmPerFileUnit,
+             " mm) gives a mean free path of ", mfp.x, ",", mfp.y, ",", mfp.z,
+             " mm; it must lie in [", kMinMeanFreePath, ", ", kMaxMeanFreePath, "] mm");
     return any ? std::optional<glm::dvec3>(mfp) : std::nullopt;
 }
 
 ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
                         const MaterialOverrides& over, ProfileModel model, double mmPerFileUnit,
-                        const std::string& file) {
+                        const std::string& file, Inversions& inversions) {
     const std::string name = f.name.empty() ? "(unnamed)" : f.name;
     ObjectMaterial o;
     const double eta = over.eta ? *over.eta : f.eta ? *f.eta : fallback.eta;
@@ -70,10 +97,11 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
             o.medium.sigmaA = *f.sigmaA;
         }
         o.medium.eta = eta;
+        o.medium.name = name;
         if (const std::string p = materialProblem(o.medium); !p.empty())
-            fail("mesh '", file, "': material '", name, "': ", p);
+            fail("mesh '", file, "': ", p);
         if (over.mfp)
-            o.medium = materialFromAlbedo(name, albedoOf(o.medium, model), *over.mfp, eta, model);
+            o.medium = inversions.of(name, albedoOf(o.medium, model), *over.mfp, eta, model);
     } else {
         o.textureScale = f.albedo ? *f.albedo : glm::dvec3(1.0);
         glm::dvec3 a = o.textureScale;
@@ -88,7 +116,13 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
             }
         const glm::dvec3 own = meanFreePathOf(fallback);
         std::optional<glm::dvec3> mfp = over.mfp ? over.mfp : f.mfp;
-        if (!mfp) mfp = volumeMeanFreePath(f, a, eta, model, mmPerFileUnit, own);
+        if (!mfp) {
+            try {
+                mfp = volumeMeanFreePath(f, a, eta, model, mmPerFileUnit, own, inversions);
+            } catch (const Error& e) {
+                fail("mesh '", file, "': ", e.what());
+            }
+        }
         if (!mfp) {
             note(file, concat("material '", name, "': no mean free path; ", fallback.name, "'s (",
                               own.x, ",", own.y, ",", own.z, " mm)"));
@@ -96,7 +130,7 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
         }
         if (const std::string p = meanFreePathProblem(*mfp); !p.empty())
             fail("mesh '", file, "': material '", name, "': ", p);
-        o.medium = materialFromAlbedo(name, a, *mfp, eta, model);
+        o.medium = inversions.of(name, a, *mfp, eta, model);
     }
     o.medium.name = name;
     o.albedo = albedoOf(o.medium, model);
@@ -115,8 +149,9 @@ std::vector<ObjectMaterial> objectMaterials(const std::vector<FileMaterial>& mat
             note(file, concat(materials.size(), " material(s) replaced by the command line's"));
         return out;
     }
+    Inversions inversions;
     for (const FileMaterial& f : materials)
-        out.push_back(fromFile(f, fallback, overrides, model, mmPerFileUnit, file));
+        out.push_back(fromFile(f, fallback, overrides, model, mmPerFileUnit, file, inversions));
     return out;
 }
 

@@ -94,5 +94,71 @@ TEST(ObjectMaterials, CommandLineReplacesAllAndBadValuesAreErrors) {
     EXPECT_NEAR(m.albedo.x, 0.5, 1e-6);
 }
 
+// Values from a file outside the physical range are one-line errors naming
+// the material and the range, never a material of infinities (all-NaN image).
+TEST(ObjectMaterials, FileValuesOutsideThePhysicalRangeAreErrors) {
+    auto errorOf = [](const FileMaterial& f) {
+        try {
+            one(f);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    for (const double v : {1e300, 1e5}) {
+        FileMaterial f;
+        f.name = "s";
+        f.sigmaS = glm::dvec3(v, 1, 1);
+        f.sigmaA = glm::dvec3(0.1);
+        EXPECT_NE(errorOf(f).find("material 's': sigma_s' red is"), std::string::npos) << v;
+        std::swap(f.sigmaS, f.sigmaA);
+        EXPECT_NE(errorOf(f).find("[0, 10000] mm^-1"), std::string::npos) << v;
+    }
+    for (const double v : {1e-300, 1e-5}) {
+        FileMaterial f;
+        f.name = "t";
+        f.sigmaS = f.sigmaA = glm::dvec3(v);
+        EXPECT_NE(errorOf(f).find("at least 0.0001 mm^-1"), std::string::npos) << v;
+        FileMaterial mfp;
+        mfp.albedo = glm::dvec3(0.5);
+        mfp.mfp = glm::dvec3(1, v, 1);
+        EXPECT_NE(errorOf(mfp).find("each channel must be in [0.0001, 10000]"), std::string::npos)
+            << v;
+        mfp.mfp = glm::dvec3(1, 1 / v, 1);
+        EXPECT_NE(errorOf(mfp).find("mean free path"), std::string::npos) << v;
+        FileMaterial volume;
+        volume.name = "v";
+        volume.albedo = glm::dvec3(0.5);
+        volume.attenuationDistance = v * 1e-5;  // metres: 1e-305, 1e-10 (1e-7 mm)
+        volume.attenuationColor = glm::dvec3(0.5);
+        const std::string e = errorOf(volume);
+        EXPECT_NE(e.find("material 'v': KHR_materials_volume attenuationDistance"),
+                  std::string::npos)
+            << e;
+        EXPECT_EQ(e.find('\n'), std::string::npos);
+    }
+}
+
+// Materials that ask for the same inversion share it: the same result as one alone.
+TEST(ObjectMaterials, SharedInversionsGiveTheSameMaterials) {
+    FileMaterial a;
+    a.name = "a";
+    a.albedo = glm::dvec3(0.6, 0.5, 0.4);
+    a.mfp = glm::dvec3(1.0);
+    FileMaterial b = a;
+    b.name = "b";
+    FileMaterial c = a;
+    c.name = "c";
+    c.albedo = glm::dvec3(0.3);
+    const std::vector<ObjectMaterial> all =
+        objectMaterials({a, b, c}, presetMaterial("skin1"), {}, kDipole, 1, "x");
+    ASSERT_EQ(all.size(), 3u);
+    EXPECT_EQ(all[1].medium.name, "b");
+    EXPECT_EQ(all[0].medium.sigmaA, all[1].medium.sigmaA);
+    EXPECT_EQ(all[1].medium.sigmaA, one(b)[0].medium.sigmaA);
+    EXPECT_EQ(all[2].medium.sigmaA, one(c)[0].medium.sigmaA);
+    EXPECT_NE(all[2].medium.sigmaA, all[0].medium.sigmaA);
+}
+
 }  // namespace
 }  // namespace tsis

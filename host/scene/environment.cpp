@@ -216,15 +216,10 @@ std::vector<float> wholeMapRgba(const EnvironmentMap& map, int maxWidth, int& wi
 }
 
 std::shared_ptr<const EnvironmentMap> loadEnvironment(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("--env '", path, "': no such file");
-    if (!std::ifstream(path, std::ios::binary).good()) fail("--env '", path, "': cannot read it");
-    ImageF img;
-    try {
-        img = readImageF(path);
-    } catch (const Error&) {
-        fail("--env '", path, "': not an image OpenImageIO can read (.exr, .hdr, …)");
-    }
+    // Checked as every image is (image_io.h): a regular file, its declared
+    // size within the pixel budget before decoding; 8/16-bit files (PNG,
+    // JPEG) are sRGB-encoded as textures are, float ones (EXR, HDR) linear.
+    const ImageF img = decodeImage(path, "", ImageDecoding{"--env", true});
     return splitEnvironment(path, img.width, img.height, img.channels, img.pixels);
 }
 

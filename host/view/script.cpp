@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/input_file.h"
 #include "util/parse.h"
 #include "view/view_state.h"
 
@@ -111,11 +112,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
 }
 
 std::vector<ScriptCommand> readScript(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("cannot read script '", path, "'");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return parseScript(s.str(), path);
+    return parseScript(readRegularFile(path, "script", kMaxLibraryFileBytes), path);
 }
 
 }  // namespace tsis

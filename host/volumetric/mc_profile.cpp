@@ -288,10 +288,15 @@ McProfile mcProfileFromDisk(const McProfileInput& in, bool* loaded) {
     if (loaded) *loaded = false;
     const auto dir = mcProfileCacheDirectory();
     const std::filesystem::path file = dir ? *dir / (mcProfileKey(in) + ".mcprofile") : "";
-    if (dir && notRegularFile(file.string()).empty()) {
-        std::ifstream f(file, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(f)),
-                                std::istreambuf_iterator<char>());
+    std::string bytes;
+    if (dir) {
+        try {
+            bytes = readRegularFile(file.string(), "profile cache entry");
+        } catch (const Error&) {
+            bytes.clear();  // a miss: simulated below
+        }
+    }
+    if (!bytes.empty()) {
         if (auto p = parseMcProfile(bytes, in)) {
             if (loaded) *loaded = true;
             return std::move(*p);
