@@ -305,14 +305,8 @@ McProfile mcProfileFromDisk(const McProfileInput& in, bool* loaded) {
     McProfile p = simulateMcProfile(in, true);
     if (dir) {
         try {
-            const std::string bytes = serializeMcProfile(p);
             std::filesystem::create_directories(file.parent_path());
-            writeAtomically(file, [&](const std::filesystem::path& tmp) {
-                std::ofstream out(tmp, std::ios::binary);
-                out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-                out.close();
-                if (!out) throw std::runtime_error("write failed");
-            });
+            writeTextFile(file, serializeMcProfile(p));
         } catch (...) {
             // A cache that cannot be written is only slower.
         }

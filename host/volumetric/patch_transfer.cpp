@@ -509,14 +509,8 @@ PatchTransfer cachedPatchTransfer(const Mesh& mesh, const SurfaceTexels& texels,
     PatchTransfer t = fitPatchTransfer(mesh, texels, media, options, key);
     if (!root.empty()) {
         try {
-            const std::string bytes = serializePatchTransfer(t);
             std::filesystem::create_directories(file.parent_path());
-            writeAtomically(file, [&](const std::filesystem::path& tmp) {
-                std::ofstream out(tmp, std::ios::binary);
-                out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-                out.close();
-                if (!out) throw std::runtime_error("write failed");
-            });
+            writeTextFile(file, serializePatchTransfer(t));
         } catch (...) {
             // A cache that cannot be written is only slower.
         }
