@@ -64,8 +64,8 @@ TEST_P(ModelTruth, PooledErrorStaysWhereItWas) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Spheres, ModelTruth,
-                         testing::Values(Case{"truth_marble_sphere_10mm", "", 0.108},
-                                         Case{"truth_skin1_sphere_30mm", "", 0.161},
+                         testing::Values(Case{"truth_marble_sphere_10mm", "", 0.095},
+                                         Case{"truth_skin1_sphere_30mm", "", 0.128},
                                          Case{"truth_marble_sphere_10mm", "--model thesis", 0.435},
                                          Case{"truth_skin1_sphere_30mm", "--model thesis", 0.486}));
 

@@ -8,6 +8,7 @@
 
 #include "cl/launch.h"
 #include "physics/fresnel.h"
+#include "render/frame_keys.h"
 #include "tsis_shared.h"
 #include "util/error.h"
 #include "util/hash.h"
@@ -105,13 +106,19 @@ TransportGrid transportGrid(const PatchTransfer& t, int m) {
         }
         const size_t k = std::min<size_t>(TransportGrid::kTaps, near.size());
         std::partial_sort(near.begin(), near.begin() + static_cast<long>(k), near.end());
-        // Relative to the nearest, so far nodes still get their nearest patches.
+        // Relative to the nearest, so far nodes still get their nearest
+        // patches. The node's value is Σ g·ΔE / Σ g·A over its patches (flux
+        // over area, not a mean of densities): a sliver of a patch with a
+        // photon or two on it cannot dominate.
         const float d0 = near[0].first;
         float sum = 0;
-        for (size_t j = 0; j < k; ++j) sum += std::exp(-(near[j].first - d0) * inv);
+        for (size_t j = 0; j < k; ++j)
+            sum +=
+                std::exp(-(near[j].first - d0) * inv) * t.area[static_cast<size_t>(near[j].second)];
         for (size_t j = 0; j < k; ++j) {
             g.patch[n * TransportGrid::kTaps + j] = near[j].second;
-            g.weight[n * TransportGrid::kTaps + j] = std::exp(-(near[j].first - d0) * inv) / sum;
+            g.weight[n * TransportGrid::kTaps + j] =
+                sum > 0 ? std::exp(-(near[j].first - d0) * inv) / sum : 0.0f;
         }
     }
     return g;
@@ -142,9 +149,7 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
         }
     }
     std::vector<glm::vec3> out(k);
-    for (size_t j = 0; j < k; ++j)
-        out[j] = glm::vec3(
-            sum[j] / (static_cast<double>(t.area[static_cast<size_t>(first) + j]) * exitancePerB));
+    for (size_t j = 0; j < k; ++j) out[j] = glm::vec3(sum[j] / exitancePerB);
     return out;
 }
 
@@ -180,7 +185,12 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
         .add(opt.excludeUnscattered)
         .add(opt.excludeSingle)
         .add(opt.entrySin);
-    const uint64_t geometry = Hasher(position.version).add(normal.version).digest();
+    // The mesh's own hash too: a view that resizes the object keeps its atlas.
+    const uint64_t geometry = Hasher(position.version)
+                                  .add(normal.version)
+                                  .add(meshHash(ctx.scene->mesh))
+                                  .add(ctx.atlasResolution)
+                                  .digest();
     if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return;
 
     const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;

@@ -23,9 +23,9 @@
 
 namespace tsis {
 
-// A medium's correction on a grid: each node the normalised weights of the
-// patch centres near it (kTransportTaps at most), so a frame's values are a
-// weighted sum of the patches' and a point reads them trilinearly.
+// A medium's correction on a grid: each node the weights g_j / Σ g·A of the
+// patch centres near it (kTaps at most; g Gaussian in distance), so a frame's
+// value there is Σ g·ΔE / Σ g·A of the patches' and a point reads it trilinearly.
 struct TransportGrid {
     static constexpr int kTaps = 6;
     glm::vec3 origin{0.0f};
@@ -43,8 +43,9 @@ struct TransportGrid {
 // at most kMaxGridCells a side).
 TransportGrid transportGrid(const PatchTransfer& t, int m);
 
-// Per patch of medium m, the radiosity to add: Σ_i (Δ(i, j) + G(i, j)·s_i)·flux_i
-// over (area_j · exitance per unit B of the medium), s_i the luminance-weighted
+// Per patch of medium m, the flux to add as radiosity: Σ_i (Δ(i, j) + G(i, j)·s_i)·flux_i
+// over the exitance per unit B of the medium (the grid divides by the patches'
+// areas), s_i the luminance-weighted
 // mean tangential direction of the light entering patch i (`direction`: its
 // sum over the patch's texels, weighted by their flux's luminance).
 std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
