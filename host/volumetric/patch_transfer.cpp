@@ -266,8 +266,8 @@ void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchT
         const glm::dvec3 n = glm::normalize(glm::dvec3(tx.normal[t]));
         // Azimuths in antithetic pairs: the gradient's estimate loses the
         // mean's variance.
-        const double phi =
-            2.0 * M_PI * ((k / 2) + rng.uniform()) / ((opt.photons + 1) / 2) + (k % 2 ? M_PI : 0.0);
+        const int pair = k / 2, pairs = (opt.photons + 1) / 2;
+        const double phi = 2.0 * M_PI * (pair + rng.uniform()) / pairs + (k % 2 ? M_PI : 0.0);
         const glm::dvec3 tangent = tangentAt(n, phi);
         glm::dvec3 pos = glm::dvec3(tx.position[t]) - n * eps;
         glm::dvec3 dir = -n * cosE + tangent * sinE;
