@@ -208,7 +208,7 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
         tx.normal.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
         tx.area.push_back(area);
         tx.medium.push_back(
-            std::min(static_cast<int>(std::lround(tag)) - 1, static_cast<int>(media) - 1));
+            std::clamp(static_cast<int>(std::lround(tag)) - 1, 0, static_cast<int>(media) - 1));
         tx.texel.push_back(static_cast<int>(i));
     }
     const double rMax = ctx.maxDistance();
