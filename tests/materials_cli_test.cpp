@@ -103,9 +103,8 @@ std::string splitBoxObj(const char* left, const char* right) {
         s += "v " + std::to_string(5 * (k % 3) - 5) + " " + std::to_string(k / 3 % 2 ? 5 : -5) +
              " " + std::to_string(k / 6 ? 5 : -5) + "\n";
     auto at = [](int x, int y, int z) { return std::to_string(1 + x + 3 * (y + 2 * z)); };
-    auto quad = [&](std::string a, std::string b, std::string c, std::string d) {
-        s += "f " + a + " " + b + " " + c + " " + d + "\n";
-    };
+    auto quad = [&](const std::string& a, const std::string& b, const std::string& c,
+                    const std::string& d) { s += "f " + a + " " + b + " " + c + " " + d + "\n"; };
     for (int half = 0; half < 2; ++half) {
         s += std::string("usemtl ") + (half == 0 ? left : right) + "\n";
         const int x0 = half, x1 = half + 1;

@@ -97,7 +97,9 @@ TEST(PatchTransfer, TheModelsTransferOnAPlaneIsTheProfilesIntegral) {
     constexpr float h = 0.25f;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-            tx.position.emplace_back(h * (i - n / 2 + 0.5f), 0.0f, h * (j - n / 2 + 0.5f));
+            constexpr int half = n / 2;
+            tx.position.emplace_back(h * (float(i - half) + 0.5f), 0.0f,
+                                     h * (float(j - half) + 0.5f));
             tx.normal.emplace_back(0.0f, 1.0f, 0.0f);
             tx.area.push_back(h * h);
             tx.medium.push_back(0);
