@@ -7,7 +7,8 @@ Usage:
   bench/model_truth.py truth TSIS [SPP]       volumetric references into
                                               bench/results/truth/<scene>_{a,b}.exr
                                               (two seeds, SPP paths a pixel each, default 256)
-  bench/model_truth.py table TSIS             the table -> bench/results/model_truth.md
+  bench/model_truth.py table TSIS [SCENE...]  the table -> bench/results/model_truth.md
+                                              (named scenes only: printed, the file kept)
 
 Each reference is the mean of two renders with different seeds; its noise,
 sqrt(sum sigma^2 / sum truth^2), is estimated from their difference
@@ -157,9 +158,11 @@ def errors(got, ref, err, cov):
     return rel, n, math.sqrt(max(0.0, rel * rel - n * n))
 
 
-def table(tsis):
+def table(tsis, only):
     rows = []
     for name, args, thick in scenes():
+        if only and name not in only:
+            continue
         ref, err = reference(name)
         cells = []
         for label, extra in MODELS:
@@ -184,6 +187,8 @@ def table(tsis):
     for name, thick, noise, cells in rows:
         md.append("| %s%s | %.1f %% | " % (name, " *" if thick else "", 100 * noise) +
                   " | ".join("%.1f / %.1f %%" % (100 * a, 100 * b) for a, b in cells) + " |")
+    if only:
+        return
     path = os.path.join(ROOT, "bench", "results", "model_truth.md")
     with open(path, "w") as f:
         f.write("\n".join(md) + "\n")
@@ -197,7 +202,7 @@ def main():
     if sys.argv[1] == "truth":
         truth(tsis, int(sys.argv[3]) if len(sys.argv) > 3 else 256)
     else:
-        table(tsis)
+        table(tsis, sys.argv[3:])
 
 
 if __name__ == "__main__":

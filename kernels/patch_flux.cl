@@ -6,7 +6,9 @@
  * lights by their unshadowed irradiance I Ft cos / d^2 (the atlas holds only
  * the sum); flux no light explains (the environment's) has no direction.
  * lights: 2 float4 a light, (vec, type: 0 point, 1 directional) and (rgb, 0).
- * One work-item a patch; a few hundred patches of a few hundred texels each. */
+ * One work-group a patch (a few hundred patches of a few hundred to a few
+ * thousand texels): its work-items stride over the patch's texels, then sum
+ * in local memory (TSIS_PATCH_GROUP items, a power of two). */
 #include "fresnel.h"
 #include "tsis_shared.h"
 
@@ -16,41 +18,57 @@ __kernel void tsis_patch_flux(__global const float4* flux, __global const float4
                               __global const int* start, __global const int* texels,
                               const int patches, __global float4* out_flux,
                               __global float4* out_direction) {
-    const int p = get_global_id(0);
-    if (p >= patches) return;
+    const int p = get_group_id(0);
+    const int lid = get_local_id(0);
+    __local float4 sum_of[TSIS_PATCH_GROUP], dir_of[TSIS_PATCH_GROUP];
     float4 sum = (float4)(0.0f);
     float3 dir = (float3)(0.0f);
-    for (int k = start[p]; k < start[p + 1]; ++k) {
+    float y_sub = 0.0f; /* the luminance of the texels that gave a direction */
+    for (int k = start[p] + lid, r = 0; k < start[p + 1]; k += TSIS_PATCH_GROUP, ++r) {
         const int t = texels[k];
         const float4 f = flux[t];
         sum += f;
+        /* The direction from every TSIS_PATCH_DIRECTION_EVERY-th round's
+         * texels, scaled to the patch's flux below: a mean over a patch does
+         * not need every texel, and its light math is most of the kernel. */
+        if (r % TSIS_PATCH_DIRECTION_EVERY != 0) continue;
+        y_sub += TSIS_LUMINANCE(f.x, f.y, f.z);
         const float3 x = position[t].xyz;
         const float3 n = normalize(normal[t].xyz);
         const float eta = eta_of_medium[max((int)(position[t].w + 0.5f) - 1, 0)];
         float3 s = (float3)(0.0f);
         float w = 0.0f;
+        /* Branch-free (selects), so that the group's items run as vectors. */
         for (int i = 0; i < light_count; ++i) {
             const float4 v = lights[2 * i];
             const float4 rgb = lights[2 * i + 1];
-            float3 l;
-            float falloff = 1.0f;
-            if (v.w == 0.0f) {
-                const float3 d = v.xyz - x;
-                const float d2 = max(dot(d, d), 1e-12f);
-                falloff = 1.0f / d2;
-                l = d * rsqrt(d2);
-            } else {
-                l = -normalize(v.xyz);
-            }
-            const float c = dot(n, l);
-            if (c <= 0.0f) continue;
-            const float e =
-                TSIS_LUMINANCE(rgb.x, rgb.y, rgb.z) * tsis_fresnel_t(eta, c) * c * falloff;
+            const bool point = v.w == 0.0f;
+            const float3 d = point ? v.xyz - x : -v.xyz;
+            const float inv = rsqrt(max(dot(d, d), 1e-12f));
+            const float3 l = d * inv;
+            const float c = max(dot(n, l), 0.0f);
+            const float e = TSIS_LUMINANCE(rgb.x, rgb.y, rgb.z) * tsis_fresnel_t(eta, c) * c *
+                            (point ? inv * inv : 1.0f);
             s += e * (-(l - c * n) / eta);
             w += e;
         }
-        if (w > 0.0f) dir += TSIS_LUMINANCE(f.x, f.y, f.z) * s / w;
+        dir += w > 0.0f ? TSIS_LUMINANCE(f.x, f.y, f.z) * s / w : (float3)(0.0f);
     }
-    out_flux[p] = sum;
-    out_direction[p] = (float4)(dir, 0.0f);
+    sum_of[lid] = sum;
+    dir_of[lid] = (float4)(dir, y_sub);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (int width = TSIS_PATCH_GROUP / 2; width > 0; width /= 2) {
+        if (lid < width) {
+            sum_of[lid] += sum_of[lid + width];
+            dir_of[lid] += dir_of[lid + width];
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+    }
+    if (lid == 0 && p < patches) {
+        out_flux[p] = sum_of[0];
+        const float4 total = sum_of[0];
+        const float y = TSIS_LUMINANCE(total.x, total.y, total.z);
+        out_direction[p] =
+            (float4)(dir_of[0].w > 0.0f ? dir_of[0].xyz * (y / dir_of[0].w) : (float3)(0.0f), 0.0f);
+    }
 }

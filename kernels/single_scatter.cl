@@ -2,13 +2,15 @@
  * scattering"), per covered camera point xo and one light, as the radiosity
  * the composite turns back into it: B1(xo) = to_radiosity * R,
  * L(1) = Ft(eta, cos theta_o) * R,
- *   R = sigma_s' p (1/K) sum_k Ft(eta, cos theta_i) E (cos theta_i / cos theta_ti)
- *         / eta^2 * exp(-sigma_t' (s_i' + s_o)) / pdf(s_o).
- * s_o along the refracted camera ray, drawn with pdf sigma e^(-sigma s_o) cut
- * at TSIS_SCATTER_DEPTH / sigma (sigma the smallest channel's sigma_t', so
- * every channel's weight stays below 1/sigma): K strata, each jittered by a
- * hash of the point, the stratum and the seed. The entry: first the light
- * view's surface at the draw's texel (Jensen's xi), then
+ *   R = sigma_s' p / eta^2 * integral ds_o Ft(eta, cos theta_i) E
+ *         (cos theta_i / cos theta_ti) exp(-sigma_t' (s_i' + s_o)).
+ * s_o along the refracted camera ray, integrated in closed form over K
+ * strata of equal mass of sigma e^(-sigma s_o) up to TSIS_SCATTER_DEPTH /
+ * sigma (sigma the smallest channel's sigma_t'), each with the entry plane
+ * found at its middle: along it the depth below that plane is linear in s_o,
+ * so the stratum's integral of e^(-sigma_t' (s_o + s_i')) is exact on a
+ * plane and needs no draws (no noise; K = 1 is the plane's closed form).
+ * The entry: first the light view's surface at the middle's texel (Jensen's xi), then
  * TSIS_SCATTER_ENTRY_STEPS times the point of that surface point's tangent
  * plane whose refracted ray reaches x, moved onto the surface the light sees
  * there; s_i' = (depth below the tangent plane) / cos theta_ti, the refracted
@@ -16,7 +18,6 @@
  * 1/eta^2 the radiance's change leaving the medium: Jensen 2001 leaves both
  * out, the volumetric truth has them. Phase p = 1/(4 pi). */
 #include "fresnel.h"
-#include "hash.h"
 #include "light_map.h"
 #include "single_scatter_shared.h"
 
@@ -38,13 +39,45 @@ static inline bool tsis_scatter_surface(const TsisLightMapInfo* map,
     return true;
 }
 
+/* (1 - e^-x)/x, 1 at 0. */
+static inline float3 tsis_scatter_phi(const float3 x) {
+    return select(-expm1(-x) / x, 1.0f - 0.5f * x, isless(fabs(x), (float3)(1e-4f)));
+}
+
+/* The stratum's integral over the camera ray's depth s in [a, b] of
+ * e^(-sigma_t (s + h(s)/cos_t)), h(s) = h_m - (s - s_m) c the depth below
+ * the entry's tangent plane, linear in s (c = wt . n_i). Where h < 0 the
+ * point is above the plane: with c > 0 the ray has crossed the entry face
+ * (out of the body: nothing), with c <= 0 it is within a texel of the
+ * surface it entered below (h taken as 0, as the first step does). */
+static inline float3 tsis_scatter_stratum(const float3 sigma_t, const float a, const float b,
+                                          const float sm, const float hm, const float c,
+                                          const float cos_t) {
+    /* Where h = 0 (none when the ray runs along the plane). */
+    const float sz = c != 0.0f ? sm + hm / c : -INFINITY;
+    float3 sum = (float3)(0.0f);
+    float p = a, q = b;
+    if (c <= 0.0f && sz > a) {
+        const float z = fmin(sz, b);
+        sum += exp(-sigma_t * a) * (z - a) * tsis_scatter_phi(sigma_t * (z - a));
+        p = z;
+    }
+    if (c > 0.0f) q = fmin(b, sz);
+    if (q > p) {
+        const float hp = fmax(0.0f, hm - (p - sm) * c);
+        const float3 alpha = sigma_t * (1.0f - c / cos_t);
+        sum += exp(-sigma_t * (p + hp / cos_t)) * (q - p) * tsis_scatter_phi(alpha * (q - p));
+    }
+    return sum;
+}
+
 kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
                                 const int count, const float4 eye,
                                 const __global TsisScatterMedium* media, const int media_count,
                                 const TsisLightMapInfo map, const TsisScatterLight light,
                                 const __global float4* position,
-                                const __global float4* light_normal, const int samples,
-                                const uint seed, const int accumulate, __global float4* out) {
+                                const __global float4* light_normal, const int strata,
+                                const int accumulate, __global float4* out) {
     const int j = get_global_id(0);
     if (j >= count) return;
     const float4 base = accumulate ? out[j] : (float4)(0.0f);
@@ -73,14 +106,18 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
     const float sigma = fmin(sigma_t.x, fmin(sigma_t.y, sigma_t.z));
     const float3 e_light = (float3)(light.r, light.g, light.b);
     const float3 light_vec = (float3)(light.x, light.y, light.z);
-    const uint h = tsis_hash(tsis_hash((uint)j) ^ seed);
-    /* The pdf's mass within TSIS_SCATTER_DEPTH mean free paths. */
+    /* The depth's range within TSIS_SCATTER_DEPTH mean free paths. */
     const float kept = 1.0f - exp(-(float)TSIS_SCATTER_DEPTH);
     float3 sum = (float3)(0.0f);
-    for (int k = 0; k < samples; ++k) {
-        const float u = ((float)k + tsis_hash_unit(tsis_hash(h + (uint)k))) / (float)samples;
-        const float so = -log(1.0f - u * kept) / sigma;
-        const float3 x = xo + so * wt;
+    float a = 0.0f;
+    for (int k = 0; k < strata; ++k) {
+        /* The stratum [a, b] (equal mass of sigma e^(-sigma s)) and its
+         * middle, where its entry plane is found. */
+        const float b = -log(1.0f - (float)(k + 1) / (float)strata * kept) / sigma;
+        const float sm = -log(1.0f - ((float)k + 0.5f) / (float)strata * kept) / sigma;
+        const float a_k = a;
+        a = b;
+        const float3 x = xo + sm * wt;
         float3 y, ny;
         float clip_w;
         if (!tsis_scatter_surface(&map, position, light_normal, tag, x, &y, &ny, &clip_w)) continue;
@@ -122,9 +159,9 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
             }
         }
         if (!(cos_i > 0.0f)) continue;
-        const float3 w = exp(-sigma_t * (h2 / cos_t + so) + sigma * so) * (kept / sigma);
+        const float3 w = tsis_scatter_stratum(sigma_t, a_k, b, sm, h2, dot(wt, ny), cos_t);
         sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_t) * e;
     }
-    const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F * (float)samples));
+    const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F));
     out[j] = base + (float4)(md.to_radiosity * r, 0.0f);
 }

@@ -12,14 +12,13 @@
  * term overshoots the volumetric walk's single scattering 1.4x at
  * cos theta_i = 0.1 and 4-7x at 0 (30 mm skin1 sphere). Two steps: 0.89-0.98
  * at 0.1, below the walk at 0 (single_scatter_test.cpp); three: the same;
- * each costs two more map reads per draw. */
+ * each costs two more map reads per stratum. */
 #define TSIS_SCATTER_ENTRY_STEPS 2
 
-/* The camera ray's samples end this many mean free paths 1/min sigma_t' in
- * (the pdf renormalised): past it the camera's own attenuation leaves
- * < e^-8 = 0.03% of what any draw can add, while a draw there that happens
- * to lie near a lit surface (the back of a back-lit 30 mm sphere, 23 mean
- * free paths in) adds 1/16 of a lit pixel's term: a firefly. */
+/* The camera ray's depth ends this many mean free paths 1/min sigma_t' in:
+ * past it the camera's own attenuation leaves < e^-8 = 0.03% of what any
+ * depth can add (the back of a back-lit 30 mm sphere, 23 mean free paths in,
+ * is left out). */
 #define TSIS_SCATTER_DEPTH 8
 
 /* A medium: reduced scattering and extinction (mm^-1, rgb), its relative

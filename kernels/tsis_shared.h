@@ -102,6 +102,11 @@ TSIS_CHECK_OFFSET(TsisInterpolatedPixel, weights, 20);
  * (kMaxLights), the kernels and, through ShaderProgram (MAX_LIGHTS), the GLSL
  * shaders read. */
 #define TSIS_MAX_LIGHTS 8
+/* Work-items summing one patch of the object transport (patch_flux.cl). */
+#define TSIS_PATCH_GROUP 64
+/* Of its rounds over the patch's texels, every this many give the light's
+ * direction. */
+#define TSIS_PATCH_DIRECTION_EVERY 4
 
 /* Luminance weights (Rec. 709) used for importance: Y(Phi). */
 #define TSIS_LUMA_R 0.2126f

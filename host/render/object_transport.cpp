@@ -283,7 +283,7 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                               res.read(ctx.normalAtlas).buffer, etaBuffer, lightBuffer,
                               static_cast<int>(lights.size() / 8), start_.buffer, texels_.buffer,
                               static_cast<int>(patches), out, dirOut);
-                enqueue1D(q, kernel_, patches, kLocalSize, nullptr);
+                enqueue1D(q, kernel_, patches * TSIS_PATCH_GROUP, TSIS_PATCH_GROUP, nullptr);
                 std::vector<float> sums(patches * 4), dirs(patches * 4);
                 q.enqueueReadBuffer(out, CL_TRUE, 0, patches * 16, sums.data());
                 q.enqueueReadBuffer(dirOut, CL_TRUE, 0, patches * 16, dirs.data());

@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 
 #include "cl/launch.h"
-#include "hash.h"
 #include "physics/fresnel.h"
 #include "render/light_map_info.h"
 #include "util/error.h"
@@ -24,9 +23,39 @@ TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit) {
             static_cast<float>(M_PI / exitScale(exit, m.eta))};
 }
 
+namespace {
+
+// As the kernel's tsis_scatter_phi and tsis_scatter_stratum, in double.
+double phi(double x) {
+    return std::abs(x) < 1e-8 ? 1.0 - 0.5 * x : -std::expm1(-x) / x;
+}
+
+glm::dvec3 stratum(const glm::dvec3& sigmaT, double a, double b, double sm, double hm, double c,
+                   double cosT) {
+    const double sz = c != 0.0 ? sm + hm / c : -INFINITY;
+    glm::dvec3 sum(0.0);
+    double p = a, q = b;
+    if (c <= 0.0 && sz > a) {
+        const double z = std::min(sz, b);
+        for (int i = 0; i < 3; ++i)
+            sum[i] += std::exp(-sigmaT[i] * a) * (z - a) * phi(sigmaT[i] * (z - a));
+        p = z;
+    }
+    if (c > 0.0) q = std::min(b, sz);
+    if (q > p) {
+        const double hp = std::max(0.0, hm - (p - sm) * c);
+        for (int i = 0; i < 3; ++i)
+            sum[i] += std::exp(-sigmaT[i] * (p + hp / cosT)) * (q - p) *
+                      phi(sigmaT[i] * (1.0 - c / cosT) * (q - p));
+    }
+    return sum;
+}
+
+}  // namespace
+
 glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, const glm::dvec3& eye,
                              const TsisScatterMedium& md, const Light& light, const EntryOf& entry,
-                             int samples, uint32_t seed, uint32_t index) {
+                             int strata) {
     glm::dvec3 n = glm::normalize(normal);
     const glm::dvec3 v = glm::normalize(eye - xo);
     double cosO = glm::dot(n, v);
@@ -41,19 +70,21 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
     const glm::dvec3 wt = glm::normalize(-v * invEta + n * (invEta * cosO - refractedCos(cosO)));
     const glm::dvec3 sigmaS(md.ss_r, md.ss_g, md.ss_b), sigmaT(md.st_r, md.st_g, md.st_b);
     const double sigma = std::min({sigmaT.x, sigmaT.y, sigmaT.z});
-    const uint32_t h = tsis_hash(tsis_hash(index) ^ seed);
     const double kept = 1.0 - std::exp(-double(TSIS_SCATTER_DEPTH));
     glm::dvec3 sum(0.0);
-    for (int k = 0; k < samples; ++k) {
-        const double u = (k + double(tsis_hash_unit(tsis_hash(h + uint32_t(k))))) / samples;
-        const double so = -std::log(1.0 - u * kept) / sigma;
-        const glm::dvec3 x = xo + so * wt;
+    double a = 0.0;
+    for (int k = 0; k < strata; ++k) {
+        const double b = -std::log(1.0 - (k + 1.0) / strata * kept) / sigma;
+        const double sm = -std::log(1.0 - (k + 0.5) / strata * kept) / sigma;
+        const double ak = a;
+        a = b;
+        const glm::dvec3 x = xo + sm * wt;
         ScatterEntry in = entry(x);
         if (!in.lit) continue;
         // As the kernel: from the straight line's entry, the tangent plane's
         // refracted solution moved onto the surface, TSIS_SCATTER_ENTRY_STEPS
         // times; none where it falls past what the light sees.
-        glm::dvec3 e, l;
+        glm::dvec3 e, l, ni;
         double cosI = 0, cosT = 1, h2 = 0;
         for (int it = 0;; ++it) {
             e = glm::dvec3(light.rgb);
@@ -64,7 +95,7 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
             } else {
                 l = -glm::normalize(glm::dvec3(light.vec));
             }
-            const glm::dvec3 ni = glm::normalize(in.normal);
+            ni = glm::normalize(in.normal);
             cosI = glm::dot(ni, l);
             cosT = refractedCos(cosI);
             h2 = glm::dot(in.point - x, ni);
@@ -82,10 +113,10 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
             }
         }
         if (!(cosI > 0)) continue;
-        const glm::dvec3 w = glm::exp(-sigmaT * (h2 / cosT + so) + sigma * so) * (kept / sigma);
-        sum += w * (fresnelTransmittance(eta, cosI) * cosI / cosT) * e;
+        sum += stratum(sigmaT, ak, b, sm, h2, glm::dot(wt, ni), cosT) *
+               (fresnelTransmittance(eta, cosI) * cosI / cosT) * e;
     }
-    return sum * sigmaS * (invEta * invEta / (4.0 * M_PI * samples));
+    return sum * sigmaS * (invEta * invEta / (4.0 * M_PI));
 }
 
 SingleScatter::SingleScatter(ClRuntime& cl)
@@ -154,8 +185,7 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 setKernelArgs(kernel_, points.xyz, normals_.buffer, points.count, eye, mediaBuffer,
                               static_cast<int>(media.size()),
                               lightMapInfo(views[l], ctx.lightResolution), sl, maps.position[l],
-                              lightNormals_[l].buffer, kSingleScatterSamples, frameSeed(ctx),
-                              l > 0 ? 1 : 0, out);
+                              lightNormals_[l].buffer, kSingleScatterStrata, l > 0 ? 1 : 0, out);
                 enqueue1D(queue, kernel_, count, kLocalSize, nullptr);
             }
             std::vector<float> b1(count * 4);
@@ -164,7 +194,7 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 for (int c = 0; c < 3; ++c)
                     rgba[static_cast<size_t>(points.pixel[k]) * 4 + static_cast<size_t>(c)] +=
                         b1[k * 4 + static_cast<size_t>(c)];
-            res.stats().set("single_scatter_samples", kSingleScatterSamples);
+            res.stats().set("single_scatter_strata", kSingleScatterStrata);
         });
 }
 

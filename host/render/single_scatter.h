@@ -18,9 +18,10 @@
 
 namespace tsis {
 
-// Distances drawn along each refracted camera ray per light (stratified,
-// jittered per point and stratum by a hash).
-constexpr int kSingleScatterSamples = 8;
+// Strata of each refracted camera ray's depth per light, each integrated in
+// closed form over its middle's entry plane (single_scatter_test.cpp: two
+// overshoot the walk past the shadow line).
+constexpr int kSingleScatterStrata = 4;
 
 // The kernel's medium: σs′, σt′, η and π over the exit term's scale.
 TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit);
@@ -35,11 +36,10 @@ struct ScatterEntry {
 using EntryOf = std::function<ScatterEntry(const glm::dvec3& x)>;
 
 // The kernel's R = L⁽¹⁾/Ft(η, cos θo) at xo (normal n, seen from eye) for
-// one light, in double: the same draws (`index`: the point's, for its hashed
-// offset), the entry points from `entry`.
+// one light, in double: the same strata, the entry points from `entry`.
 glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& n, const glm::dvec3& eye,
                              const TsisScatterMedium& medium, const Light& light,
-                             const EntryOf& entry, int samples, uint32_t seed, uint32_t index);
+                             const EntryOf& entry, int strata);
 
 // The frame's pass: B += to_radiosity·R at every covered point, summed over
 // the lights, after the methods' radiosity came back to the host.

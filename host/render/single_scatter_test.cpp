@@ -42,12 +42,12 @@ glm::dvec3 planeClosedForm(const Material& m, double cosI, double cosO) {
 }
 
 // Normal incidence, normal view: R = σs′·Ft(η, 1)·E/(4π η²·2σt′) (E = 1),
-// the stratified sum of 4096 draws within 1e-3.
+// one stratum's closed form within 1e-3.
 TEST(SingleScatterHost, PlaneAtNormalIncidenceIsTheClosedForm) {
     const TsisScatterMedium md = scatterMedium(skin(), ExitTerm::Jensen);
     const Light light{Light::Type::Directional, glm::vec3(0, 0, -1), glm::vec3(1.0f)};
     const glm::dvec3 r =
-        singleScatterHost({0, 0, 0}, {0, 0, 1}, {0, 0, 50}, md, light, planeEntry, 4096, 1, 0);
+        singleScatterHost({0, 0, 0}, {0, 0, 1}, {0, 0, 50}, md, light, planeEntry, 1);
     const Material& m = skin();
     const glm::dvec3 st = m.sigmaSPrime + m.sigmaA;
     const glm::dvec3 want =
@@ -67,7 +67,7 @@ TEST(SingleScatterHost, PlaneAtObliqueAnglesIsTheClosedForm) {
             const Light light{Light::Type::Directional, travel, glm::vec3(1.0f)};
             const glm::dvec3 eye = 40.0 * glm::dvec3(0.0, std::sin(to), std::cos(to));
             const glm::dvec3 r =
-                singleScatterHost({0, 0, 0}, {0, 0, 1}, eye, md, light, planeEntry, 4096, 3, 7);
+                singleScatterHost({0, 0, 0}, {0, 0, 1}, eye, md, light, planeEntry, 1);
             const glm::dvec3 want = planeClosedForm(skin(), std::cos(ti), std::cos(to));
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(r[c], want[c], 1e-3 * want[c]) << ti << " " << to << " " << c;
@@ -116,18 +116,21 @@ TEST(SingleScatterHost, SphereAgreesWithTheSingleScatteringWalk) {
             Rng rng(41, static_cast<uint64_t>(i));
             walk.add(exitantRadiance(scene, hit, toEye, rng, counters));
         }
-        const glm::dvec3 r = singleScatterHost(
-            hit.position, hit.normal, hit.position + 100.0 * toEye, md, light, entry, 4096, 1, 0);
+        const glm::dvec3 r =
+            singleScatterHost(hit.position, hit.normal, hit.position + 100.0 * toEye, md, light,
+                              entry, kSingleScatterStrata);
         const glm::dvec3 l1 = fresnelTransmittance(m.eta, glm::dot(hit.normal, toEye)) * r;
-        // Measured (TSIS_SCATTER_ENTRY_STEPS 2): 0.98-1.01 at cos θi = 0.9,
-        // 0.96-1.00 at 0.5, 0.93-1.00 at 0.2, 0.89-0.98 at 0.1; at and past
-        // the shadow line below the walk (0.10-0.34 at 0, 0.29-0.55 at -0.1,
-        // where the walk's is 0.1-3% of the lit side's). One step: 0.78-0.83
-        // at 0.1; Jensen's straight-line entry alone: 1.44 at 0.1, 4-7 at 0.
+        // Measured (TSIS_SCATTER_ENTRY_STEPS 2, 4 strata): 0.98-1.01 at
+        // cos θi = 0.9, 0.96-1.00 at 0.5, 0.92-0.99 at 0.2, 0.87-0.96 at 0.1;
+        // at and past the shadow line below the walk (0.13-0.37 at 0,
+        // 0.29-0.66 at -0.1, where the walk's is 0.1-3% of the lit side's).
+        // Two strata: 1.06-3.8 at -0.1 (one entry plane for half the depth);
+        // one: 1.14-1.44 at 0.1.
 
         for (int c = 0; c < 3; ++c) {
             if (cosI >= 0.1)
-                EXPECT_NEAR(l1[c], walk.mean()[c], 0.12 * walk.mean()[c]) << cosI << " " << c;
+                EXPECT_NEAR(l1[c], walk.mean()[c], (cosI > 0.15 ? 0.1 : 0.15) * walk.mean()[c])
+                    << cosI << " " << c;
             else
                 EXPECT_LT(l1[c], walk.mean()[c] + 4 * walk.error(c)) << cosI << " " << c;
         }
@@ -162,10 +165,9 @@ TEST(SingleScatterHost, PlaneAgreesWithTheSingleScatteringWalk) {
             Rng rng(41, static_cast<uint64_t>(i));
             walk.add(exitantRadiance(scene, hit, toEye, rng, counters));
         }
-        const glm::dvec3 l1 =
-            fresnelTransmittance(m.eta, 1.0) * singleScatterHost(hit.position, hit.normal,
-                                                                 hit.position + 100.0 * toEye, md,
-                                                                 light, entry, 4096, 1, 0);
+        const glm::dvec3 l1 = fresnelTransmittance(m.eta, 1.0) *
+                              singleScatterHost(hit.position, hit.normal,
+                                                hit.position + 100.0 * toEye, md, light, entry, 1);
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(l1[c], walk.mean()[c], 0.03 * walk.mean()[c]) << ti << " " << c;
     }
@@ -192,7 +194,7 @@ class SingleScatterKernelTest : public test::ClTest {
 // their centre's point on z = 0, normal +z, medium 1). Points of medium 2 get
 // no light (none of theirs landed), a point of no medium keeps its base;
 // both launches accumulate onto a base (the renderer's first writes: the
-// plane's render below). Within 2e-4 (float exp/log of ≤ 16 draws).
+// plane's render below). Within 2e-4 (float exp/log over 3 strata).
 TEST_F(SingleScatterKernelTest, MatchesHostDoubleVersion) {
     const int res = 32;
     const float half = 40.0f;
@@ -231,8 +233,7 @@ TEST_F(SingleScatterKernelTest, MatchesHostDoubleVersion) {
     const Light lights[2] = {
         {Light::Type::Directional, glm::vec3(-0.5f, 0.2f, -1.0f), glm::vec3(0.3f, 0.2f, 0.1f)},
         {Light::Type::Point, glm::vec3(3.0f, 2.0f, 20.0f), glm::vec3(400.0f, 300.0f, 200.0f)}};
-    const int n = int(points.size()), samples = 16;
-    const uint32_t seed = 11;
+    const int n = int(points.size()), strata = 3;
     std::vector<cl_float4> base(points.size(), {{0.5f, 0.25f, 0.125f, 0.0f}});
     cl::Buffer out = upload(base);
     const cl::Buffer pb = upload(points), nb = upload(normals), mb = upload(media);
@@ -244,13 +245,13 @@ TEST_F(SingleScatterKernelTest, MatchesHostDoubleVersion) {
             light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
             light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
         run(kernel, points.size(), pb, nb, n, cl_float4{{eye.x, eye.y, eye.z, 0}}, mb,
-            int(media.size()), map, sl, qb, lb, samples, seed, 1, out);
+            int(media.size()), map, sl, qb, lb, strata, 1, out);
         for (size_t k = 0; k < points.size(); ++k) {
             const int tag = int(points[k].s[3]);
             if (tag != 1) continue;  // medium 2: the map's light is medium 1's
             want[k] += double(media[0].to_radiosity) *
                        singleScatterHost(test::xyz(points[k]), test::xyz(normals[k]), eye, media[0],
-                                         light, entry, samples, seed, uint32_t(k));
+                                         light, entry, strata);
         }
     }
     const std::vector<cl_float4> got = download<cl_float4>(out, points.size());
