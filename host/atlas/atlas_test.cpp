@@ -336,6 +336,7 @@ TEST(Atlas, NoisyScanIsChartedOnItsSmoothedShape) {
     }
     const atlas::Adjacency adj = atlas::buildAdjacency(noisy);
     EXPECT_GT(atlas::medianDihedralDegrees(noisy, adj), atlas::kRoughDihedralDegrees);
+    EXPECT_GE(atlas::concaveShareOfSharpEdges(noisy, adj), atlas::kMinConcaveShare);
     int iterations = 0;
     const std::optional<Mesh> shape = atlas::smoothedForCharting(noisy, adj, &iterations);
     ASSERT_TRUE(shape);
@@ -351,6 +352,43 @@ TEST(Atlas, NoisyScanIsChartedOnItsSmoothedShape) {
     const atlas::Adjacency cleanAdj = atlas::buildAdjacency(clean);
     EXPECT_FALSE(atlas::smoothedForCharting(clean, cleanAdj, &iterations));
     EXPECT_EQ(iterations, 0);
+}
+
+// Boxes, slabs and low-poly solids have a high median angle between faces
+// (90° on a box) without being noisy: they are charted as they are, every
+// face at one density. Smoothed, the 2 mm slab became a pillow whose faces
+// mapped to strips (coverage 0.017).
+TEST(Atlas, BoxesAndBlocksAreNotScans) {
+    const std::vector<Mesh> solids = {
+        test::boxMesh(1, 1, 1),
+        test::boxMesh(20, 20, 2),
+        test::boxMesh(1, 1, 10),
+        test::boxMesh(10, 0.5f, 3),
+        test::boxMesh(30, 30, 0.2f),
+        test::prismMesh({{1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}, {2, 1}}, 0.5f)};
+    AtlasOptions opt;
+    opt.resolution = 512;
+    for (const Mesh& m : solids) {
+        const atlas::Adjacency adj = atlas::buildAdjacency(m);
+        SCOPED_TRACE(m.name + " " + std::to_string(m.positions[6].x) + " x " +
+                     std::to_string(m.positions[6].y) + " x " +
+                     std::to_string(m.positions.back().z));
+        EXPECT_GT(atlas::medianDihedralDegrees(m, adj), atlas::kRoughDihedralDegrees);
+        EXPECT_LT(atlas::concaveShareOfSharpEdges(m, adj), atlas::kMinConcaveShare);
+        int iterations = -1;
+        EXPECT_FALSE(atlas::smoothedForCharting(m, adj, &iterations));
+        EXPECT_EQ(iterations, 0);
+        const AtlasStats st = checkAtlas(m, opt);
+        // A bar's sides are triangles as long as the bar (charts are cut
+        // between triangles, never through one): they bound its scale.
+        const bool bar = m.positions.back().z >= 10;
+        EXPECT_GE(st.coverage, bar ? 0.12 : 0.3);
+        // Thin sides raster to few texels: r within the data meshes' bounds
+        // (the smoothed slab's was 0.32-1.28, stddev 0.27).
+        EXPECT_LE(st.rWstd, 0.05);
+        EXPECT_GE(st.rP01, 0.95);
+        EXPECT_LE(st.rP99, 1.05);
+    }
 }
 
 TEST(Atlas, ClosedSphereAndTube) {

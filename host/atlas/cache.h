@@ -23,7 +23,7 @@
 namespace tsis::atlas {
 
 // Bump when the builder's output changes for the same input.
-constexpr int kAtlasVersion = 7;
+constexpr int kAtlasVersion = 8;
 
 // Under cacheDirectory() (util/cache_dir.h): "atlas".
 std::optional<std::filesystem::path> atlasCacheDirectory();

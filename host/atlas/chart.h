@@ -96,16 +96,27 @@ std::vector<int> segmentVSA(const Mesh& mesh, const Adjacency& adj, int proxies,
 // with, so each part is one face-connected piece where the mesh allows.
 std::vector<int> splitFaces(const Mesh& mesh, const Adjacency& adj, int parts);
 
-// smooth.cpp — the shape charts are made of. A mesh whose median angle
-// between neighbouring faces exceeds kRoughDihedralDegrees (a noisy scan;
-// the data meshes: 3–12°) is charted on a copy smoothed by Taubin's λ|μ steps
-// (same connectivity) until that median is at most kSmoothDihedralDegrees;
+// smooth.cpp — the shape charts are made of. A noisy scan (looksLikeNoisyScan)
+// is charted on a copy smoothed by Taubin's λ|μ steps (same connectivity) until
+// its median angle between neighbouring faces is at most kSmoothDihedralDegrees;
 // other meshes as they are (nullopt: no copy). `iterations`: the λ|μ pairs
 // applied.
+//
+// Noise is relief at the triangles' scale: a median angle between neighbouring
+// faces above kRoughDihedralDegrees (the data meshes: 3–12°) whose sharp edges
+// are ridges and valleys alike (at least kMinConcaveShare valleys), on at least
+// kMinScanFaces faces. A box, a slab or a low-poly solid also has a high median
+// (a box: 90°) but its sharp edges are ridges; smoothed, a 2 mm slab became a
+// pillow whose faces mapped to strips (coverage 0.017 instead of 0.5).
 constexpr double kRoughDihedralDegrees = 20;
 constexpr double kSmoothDihedralDegrees = 10;
+constexpr double kMinConcaveShare = 0.25;
+constexpr size_t kMinScanFaces = 1000;
 constexpr int kMaxSmoothingIterations = 64;
 double medianDihedralDegrees(const Mesh& mesh, const Adjacency& adj);
+// Of the edges sharper than kRoughDihedralDegrees, the share that are valleys.
+double concaveShareOfSharpEdges(const Mesh& mesh, const Adjacency& adj);
+bool looksLikeNoisyScan(const Mesh& mesh, const Adjacency& adj);
 std::optional<Mesh> smoothedForCharting(const Mesh& mesh, const Adjacency& adj,
                                         int* iterations = nullptr);
 

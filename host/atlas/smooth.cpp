@@ -44,10 +44,40 @@ double medianDihedralDegrees(const Mesh& mesh, const Adjacency& adj) {
     return double(*mid) * 180.0 / M_PI;
 }
 
+double concaveShareOfSharpEdges(const Mesh& mesh, const Adjacency& adj) {
+    const double sharp = std::cos(kRoughDihedralDegrees * M_PI / 180.0);
+    size_t edges = 0, concave = 0;
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+        if (!adj.usable[f]) continue;
+        const glm::uvec3 t = mesh.triangles[f];
+        const glm::dvec3 n = faceNormal(mesh, t);
+        for (int e = 0; e < 3; ++e) {
+            const int g = adj.across[f][size_t(e)];
+            if (g <= int(f) || !adj.usable[size_t(g)]) continue;
+            const glm::uvec3 u = mesh.triangles[size_t(g)];
+            if (glm::dot(n, faceNormal(mesh, u)) >= sharp) continue;
+            // g's corner off the shared edge lies above f's plane: a valley.
+            uint32_t far = u.x;
+            for (int k = 0; k < 3; ++k)
+                if (u[k] != t[e] && u[k] != t[(e + 1) % 3]) far = u[k];
+            ++edges;
+            concave +=
+                glm::dot(n, glm::dvec3(mesh.positions[far]) - glm::dvec3(mesh.positions[t[e]])) > 0;
+        }
+    }
+    return edges ? double(concave) / double(edges) : 0.0;
+}
+
+bool looksLikeNoisyScan(const Mesh& mesh, const Adjacency& adj) {
+    const size_t usable = size_t(std::count(adj.usable.begin(), adj.usable.end(), 1));
+    return usable >= kMinScanFaces && medianDihedralDegrees(mesh, adj) > kRoughDihedralDegrees &&
+           concaveShareOfSharpEdges(mesh, adj) >= kMinConcaveShare;
+}
+
 std::optional<Mesh> smoothedForCharting(const Mesh& mesh, const Adjacency& adj, int* iterations) {
     int done = 0;
     if (iterations) *iterations = 0;
-    if (medianDihedralDegrees(mesh, adj) <= kRoughDihedralDegrees) return std::nullopt;
+    if (!looksLikeNoisyScan(mesh, adj)) return std::nullopt;
     Mesh shape = mesh;
     // Each vertex's neighbours through the triangles' edges.
     std::vector<std::vector<uint32_t>> ring(mesh.positions.size());

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.h"
 
@@ -102,6 +103,34 @@ inline Mesh tubeMesh(int rings, int segments, double length) {
             m.triangles.emplace_back(at(r, s), at(r, s + 1), at(r + 1, s + 1));
             m.triangles.emplace_back(at(r, s), at(r + 1, s + 1), at(r + 1, s));
         }
+    return m;
+}
+
+// A right prism of `height` over a simple polygon (counter-clockwise, fanned
+// from its first corner, which must see every other), one vertex per corner:
+// a box, a slab, an L-shaped block. Outward-facing, closed, its sharp edges
+// at 90° (the polygon's own corners aside).
+inline Mesh prismMesh(const std::vector<glm::vec2>& polygon, float height) {
+    Mesh m;
+    m.name = "test:prism";
+    const unsigned n = unsigned(polygon.size());
+    for (float z : {0.0f, height})
+        for (glm::vec2 p : polygon) m.positions.emplace_back(p.x, p.y, z);
+    for (unsigned i = 1; i + 1 < n; ++i) {
+        m.triangles.emplace_back(0, i + 1, i);          // bottom, facing -z
+        m.triangles.emplace_back(n, n + i, n + i + 1);  // top, facing +z
+    }
+    for (unsigned i = 0; i < n; ++i) {
+        const unsigned j = (i + 1) % n;
+        m.triangles.emplace_back(i, j, n + j);
+        m.triangles.emplace_back(i, n + j, n + i);
+    }
+    return m;
+}
+
+inline Mesh boxMesh(float x, float y, float z) {
+    Mesh m = prismMesh({{0, 0}, {x, 0}, {x, y}, {0, y}}, z);
+    m.name = "test:box";
     return m;
 }
 
