@@ -91,9 +91,9 @@ VALIDATION = {
 }
 
 MODELS = [
-    ("the thesis' model = the old default (--model thesis)", ["--model", "thesis"]),
-    ("the new default (--transport object)", []),
-    ("the new default + --single-scatter", ["--single-scatter"]),
+    ("the thesis' model = the old default (`--model thesis`)", ["--model", "thesis"]),
+    ("the new default (`--transport object`)", []),
+    ("the new default + `--single-scatter`", ["--single-scatter"]),
 ]
 
 
@@ -177,7 +177,8 @@ def table(tsis, only):
               "noise %.1f" % (100 * noise), flush=True)
     md = ["# The subsurface models against volumetric truth", "",
           "Made by `bench/model_truth.py table build/tsis` (references: `bench/model_truth.py "
-          "truth build/tsis`). Pooled rel. RMSE sqrt(sum (model - truth)^2 / sum truth^2) over "
+          "truth build/tsis 256`, bench/results/truth/, two seeds each; the two spheres: "
+          "tests/validation's light-traced truth). Pooled rel. RMSE sqrt(sum (model - truth)^2 / sum truth^2) over "
           "covered pixels, radiance without the specular lobe, %d x %d, `--aa 1`; each cell "
           "measured / with the reference's own noise subtracted in quadrature. Target (issue 36): "
           "<= 15 %% where the object is >= 3 diffusion lengths across (marked *), <= 25 %% "
