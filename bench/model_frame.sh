@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The new default model's frame cost against the thesis' (issue 36: ≤ 1.15×
-# with the light moving): bench_frame --side-by-side for the default scene and
-# cow, today's defaults and --model thesis interleaved, ROUNDS rounds of
+# with the light moving) and what --single-scatter adds to it: bench_frame
+# --side-by-side for the default scene and cow, today's defaults, --model
+# thesis and the defaults with --single-scatter interleaved, ROUNDS rounds of
 # FRAMES frames each (medians of the whole frame); the fit is made before the
 # first round (cached), so the rounds time frames only. Writes
 # bench/results/model_frame.md.
@@ -19,25 +20,30 @@ median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[
 {
   echo "# The default model's frame against the thesis' model"
   echo
-  echo "Made by \`bench/model_frame.sh\` on $(date -u +%Y-%m-%dT%H:%MZ) (load $(cut -d' ' -f1 /proc/loadavg)): \`bench_frame --side-by-side --frames $frames\`, 512², today's defaults (\`--transport object\`) and \`--model thesis\`, $rounds rounds interleaved; medians of the rounds' medians (ms)."
+  echo "Made by \`bench/model_frame.sh\` on $(date -u +%Y-%m-%dT%H:%MZ) (load $(cut -d' ' -f1 /proc/loadavg)): \`bench_frame --side-by-side --frames $frames\`, 512², today's defaults (\`--transport object\`), \`--model thesis\` and the defaults with \`--single-scatter\`, $rounds rounds interleaved; medians of the rounds' medians (ms); ratios to the thesis' model."
   echo
-  echo "| scene | light moving: default / thesis | ratio | camera moving: default / thesis | ratio |"
+  echo "| scene | light moving: default / thesis / + single scatter | ratios | camera moving: default / thesis / + single scatter | ratios |"
   echo "|---|---|---|---|---|"
 } > "$out"
 for scene in "--mesh builtin:default" "--mesh cow --material marble"; do
   # shellcheck disable=SC2086
   run $scene >/dev/null  # the fit, once (cached)
-  : > /tmp/model_frame_new; : > /tmp/model_frame_old
+  : > /tmp/model_frame_new; : > /tmp/model_frame_old; : > /tmp/model_frame_ss
   for ((r = 0; r < rounds; ++r)); do
     # shellcheck disable=SC2086
     run $scene >> /tmp/model_frame_new
     # shellcheck disable=SC2086
     run $scene --model thesis >> /tmp/model_frame_old
+    # shellcheck disable=SC2086
+    run $scene --single-scatter >> /tmp/model_frame_ss
   done
   ln=$(field light_moving_ms < /tmp/model_frame_new | median)
   lo=$(field light_moving_ms < /tmp/model_frame_old | median)
   cn=$(field camera_moving_ms < /tmp/model_frame_new | median)
   co=$(field camera_moving_ms < /tmp/model_frame_old | median)
-  echo "| \`$scene\` | $ln / $lo | $(awk "BEGIN {printf \"%.3f\", $ln / $lo}") | $cn / $co | $(awk "BEGIN {printf \"%.3f\", $cn / $co}") |" >> "$out"
+  ls=$(field light_moving_ms < /tmp/model_frame_ss | median)
+  cs=$(field camera_moving_ms < /tmp/model_frame_ss | median)
+  ratios() { awk "BEGIN {printf \"%.3f / %.3f\", $1 / $2, $3 / $2}"; }
+  echo "| \`$scene\` | $ln / $lo / $ls | $(ratios "$ln" "$lo" "$ls") | $cn / $co / $cs | $(ratios "$cn" "$co" "$cs") |" >> "$out"
 done
 cat "$out"
