@@ -6,21 +6,23 @@
 
 namespace tsis {
 
-void MaterialTables::updateMedia(const std::vector<glm::vec2>& etaAndExit) {
-    TSIS_CHECK(!etaAndExit.empty());
-    if (mediaTexture_ && etaAndExit == media_) return;
-    const int n = static_cast<int>(etaAndExit.size());
+void MaterialTables::updateMedia(const std::vector<MediumSurface>& media) {
+    TSIS_CHECK(!media.empty());
+    if (mediaTexture_ && media == media_) return;
+    const int n = static_cast<int>(media.size());
     const int w = std::min(n, kMediumTableWidth),
               h = (n + kMediumTableWidth - 1) / kMediumTableWidth;
     std::vector<float> rgba(static_cast<size_t>(w) * h * 4, 0.0f);
-    for (size_t m = 0; m < etaAndExit.size(); ++m) {
-        rgba[m * 4] = etaAndExit[m].x;
-        rgba[m * 4 + 1] = etaAndExit[m].y;
+    for (size_t m = 0; m < media.size(); ++m) {
+        rgba[m * 4] = media[m].eta;
+        rgba[m * 4 + 1] = media[m].exitScale;
+        rgba[m * 4 + 2] = media[m].alpha;
+        rgba[m * 4 + 3] = static_cast<float>(media[m].envLayer);
     }
     if (!mediaTexture_ || mediaTexture_->width() != w || mediaTexture_->height() != h)
         mediaTexture_ = std::make_unique<FloatTexture>(w, h);
     mediaTexture_->upload(rgba.data());
-    media_ = etaAndExit;
+    media_ = media;
 }
 
 void MaterialTables::updateAlbedo(const std::vector<glm::vec3>& factor, int resolution,

@@ -1,8 +1,9 @@
 // What the GL passes read of the materials (docs/design.md §2 "Materials"):
 //  * per medium, by a point's medium tag (mesh/media.h): η for the Fresnel
-//    terms at entry and exit and the exit term's scale (render_options.h
-//    exitScale), so that objects of several materials are each lit and
-//    composited with their own;
+//    terms at entry and exit, the exit term's scale (render_options.h
+//    exitScale) and the surface's GGX α with the layer of the environment
+//    prefiltered at it, so that objects of several materials are each lit
+//    and composited with their own;
 //  * per atlas texel, when the scene has one: the albedo factor
 //    (render/albedo_atlas.h) that scales the light entering there.
 #pragma once
@@ -17,10 +18,22 @@
 
 namespace tsis {
 
+// What the composite reads of one medium's surface.
+struct MediumSurface {
+    float eta = 1.3f;
+    float exitScale = 1.0f;
+    float alpha = 0.09f;  // the GGX lobe's α = R²
+    int envLayer = 0;     // its roughness' layer of the prefiltered environment
+    bool operator==(const MediumSurface& o) const {
+        return eta == o.eta && exitScale == o.exitScale && alpha == o.alpha &&
+               envLayer == o.envLayer;
+    }
+};
+
 class MaterialTables {
   public:
-    // One (η, exit scale) per medium; uploaded only when they changed.
-    void updateMedia(const std::vector<glm::vec2>& etaAndExit);
+    // One entry per medium; uploaded only when they changed.
+    void updateMedia(const std::vector<MediumSurface>& media);
     // The albedo factor per atlas texel (res², GL row order), or none
     // (`factor` empty); uploaded when `version` changed.
     void updateAlbedo(const std::vector<glm::vec3>& factor, int resolution, uint64_t version);
@@ -31,7 +44,7 @@ class MaterialTables {
     bool textured() const { return textured_; }
 
   private:
-    std::vector<glm::vec2> media_;
+    std::vector<MediumSurface> media_;
     std::unique_ptr<FloatTexture> mediaTexture_, albedoTexture_;
     bool textured_ = false;
     uint64_t albedoVersion_ = 0;

@@ -314,7 +314,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
                              const RenderTarget& frameGbuffer, uint64_t gbufferVersion,
                              const RenderTarget& sampleGbuffer, int aa,
                              const std::vector<LightView>& lights, const ShadowMapArray& shadows,
-                             const glm::vec3& eye, const MaterialTables& materials, float alpha,
+                             const glm::vec3& eye, const MaterialTables& materials, bool specular,
                              const EnvReflectionTextures& env, std::optional<float> displayScale) {
     const int w = frameGbuffer.width(), h = frameGbuffer.height();
     TSIS_CHECK_EQ(sampleGbuffer.width(), w * aa);
@@ -350,7 +350,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         const float zero[4] = {0, 0, 0, 0};
         glClearBufferfv(GL_COLOR, marks, zero);
     }
-    const unsigned features = (alpha > 0 ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
+    const unsigned features = (specular ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
     const ShaderProgram& centre =
         centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
     const ShaderProgram& samples = samplePrograms_.get(features);
@@ -359,7 +359,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         bindLights(*p, lights, kShadowUnit, shadows);
         materials.bind(*p, kMediaUnit);
         p->set("u_eye", eye);
-        p->set("u_alpha", alpha);
+        p->set("u_envLayers", env.layers);
         p->set("u_worldToMap", env.worldToMap);
         p->set("u_envScale", env.scale);
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);

@@ -182,10 +182,12 @@ class RadiosityLookupPass {
 };
 
 // The environment's reflection for the composite (render/env_reflection.h):
-// the prefiltered residual (lat-long, map frame; 0: none) and the albedo table
-// per medium, the rotation world → map and the map's intensity.
+// the prefiltered residual (lat-long, map frame; 0: none; `layers` bands of
+// rows, one per roughness: MediumSurface::envLayer) and the albedo table per
+// medium, the rotation world → map and the map's intensity.
 struct EnvReflectionTextures {
     GLuint prefiltered = 0, albedo = 0;
+    int layers = 1;
     glm::mat3 worldToMap{1.0f};
     float scale = 0;
 };
@@ -218,8 +220,8 @@ class CompositePass {
     // radiosity: B at the frame's pixels, RGBA floats, GL row order.
     // `sampleGbuffer`: aa × the frame's size (the frame's G-buffer at 1×),
     // its coverage read from its depth (its colour need not be cleared).
-    // `materials`: η and the exit term's factor over Ft/π (render_options.h
-    // exitScale) of each pixel's medium; `alpha`: GGX α, 0 for no lobe;
+    // `materials`: η, the exit term's factor over Ft/π (render_options.h
+    // exitScale) and the lobe's α of each pixel's medium; `specular`: the lobe;
     // `env`: the environment's reflection. `gbufferVersion`: changes when the
     // frame's G-buffer (and so the pixels to supersample) does. Then
     // toneMap(), or resolve() first where the log-average or the radiance is
@@ -232,7 +234,7 @@ class CompositePass {
                   const RenderTarget& frameGbuffer, uint64_t gbufferVersion,
                   const RenderTarget& sampleGbuffer, int aa, const std::vector<LightView>& lights,
                   const ShadowMapArray& shadows, const glm::vec3& eye,
-                  const MaterialTables& materials, float alpha,
+                  const MaterialTables& materials, bool specular,
                   const EnvReflectionTextures& env = {},
                   std::optional<float> displayScale = std::nullopt);
     // The frame's radiance (frameRadiance()) and log luminance, without the

@@ -11,6 +11,7 @@
 #include "atlas/atlas.h"
 #include "mesh/media.h"
 #include "render/albedo_inversion.h"
+#include "scene/environment.h"
 #include "support/boxes.h"
 #include "support/render.h"
 
@@ -180,6 +181,47 @@ TEST(Materials, EachTriangleOfOneSolidScattersWithItsOwnMaterial) {
         for (double e : {er, lr}) EXPECT_LT(e, right) << method;
         // And the two materials differ there by far more.
         EXPECT_GT(cubeError(skin, apple, false, false), 0.1) << method;
+    }
+}
+
+// Each object's surface has its file's roughness (ObjectMaterial::roughness)
+// in the lights' lobe and in the environment's reflection: each cube renders
+// as it does when every surface has its roughness; --roughness R replaces
+// both. The two roughnesses' frames differ on each cube by far more than the
+// bound, so a lobe of the wrong object shows.
+TEST(Materials, EachObjectReflectsWithItsOwnRoughness) {
+    Scene files = twoCubes("marble", "marble");
+    files.objectMaterials[0].roughness = 0.15;
+    files.objectMaterials[1].roughness = 0.8;
+    RenderOptions opt = test::smallOptions(96, 256, 64);
+    opt.aa = 1;
+    for (bool env : {false, true}) {
+        SCOPED_TRACE(env ? "a sky as well" : "a light");
+        Scene scene = files;
+        if (env) {
+            const int w = 32, h = 16;
+            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
+            for (int y = 0; y < h; ++y)  // bright above, dark below: the lobe's width shows
+                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
+            scene.env.map = splitEnvironment("sky", w, h, 3, sky);
+        }
+        const FrameResult both = test::renderWith(scene, opt, "pyramid");
+        RenderOptions all = opt;
+        all.roughness = 0.15f;
+        const FrameResult smooth = test::renderWith(scene, all, "pyramid");
+        all.roughness = 0.8f;
+        const FrameResult rough = test::renderWith(scene, all, "pyramid");
+        EXPECT_LT(cubeError(both, smooth, true, true), 1e-5);
+        EXPECT_LT(cubeError(both, rough, false, true), 1e-5);
+        EXPECT_GT(cubeError(smooth, rough, true, true), 0.01);
+        EXPECT_GT(cubeError(smooth, rough, false, true), 0.01);
+        // Without the file's: kDefaultRoughness, or --roughness for all.
+        Scene plain = scene;
+        for (ObjectMaterial& o : plain.objectMaterials) o.roughness = -1;
+        all.roughness = 0.3f;
+        const FrameResult fixed = test::renderWith(plain, all, "pyramid");
+        EXPECT_LT(cubeError(test::renderWith(plain, opt, "pyramid"), fixed, true, true), 1e-6);
+        EXPECT_LT(cubeError(test::renderWith(scene, all, "pyramid"), fixed, false, true), 1e-6);
     }
 }
 

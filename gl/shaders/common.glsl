@@ -26,7 +26,8 @@ uniform int u_lightShadows[MAX_LIGHTS];      // 0: the light casts no shadows (V
 // One layer per light: a single sampler, since dynamically indexed sampler
 // arrays cost one lookup per array element on llvmpipe.
 uniform sampler2DArrayShadow u_shadowMaps;
-// Per medium (gl/material_tables.h): r = η, g = the exit term's scale; texel
+// Per medium (gl/material_tables.h): r = η, g = the exit term's scale, b =
+// the surface's GGX α, a = its layer of the prefiltered environment; texel
 // m = tag − 1 at (m mod 4096, m / 4096).
 uniform sampler2D u_media;
 vec4 mediumOf(float tag) {

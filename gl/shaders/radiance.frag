@@ -20,20 +20,25 @@ uniform sampler2D u_radiosity;      // B at the frame's pixels
 uniform sampler2D u_framePosition;  // the frame's G-buffer positions (w = coverage)
 uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
-uniform float u_alpha;  // GGX α = R², with TSIS_SPECULAR
 // The environment's reflection (render/env_reflection.h), with TSIS_ENV_REFLECT:
 // the residual prefiltered by the lobe (lat-long, the map's frame, row 0 =
-// up) about the mirror direction × the lobe's albedo per medium (x: √cos θo,
-// y: medium), × the map's intensity.
+// up; one band of rows per roughness, the medium's layer) about the mirror
+// direction × the lobe's albedo per medium (x: √cos θo, y: medium), × the
+// map's intensity.
 uniform sampler2D u_envPrefiltered;
+uniform int u_envLayers;
 uniform sampler2D u_envAlbedo;
 uniform mat3 u_worldToMap;
 uniform float u_envScale;
 layout(location = 0) out vec4 o_radiance;
 
-vec3 envReflection(vec3 n, vec3 v, float tag) {
+vec3 envReflection(vec3 n, vec3 v, float tag, float layer) {
     vec3 r = normalize(u_worldToMap * reflect(-v, n));
-    vec3 l = textureLod(u_envPrefiltered, latLongUv(r), 0.0).rgb;
+    // Within the layer's band: its first and last rows' centres bound v.
+    vec2 uv = latLongUv(r);
+    float rows = float(textureSize(u_envPrefiltered, 0).y) / float(u_envLayers);
+    uv.y = (layer + clamp(uv.y, 0.5 / rows, 1.0 - 0.5 / rows)) / float(u_envLayers);
+    vec3 l = textureLod(u_envPrefiltered, uv, 0.0).rgb;
     vec2 size = vec2(textureSize(u_envAlbedo, 0));
     float m = float(max(int(tag + 0.5) - 1, 0));
     float s = sqrt(clamp(dot(n, v), 0.0, 1.0));
@@ -49,9 +54,9 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
 #if TSIS_SPECULAR
-    l += specularRadiance(p.xyz, n, v, u_alpha, medium.r);
+    l += specularRadiance(p.xyz, n, v, medium.b, medium.r);
 #if TSIS_ENV_REFLECT
-    l += envReflection(n, v, p.w);
+    l += envReflection(n, v, p.w, medium.a);
 #endif
 #endif
     return l;

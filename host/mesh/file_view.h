@@ -47,6 +47,10 @@ struct FileMaterial {
     std::string textureBytes;   // empty: read texturePath
     bool textureSrgb = true;    // glTF base colour and 8-bit OBJ maps are sRGB
     std::optional<double> eta;  // KHR_materials_ior, OBJ Ni
+    // The surface's GGX roughness R (physics/ggx.h): glTF roughnessFactor
+    // (1 where the file gives none, as glTF says), OBJ Pr, or OBJ Ns by
+    // Blender's mapping R = 1 − √Ns / 30; none: --roughness's.
+    std::optional<double> roughness;
     // KHR_materials_volume: the distance (file units) light travels before
     // its colour becomes attenuationColor.
     std::optional<double> attenuationDistance;

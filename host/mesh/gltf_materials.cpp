@@ -212,6 +212,8 @@ struct Reader {
             }
         }
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+        // tinygltf gives glTF's default, 1, where the file has no factor.
+        fm.roughness = pbr.roughnessFactor;
         if (pbr.metallicRoughnessTexture.index >= 0) ignored.add("metallicRoughnessTexture");
         if (m.normalTexture.index >= 0) ignored.add("normalTexture");
         if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");

@@ -467,7 +467,7 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
     const std::string materials = R"([
       {"name": "Skin",
        "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.5, 0.4, 0.5],
-                                "baseColorTexture": {"index": 0}},
+                                "baseColorTexture": {"index": 0}, "roughnessFactor": 0.25},
        "normalTexture": {"index": 0},
        "extensions": {"KHR_materials_ior": {"ior": 1.4},
                       "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.01,
@@ -512,6 +512,10 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
     EXPECT_EQ(view.materials[2].name, "#2");
     EXPECT_EQ(view.materials[2].albedo, glm::dvec3(0.2, 0.3, 0.4));
     EXPECT_EQ(view.materials[2].texturePath, "");  // TEXCOORD_1: noted
+    // roughnessFactor, glTF's 1 where the file has none.
+    EXPECT_EQ(skin.roughness, 0.25);
+    EXPECT_EQ(jade.roughness, 1.0);
+    EXPECT_EQ(view.materials[2].roughness, 1.0);
 
     // Each triangle's material and texcoords: the first quad's are its
     // TEXCOORD_0 as given (its UVs equal its x, y), the others' (0, 0).

@@ -15,9 +15,16 @@ namespace {
 using namespace meshparse;
 
 // Statements read or deliberately skipped without a word: none yet beyond
-// these three and newmtl.
+// these and newmtl.
 bool isRead(std::string_view key) {
-    return key == "newmtl" || key == "Kd" || key == "map_Kd" || key == "Ni";
+    return key == "newmtl" || key == "Kd" || key == "map_Kd" || key == "Ni" || key == "Pr" ||
+           key == "Ns";
+}
+
+// Blender's exporter writes Ns = (30 (1 − R))² (its importer inverts it):
+// the convention most OBJ files carry. Ns past 900 is sharper than R = 0.
+double roughnessOfPhongExponent(double ns) {
+    return 1.0 - std::sqrt(std::clamp(ns, 0.0, 900.0)) / 30.0;
 }
 
 }  // namespace
@@ -35,6 +42,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
     size_t outside = 0;  // statements before the first newmtl
     size_t noIndex = 0;  // materials with "Ni 1": exporters' "no index given"
     std::string firstNoIndex;
+    std::vector<char> physical;  // per material: a Pr given (it wins over Ns)
     auto where = [&](size_t line) { return concat("material library '", path, "': line ", line); };
     auto failLine = [&](size_t line, const auto&... args) -> void {
         failIn(meshName, where(line), ": ", args...);
@@ -52,6 +60,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             if (tok.size() < 2) failLine(line, "newmtl needs a name");
             out.emplace_back();
             out.back().name = std::string(tok[1]);
+            physical.push_back(0);
             continue;
         }
         if (isRead(key) && out.empty()) {
@@ -86,6 +95,19 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                 continue;
             }
             out.back().eta = eta;
+        } else if (key == "Pr" || key == "Ns") {
+            if (tok.size() < 2)
+                failLine(line, "material '", out.back().name, "': ", key, " needs a value");
+            const double v = number(tok[1], line, key == "Pr" ? "Pr" : "Ns");
+            if (!std::isfinite(v) || v < 0)
+                failLine(line, "material '", out.back().name, "': ", key, " ", v,
+                         " must be finite and >= 0");
+            if (key == "Pr") {
+                out.back().roughness = v;
+                physical.back() = 1;
+            } else if (!physical.back()) {
+                out.back().roughness = roughnessOfPhongExponent(v);
+            }
         } else if (key == "map_Kd") {
             FileMaterial& m = out.back();
             if (tok.size() < 2) failLine(line, "material '", m.name, "': map_Kd needs a file");
@@ -128,7 +150,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                               ") read as no index of refraction given: the default η"));
     if (!ignored.empty())
         note(meshName, concat("material library '", path, "': statements ignored: ", ignored.list(),
-                              " (read: newmtl, Kd, map_Kd, Ni)"));
+                              " (read: newmtl, Kd, map_Kd, Ni, Pr, Ns)"));
     return out;
 }
 

@@ -224,7 +224,7 @@ TEST(OBJ, MaterialsFromMtlLibraries) {
                                  "texture ignored (Kd only)\n"));
     EXPECT_THAT(notes, HasSubstr(n + mtl +
                                  ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
-                                 "Kd, map_Kd, Ni)\n"));
+                                 "Kd, map_Kd, Ni, Pr, Ns)\n"));
     EXPECT_THAT(notes, HasSubstr(n + "material library '" + dir.file("gone.mtl") + "' not found"));
     EXPECT_THAT(notes,
                 HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
@@ -306,6 +306,34 @@ TEST(OBJ, MtlQuirksAreReadAsExportersMeanThem) {
                                      "the default η"));
         EXPECT_THAT(notes, Not(HasSubstr("statements ignored")));
     }
+}
+
+// The surface's roughness: Pr as given, else Ns through Blender's R = 1 − √Ns
+// / 30 (its exporter's inverse), Pr winning in either order; none without.
+TEST(OBJ, RoughnessFromPrOrNs) {
+    test::ScratchDir dir;
+    std::filesystem::create_directories(dir.path() / "a");
+    dir.file("a/q.mtl",
+             "newmtl m\nNs 225\nnewmtl pr\nNs 900\nPr 0.7\nnewmtl first\nPr 0.2\nNs 0\n"
+             "newmtl none\nKd 1 1 1\nnewmtl sharp\nNs 1000\n");
+    const std::string obj = quadUsing(dir, "a", "q.mtl");
+    FileView view;
+    testing::internal::CaptureStderr();
+    loadMesh(obj, &view);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    ASSERT_EQ(view.materials.size(), 5u) << notes;
+    EXPECT_DOUBLE_EQ(*view.materials[0].roughness, 0.5);  // (30 · 0.5)² = 225
+    EXPECT_EQ(view.materials[1].roughness, 0.7);
+    EXPECT_EQ(view.materials[2].roughness, 0.2);
+    EXPECT_FALSE(view.materials[3].roughness.has_value());
+    EXPECT_EQ(view.materials[4].roughness, 0.0);  // past 900: R = 0 (clamped when used)
+    EXPECT_THAT(notes, Not(HasSubstr("statements ignored")));
+    dir.file("a/q.mtl", "newmtl m\nPr -0.5\n");
+    EXPECT_THAT(errorOf([&] { loadMesh(obj, &view); }, obj),
+                HasSubstr("material 'm': Pr -0.5 must be finite and >= 0"));
+    dir.file("a/q.mtl", "newmtl m\nNs x\n");
+    EXPECT_THAT(errorOf([&] { loadMesh(obj, &view); }, obj),
+                HasSubstr("material 'm': Ns: bad number 'x'"));
 }
 
 // An OBJ's library and its textures come from its folder only: "../", an

@@ -13,6 +13,12 @@
 
 namespace tsis {
 
+// The roughnesses the lobe takes (--roughness, a file's): below 0.05 the
+// lobe is sharper than the shadow maps and the prefiltered environment
+// resolve. kDefaultRoughness where neither the user nor the file gives one.
+inline constexpr double kMinRoughness = 0.05;
+inline constexpr double kDefaultRoughness = 0.3;
+
 // α = R² for user roughness R.
 double ggxAlpha(double roughness);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/ggx.h"
+#include "util/error.h"
 #include "util/parallel.h"
 
 namespace tsis {
@@ -52,14 +53,17 @@ std::vector<float> prefilterReflection(const EnvironmentMap& map, double roughne
     return out;
 }
 
-std::vector<float> reflectionAlbedoTable(const std::vector<float>& etaOfMedium, double roughness) {
+std::vector<float> reflectionAlbedoTable(const std::vector<float>& etaOfMedium,
+                                         const std::vector<float>& roughnessOfMedium) {
+    TSIS_CHECK_EQ(etaOfMedium.size(), roughnessOfMedium.size());
     const int n = kReflectionAlbedoEntries;
     std::vector<float> out(etaOfMedium.size() * n * 4);
     parallelFor(etaOfMedium.size() * n, 8, [&](size_t begin, size_t end) {
         for (size_t k = begin; k < end; ++k) {
             const double s = static_cast<double>(k % n) / (n - 1);
             const float a = static_cast<float>(
-                ggxDirectionalAlbedo(etaOfMedium[k / n], roughness, std::max(s * s, 1e-4)));
+                ggxDirectionalAlbedo(etaOfMedium[k / n], roughnessOfMedium[k / n],
+                                     std::max(s * s, 1e-4)));
             std::fill_n(&out[k * 4], 4, a);
         }
     });

@@ -26,9 +26,10 @@ constexpr int kReflectionAlbedoEntries = 64;
 // (n = v = r). RGBA floats, row 0 = up.
 std::vector<float> prefilterReflection(const EnvironmentMap& map, double roughness, int width);
 
-// ggxDirectionalAlbedo(η_m, R, cos θo) for each medium m (one row each, the
-// value in all of RGBA), kReflectionAlbedoEntries per row at √cos θo
+// ggxDirectionalAlbedo(η_m, R_m, cos θo) for each medium m (one row each,
+// the value in all of RGBA), kReflectionAlbedoEntries per row at √cos θo
 // uniformly spaced.
-std::vector<float> reflectionAlbedoTable(const std::vector<float>& etaOfMedium, double roughness);
+std::vector<float> reflectionAlbedoTable(const std::vector<float>& etaOfMedium,
+                                         const std::vector<float>& roughnessOfMedium);
 
 }  // namespace tsis

@@ -45,16 +45,18 @@ TEST(EnvReflection, HalfLitMapIsSeenByTheLobeAboutTheMirrorDirection) {
     EXPECT_GT(at(rough, h - 3), at(smooth, h - 3));
 }
 
-// The table holds ggxDirectionalAlbedo at √cos θo = k/(n − 1), per medium's η.
+// The table holds ggxDirectionalAlbedo at √cos θo = k/(n − 1), per medium's
+// η and roughness.
 TEST(EnvReflection, AlbedoTableHoldsTheDirectionalAlbedoPerMedium) {
-    const std::vector<float> etas = {1.3f, 1.5f};
-    const std::vector<float> t = reflectionAlbedoTable(etas, 0.4);
+    const std::vector<float> etas = {1.3f, 1.5f}, roughness = {0.4f, 0.8f};
+    const std::vector<float> t = reflectionAlbedoTable(etas, roughness);
     const int n = kReflectionAlbedoEntries;
     ASSERT_EQ(t.size(), etas.size() * n * 4);
     for (size_t m = 0; m < etas.size(); ++m)
         for (int k : {1, n / 3, n - 1}) {
             const double s = static_cast<double>(k) / (n - 1);
-            EXPECT_NEAR(t[(m * n + k) * 4], ggxDirectionalAlbedo(etas[m], 0.4, s * s), 1e-6);
+            EXPECT_NEAR(t[(m * n + k) * 4], ggxDirectionalAlbedo(etas[m], roughness[m], s * s),
+                        1e-6);
         }
     EXPECT_GT(t[(n + n - 1) * 4], t[(n - 1) * 4]);  // η 1.5 reflects more than 1.3
 }

@@ -1,10 +1,12 @@
 #include "render/object_materials.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
+#include "physics/ggx.h"
 #include "render/albedo_inversion.h"
 #include "util/error.h"
 
@@ -134,6 +136,15 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
     }
     o.medium.name = name;
     o.albedo = albedoOf(o.medium, model);
+    if (f.roughness) {
+        const double r = *f.roughness;
+        if (!std::isfinite(r))
+            fail("mesh '", file, "': material '", name, "': roughness ", r, " is not finite");
+        o.roughness = std::clamp(r, kMinRoughness, 1.0);
+        if (o.roughness != r)
+            note(file, concat("material '", name, "': roughness ", r, " clamped to [",
+                              kMinRoughness, ", 1]: ", o.roughness));
+    }
     return o;
 }
 

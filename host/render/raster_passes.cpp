@@ -43,6 +43,24 @@ void filterLinear(const FloatTexture& t, bool wrapS) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrapS ? GL_REPEAT : GL_CLAMP_TO_EDGE);
 }
 
+// Each medium's lobe roughness (its file's or --roughness) and the distinct
+// ones in the order of first use: the prefiltered environment's layers.
+struct MediumRoughness {
+    std::vector<float> ofMedium, layers;
+    std::vector<int> layerOf;  // per medium
+};
+MediumRoughness mediumRoughness(const FrameContext& ctx) {
+    MediumRoughness r;
+    for (float file : ctx.media->roughnessOfMedium) {
+        const auto v = static_cast<float>(surfaceRoughness(ctx.options->roughness, file));
+        auto it = std::find(r.layers.begin(), r.layers.end(), v);
+        if (it == r.layers.end()) it = r.layers.insert(r.layers.end(), v);
+        r.ofMedium.push_back(v);
+        r.layerOf.push_back(static_cast<int>(it - r.layers.begin()));
+    }
+    return r;
+}
+
 // The camera's passes may cull back faces: the mesh is closed and outward and
 // the eye outside its bounding sphere (so outside the mesh).
 bool cullsBackFaces(const FrameContext& ctx, const GpuMesh& mesh) {
@@ -111,14 +129,17 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
     h.fluxAtlas = graph.create<GlTarget>("flux_atlas");
     h.residualFluxAtlas = graph.create<GlTarget>("residual_flux_atlas");
     h.gbuffer = graph.create<GlTarget>("gbuffer");
-    // η and the exit scale of every medium (render/scene_media.h).
-    std::vector<glm::vec2> media;
+    // η, the exit scale and the lobe of every medium (render/scene_media.h).
+    std::vector<MediumSurface> media;
+    const MediumRoughness roughness = mediumRoughness(ctx);
     for (size_t m = 0; m < ctx.media->etaOfMedium.size(); ++m) {
         const float eta = ctx.media->etaOfMedium[m];
-        media.emplace_back(eta, static_cast<float>(exitScale(ctx.options->exit, eta)));
+        media.push_back({eta, static_cast<float>(exitScale(ctx.options->exit, eta)),
+                         static_cast<float>(ggxAlpha(roughness.ofMedium[m])),
+                         roughness.layerOf[m]});
     }
     Hasher etas;
-    for (const glm::vec2& m : media) etas.add(m.x);
+    for (const MediumSurface& m : media) etas.add(m.eta);
     const uint64_t eta = etas.digest();
     h.samples = graph.create<GlTarget>("composite_samples");
 
@@ -338,19 +359,29 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
     const RenderOptions& o = *ctx.options;
     if (!env || !o.specular) return {};
     Timer t;
-    const uint64_t mapKey = Hasher(env.map->hash).add(o.roughness).digest();
+    // One band of rows per distinct roughness, stacked (layer 0 on top).
+    const MediumRoughness roughness = mediumRoughness(ctx);
+    Hasher mapHash(env.map->hash);
+    for (float r : roughness.layers) mapHash.add(r);
+    const uint64_t mapKey = mapHash.digest();
+    const int w = kReflectionMapWidth;
+    const auto layers = static_cast<int>(roughness.layers.size());
     if (!envPrefiltered_ || mapKey != envPrefilteredKey_) {
-        const int w = kReflectionMapWidth;
-        if (!envPrefiltered_) {
-            envPrefiltered_ = std::make_unique<FloatTexture>(w, w / 2);
+        if (!envPrefiltered_ || envPrefiltered_->height() != layers * w / 2) {
+            envPrefiltered_ = std::make_unique<FloatTexture>(w, layers * w / 2);
             filterLinear(*envPrefiltered_, true);
         }
-        envPrefiltered_->upload(prefilterReflection(*env.map, o.roughness, w).data());
+        std::vector<float> bands;
+        for (float r : roughness.layers) {
+            const std::vector<float> band = prefilterReflection(*env.map, r, w);
+            bands.insert(bands.end(), band.begin(), band.end());
+        }
+        envPrefiltered_->upload(bands.data());
         envPrefilteredKey_ = mapKey;
     }
     const std::vector<float>& etas = ctx.media->etaOfMedium;
     Hasher albedoKey;
-    albedoKey.add(o.roughness);
+    for (float r : roughness.ofMedium) albedoKey.add(r);
     for (float eta : etas) albedoKey.add(eta);
     if (!envAlbedo_ || albedoKey.digest() != envAlbedoKey_) {
         const int rows = static_cast<int>(etas.size());
@@ -358,12 +389,12 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
             envAlbedo_ = std::make_unique<FloatTexture>(kReflectionAlbedoEntries, rows);
             filterLinear(*envAlbedo_, false);
         }
-        envAlbedo_->upload(reflectionAlbedoTable(etas, o.roughness).data());
+        envAlbedo_->upload(reflectionAlbedoTable(etas, roughness.ofMedium).data());
         envAlbedoKey_ = albedoKey.digest();
     }
     stats.set("env_reflection_ms", t.ms());
-    return {envPrefiltered_->id(), envAlbedo_->id(), glm::transpose(glm::mat3(env.toWorld())),
-            static_cast<float>(env.intensity)};
+    return {envPrefiltered_->id(), envAlbedo_->id(), layers,
+            glm::transpose(glm::mat3(env.toWorld())), static_cast<float>(env.intensity)};
 }
 
 DisplayBackground RasterPasses::displayBackground(const FrameContext& ctx) {
@@ -434,7 +465,6 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             const RenderOptions& o = *ctx.options;
             const GlLights& lights = res.read(gl.lights);
             FrameImage& out = res.write(image);
-            const float alpha = o.specular ? static_cast<float>(ggxAlpha(o.roughness)) : 0.0f;
             const GlTarget& gbuffer = res.read(gl.gbuffer);
             // The frame's radiance as floats only for the AOVs; the
             // log-average from the GPU's sums, before the tone curve only
@@ -446,7 +476,7 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             compositePass_.setDisplay(static_cast<int>(o.tone), displayBackground(ctx));
             compositePass_.radiance(b.texture ? nullptr : b.rgba.data(), b.texture, *gbuffer.target,
                                     gbuffer.version, *res.read(gl.samples).target, o.aa,
-                                    *lights.views, *lights.shadows, ctx.eye, materials_, alpha,
+                                    *lights.views, *lights.shadows, ctx.eye, materials_, o.specular,
                                     environmentReflection(ctx, res.stats()),
                                     direct ? std::optional(out.exposureScale) : std::nullopt);
             if (!direct) {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "physics/fresnel.h"
+#include "physics/ggx.h"
 #include "render/method.h"
 #include "render/render_params.h"
 #include "util/error.h"
@@ -126,6 +127,11 @@ const char* volumetricEstimatorName(VolumetricEstimator estimator) {
 
 double exitScale(ExitTerm exit, double eta) {
     return exit == ExitTerm::Normalized ? normalizedExitScale(eta) : 1.0;
+}
+
+double surfaceRoughness(float optionRoughness, double fileRoughness) {
+    if (optionRoughness >= 0) return optionRoughness;
+    return fileRoughness >= 0 ? fileRoughness : kDefaultRoughness;
 }
 
 void validateRenderOptions(const RenderOptions& o) {

@@ -39,6 +39,10 @@ const char* exitTermName(ExitTerm exit);
 // The exit term's factor over Jensen's Ft/π for relative index eta.
 double exitScale(ExitTerm exit, double eta);
 
+// The lobe's roughness R of an object whose file gives `fileRoughness` (< 0:
+// none) under RenderOptions::roughness.
+double surfaceRoughness(float optionRoughness, double fileRoughness);
+
 // The light the profile lets out (render/energy_target.h): the semi-infinite
 // profile's own ∫Rd, or scaled up to what the finite closed object lets out.
 enum class EnergyTarget { SemiInfinite, Object };
@@ -102,10 +106,11 @@ struct RenderOptions {
     float key = 0.18f;
     ToneCurve tone = ToneCurve::Reinhard;
     Background background = Background::Color;
-    // The GGX lobe (physics/ggx.h): on, and its roughness R (α = R²); 0.3
-    // reads as polished marble or skin.
+    // The GGX lobe (physics/ggx.h): on, and its roughness R (α = R²) for
+    // every object; < 0 ("file"): each object's from its file where it has
+    // one, else kDefaultRoughness (0.3 reads as polished marble or skin).
     bool specular = true;
-    float roughness = 0.3f;
+    float roughness = -1.0f;
     // Composite samples per pixel along each axis (docs/design.md "The composite").
     int aa = 2;
     // Hybrid split (docs/design.md §4): Rp where Rd·2πr crosses rpBound; Wl's slope K (mm⁻¹).

@@ -54,6 +54,23 @@ RenderParam choice(RenderParam p, E RenderOptions::*field, E (*parse)(const std:
     return p;
 }
 
+// A number or "file" (stored as −1): the scene file's value per object,
+// else the default.
+template <typename T>
+RenderParam fileOrNumber(RenderParam p, T RenderOptions::*field, Range r) {
+    RenderParam n = number(std::move(p), field, r);
+    n.text = [field, text = n.text](const RenderOptions& o) {
+        return o.*field < 0 ? std::string("file") : text(o);
+    };
+    n.set = [field, set = n.set](RenderOptions& o, const std::string& value) {
+        if (value == "file")
+            o.*field = -1;
+        else
+            set(o, value);
+    };
+    return n;
+}
+
 // A flag: given, it sets its bool field to `whenGiven` ("--no-specular"
 // turns the highlight off, "--force" turns the cost bounds' override on).
 RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
@@ -244,9 +261,12 @@ std::vector<RenderParam> makeParams() {
                 "transparent (alpha 0 in the PNG) or env (the --env map through the camera)",
                 kEvery, kDisplay},
                &O::background, parseBackground, backgroundName, Background::Env),
-        number({"roughness", "R  the surface's GGX roughness (alpha = R^2), 0.05 to 1", kEvery,
-                kDisplay},
-               &O::roughness, {0.05, 1}),
+        fileOrNumber({"roughness",
+                      "R  the surface's GGX roughness (alpha = R^2), 0.05 to 1, for every "
+                      "object; file: each object's from its file (glTF roughnessFactor, OBJ "
+                      "Pr or Ns), 0.3 where it has none",
+                      kEvery, kDisplay},
+                     &O::roughness, {0.05, 1}),
         flag({"no-specular", "turn off the surface reflection (the GGX lobe)", kEvery, kDisplay},
              &O::specular, false),
         number({"aa", "N  N×N composite samples per pixel (antialiased silhouettes); 1 = off",

@@ -50,6 +50,9 @@ struct ObjectMaterial {
     glm::dvec3 albedo{0.0};  // what `medium` reflects in total (its profile's ∫Rd 2πr dr)
     std::shared_ptr<const AlbedoTexture> texture;  // null: none
     glm::dvec3 textureScale{1.0};                  // albedo = textureScale · texel
+    // The surface's GGX roughness R from the file, in [kMinRoughness, 1];
+    // < 0: none given (RenderOptions::roughness decides).
+    double roughness = -1.0;
 };
 
 struct Scene {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/ggx.h"
 #include "physics/material.h"
 #include "render/method.h"
 #include "util/error.h"
@@ -94,8 +95,14 @@ void settings(ViewState& s, const PanelInfo& info) {
     ImGui::SliderInt("N samples", &s.options.samples, 1, 16384, "%d", ImGuiSliderFlags_Logarithmic);
     s.options.samples = std::max(1, s.options.samples);
     // The display: one exposure for every frame (--auto-exposure re-exposes each).
-    ImGui::SliderFloat("roughness", &s.options.roughness, 0.05f, 1.0f, "%.2f");
-    s.options.roughness = std::clamp(s.options.roughness, 0.05f, 1.0f);
+    // Roughness: each object's from its file until the slider is moved, then
+    // one for all (the box turns back to the file's).
+    bool fromFile = s.options.roughness < 0;
+    if (ImGui::Checkbox("file roughness", &fromFile))
+        s.options.roughness = fromFile ? -1.0f : float(kDefaultRoughness);
+    float roughness = fromFile ? float(kDefaultRoughness) : s.options.roughness;
+    if (ImGui::SliderFloat("roughness", &roughness, float(kMinRoughness), 1.0f, "%.2f"))
+        s.options.roughness = std::clamp(roughness, float(kMinRoughness), 1.0f);
     ImGui::SliderFloat("exposure EV", &s.options.exposure, -10.0f, 10.0f, "%+.1f");
     s.options.exposure = std::clamp(s.options.exposure, -30.0f, 30.0f);
     resolutionCombo("atlas res", s.options.atlasResolution, 64, 4096, nullptr);
