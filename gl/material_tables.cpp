@@ -44,8 +44,27 @@ void MaterialTables::updateAlbedo(const std::vector<glm::vec3>& factor, int reso
     albedoVersion_ = version;
 }
 
-void MaterialTables::bind(const ShaderProgram& program, int unit) const {
-    TSIS_CHECK(mediaTexture_ && albedoTexture_);
+void MaterialTables::updateNormals(const std::vector<glm::vec3>& normal, int resolution,
+                                   uint64_t version) {
+    if (!normalTexture_) {  // bound even when unread, as the albedo's
+        normalTexture_ = std::make_unique<FloatTexture>(1, 1);
+        const float none[4] = {0, 0, 0, 0};
+        normalTexture_->upload(none);
+    }
+    normalMapped_ = !normal.empty();
+    if (!normalMapped_ || version == normalVersion_) return;
+    TSIS_CHECK_EQ(normal.size(), static_cast<size_t>(resolution) * resolution);
+    std::vector<float> rgba(normal.size() * 4, 0.0f);
+    for (size_t i = 0; i < normal.size(); ++i)
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = normal[i][c];
+    if (normalTexture_->width() != resolution || normalTexture_->height() != resolution)
+        normalTexture_ = std::make_unique<FloatTexture>(resolution, resolution);
+    normalTexture_->upload(rgba.data());
+    normalVersion_ = version;
+}
+
+void MaterialTables::bind(const ShaderProgram& program, int unit, int normalUnit) const {
+    TSIS_CHECK(mediaTexture_ && albedoTexture_ && normalTexture_);
     program.set("u_media", unit);
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     glBindTexture(GL_TEXTURE_2D, mediaTexture_->id());
@@ -53,6 +72,10 @@ void MaterialTables::bind(const ShaderProgram& program, int unit) const {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit + 1));
     glBindTexture(GL_TEXTURE_2D, albedoTexture_->id());
     program.set("u_textured", textured_ ? 1 : 0);
+    program.set("u_shadingNormal", normalUnit);
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(normalUnit));
+    glBindTexture(GL_TEXTURE_2D, normalTexture_->id());
+    program.set("u_normalMapped", normalMapped_ ? 1 : 0);
 }
 
 }  // namespace tsis

@@ -5,7 +5,8 @@
 //    prefiltered at it, so that objects of several materials are each lit
 //    and composited with their own;
 //  * per atlas texel, when the scene has one: the albedo factor
-//    (render/albedo_atlas.h) that scales the light entering there.
+//    (render/albedo_atlas.h) that scales the light entering there, and the
+//    shading normal of the normal maps (render/normal_atlas.h).
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -37,17 +38,21 @@ class MaterialTables {
     // The albedo factor per atlas texel (res², GL row order), or none
     // (`factor` empty); uploaded when `version` changed.
     void updateAlbedo(const std::vector<glm::vec3>& factor, int resolution, uint64_t version);
-    // Binds the tables to texture units `unit`, `unit` + 1 (common.glsl:
-    // u_media, u_albedo, u_textured).
-    void bind(const ShaderProgram& program, int unit) const;
+    // The shading normal per atlas texel (res², GL row order; (0, 0, 0): the
+    // geometry's), or none (`normal` empty); uploaded when `version` changed.
+    void updateNormals(const std::vector<glm::vec3>& normal, int resolution, uint64_t version);
+    // Binds the tables to texture units `unit`, `unit` + 1 and `normalUnit`
+    // (common.glsl: u_media, u_albedo, u_textured, u_shadingNormal,
+    // u_normalMapped).
+    void bind(const ShaderProgram& program, int unit, int normalUnit) const;
     // Whether the scene has an albedo factor (a program's TSIS_TEXTURED).
     bool textured() const { return textured_; }
 
   private:
     std::vector<MediumSurface> media_;
-    std::unique_ptr<FloatTexture> mediaTexture_, albedoTexture_;
-    bool textured_ = false;
-    uint64_t albedoVersion_ = 0;
+    std::unique_ptr<FloatTexture> mediaTexture_, albedoTexture_, normalTexture_;
+    bool textured_ = false, normalMapped_ = false;
+    uint64_t albedoVersion_ = 0, normalVersion_ = 0;
 };
 
 // Media per texture row (common.glsl mediumOf reads the same layout).

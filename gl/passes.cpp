@@ -12,9 +12,10 @@ namespace tsis {
 namespace {
 
 // Texture units: 0–3, 5, 8, 9 and 10 for a pass's own inputs, 4 for the
-// shadow map array, 6 and 7 for the material tables.
+// shadow map array, 6, 7 and 11 for the material tables.
 constexpr int kShadowUnit = 4;
 constexpr int kMediaUnit = 6;
+constexpr int kShadingNormalUnit = 11;
 constexpr int kBackgroundUnit = 12;
 // The supersampled pixels' slots a row (CompositePass::edgePixels_).
 constexpr int kEdgeColumns = 64;
@@ -138,7 +139,7 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
             // The array is drawn into, not read: no texture of it bound.
             glActiveTexture(GL_TEXTURE0 + kShadowUnit);
             glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-            media.bind(program_, kMediaUnit);
+            media.bind(program_, kMediaUnit, kShadingNormalUnit);
             program_.set("u_viewProj", lights[i].viewProj);
             program_.set("u_light", static_cast<int>(i));
             program_.set("u_tanHalf", lights[i].tanHalf);
@@ -182,7 +183,7 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
         programs_.get((envIrradiance != 0 ? 1u : 0u) | (media.textured() ? 2u : 0u));
     program.use();
     bindLights(program, lights, kShadowUnit, shadows);
-    media.bind(program, kMediaUnit);
+    media.bind(program, kMediaUnit, kShadingNormalUnit);
     bindTexture(program, "u_position", 0, geometry.color(0));
     bindTexture(program, "u_normal", 1, geometry.color(1));
     bindTexture(program, "u_envIrradiance", 2, envIrradiance);
@@ -206,7 +207,7 @@ void GBufferPass::start(const GpuMesh& mesh, const std::vector<LightView>& light
     if (outputs & kIrradiance) formats.push_back(GL_RGBA32F);
     if (outputs & kUv) formats.push_back(GL_RG32F);
     ensureTarget(targets_[current_], width, height, formats, true);
-    const Draw d{&mesh, &lights, &shadows, &media, viewProj, outputs, envIrradiance, cull};
+    const Draw d{&mesh, &lights, &shadows, &media, viewProj, outputs, envIrradiance, cull, eye_};
     GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(cull));
     if (!worker) {
         draw(d, programs_.get(outputs), 0, 0);
@@ -232,8 +233,9 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
         target.bindAndClearDepth(framebuffer);
     program.use();
     bindLights(program, *d.lights, kShadowUnit, *d.shadows);
-    d.media->bind(program, kMediaUnit);
+    d.media->bind(program, kMediaUnit, kShadingNormalUnit);
     program.set("u_viewProj", d.viewProj);
+    program.set("u_eye", d.eye);
     if (d.outputs & kIrradiance) {
         bindTexture(program, "u_envIrradiance", 0, d.envIrradiance);
         program.set("u_hasEnv", d.envIrradiance != 0 ? 1 : 0);
@@ -357,7 +359,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     for (const ShaderProgram* p : {&centre, &samples}) {
         p->use();
         bindLights(*p, lights, kShadowUnit, shadows);
-        materials.bind(*p, kMediaUnit);
+        materials.bind(*p, kMediaUnit, kShadingNormalUnit);
         p->set("u_eye", eye);
         p->set("u_envLayers", env.layers);
         p->set("u_worldToMap", env.worldToMap);

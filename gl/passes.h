@@ -115,6 +115,9 @@ class GBufferPass {
         start(mesh, lights, shadows, media, viewProj, width, height, outputs, envIrradiance, cull);
         finish();
     }
+    // The eye, for the normal maps' shading normals (kept where the eye
+    // sees them); the next start() draws from it.
+    void setEye(const glm::vec3& eye) { eye_ = eye; }
     // The arguments stay alive until finish().
     void start(const GpuMesh& mesh, const std::vector<LightView>& lights,
                const ShadowMapArray& shadows, const MaterialTables& media,
@@ -133,6 +136,7 @@ class GBufferPass {
         unsigned outputs;
         GLuint envIrradiance;
         bool cull;
+        glm::vec3 eye;
     };
     // `framebuffer` and `vertexArray`: a worker's (WorkerSide), 0 for this context's.
     void draw(const Draw& d, const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray);
@@ -145,6 +149,7 @@ class GBufferPass {
     int current_ = 0;
     bool clearColor_;
     bool started_ = false;  // on the worker, not yet finished
+    glm::vec3 eye_{0.0f};
     WorkerSide side_{"mesh.vert", "gbuffer.frag", kVariants};
 };
 

@@ -294,5 +294,64 @@ TEST(Materials, PlaneOfTwoAlbedoHalvesMatchesEachHalfsClosedForm) {
     }
 }
 
+// A normal map of one colour: every texel's tangent-space normal `t`.
+std::shared_ptr<AlbedoTexture> constantNormalMap(const glm::dvec3& t) {
+    auto map = std::make_shared<AlbedoTexture>();
+    map->name = "tilt";
+    map->image = ImageF{4, 4, 3, {}};
+    for (int i = 0; i < 16; ++i)
+        for (int c = 0; c < 3; ++c) map->image.pixels.push_back(float(0.5 * (t[c] + 1.0)));
+    return map;
+}
+
+// Normal maps (render/normal_atlas.h) turn the shading normal: on a plane
+// whose map tilts every normal by θ, the G-buffer's normal is the tilted one
+// (along the texture's u for +x, up the image for +y), and the radiosity is
+// the plane's own under a light θ off its normal, as the entry's cosine
+// says, ≠ the unmapped plane's under the same light.
+TEST(Materials, NormalMapTurnsTheShadingNormalAndTheEntry) {
+    const double theta = 25.0 * M_PI / 180.0;
+    Scene plain = test::planeScene("marble");
+    plain.mesh.texcoords = plain.mesh.uvs;  // builtin:plane's u runs along +x
+    // "Up the image": where the texture's v (downwards) decreases.
+    size_t low = 0, high = 0;
+    for (size_t v = 0; v < plain.mesh.texcoords.size(); ++v) {
+        if (plain.mesh.texcoords[v].y < plain.mesh.texcoords[low].y) low = v;
+        if (plain.mesh.texcoords[v].y > plain.mesh.texcoords[high].y) high = v;
+    }
+    glm::dvec3 up = glm::dvec3(plain.mesh.positions[low] - plain.mesh.positions[high]);
+    up = glm::normalize(up - glm::dvec3(0, up.y, 0));
+    ObjectMaterial o;
+    o.medium = plain.material;
+    o.albedo = albedoOf(o.medium, ProfileModel::Dipole);
+    RenderOptions opt = test::smallOptions(48, 512);
+    opt.aa = 1;
+    auto meanB = [](const FrameResult& f) { return test::meanCovered(f, f.radiosity); };
+    const glm::dvec3 n(0, 1, 0);
+    for (const glm::dvec3& axis : {glm::dvec3(1, 0, 0), up}) {
+        SCOPED_TRACE(axis == up ? "+y" : "+x");
+        Scene mapped = plain;
+        o.normalMap = constantNormalMap(axis == up ? glm::dvec3(0, std::sin(theta), std::cos(theta))
+                                                   : glm::dvec3(std::sin(theta), 0, std::cos(theta)));
+        mapped.objectMaterials = {o};
+        mapped.mesh.materialIds.assign(mapped.mesh.triangles.size(), 0);
+        const FrameResult f = test::renderWith(mapped, opt, "pyramid");
+        const glm::dvec3 tilted = std::sin(theta) * axis + std::cos(theta) * n;
+        double worst = 1;
+        test::forEachSurfacePixel(f, [&](int, int, const glm::dvec3&, const glm::dvec3& g) {
+            worst = std::min(worst, glm::dot(g, tilted));
+        });
+        EXPECT_GT(worst, 0.9995);
+        Scene turned = plain;
+        turned.lights[0].vec = glm::vec3(-(std::cos(theta) * n - std::sin(theta) * axis));
+        const glm::dvec3 b = meanB(f), expected = meanB(test::renderWith(turned, opt, "pyramid"));
+        const glm::dvec3 straight = meanB(test::renderWith(plain, opt, "pyramid"));
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(b[c] / expected[c], 1.0, 0.01) << c;
+            EXPECT_LT(b[c] / straight[c], 0.95) << c;  // the tilt shows
+        }
+    }
+}
+
 }  // namespace
 }  // namespace tsis

@@ -48,6 +48,17 @@ uniform bool u_textured;
 vec3 albedoFactor(vec2 atlasUv) {
     return u_textured ? texture(u_albedo, atlasUv).rgb : vec3(1.0);
 }
+// With u_normalMapped, the normal maps' shading normal of each atlas texel
+// (render/normal_atlas.h; (0, 0, 0) where none: the geometry's normal n).
+// Nearest, not bilinear: a texel beside one without a map keeps its own.
+uniform sampler2D u_shadingNormal;
+uniform bool u_normalMapped;
+vec3 shadingNormal(vec3 n, vec2 atlasUv) {
+    if (!u_normalMapped) return n;
+    ivec2 size = textureSize(u_shadingNormal, 0);
+    vec3 m = texelFetch(u_shadingNormal, clamp(ivec2(atlasUv * vec2(size)), ivec2(0), size - 1), 0).xyz;
+    return dot(m, m) > 0.0 ? m : n;
+}
 
 // Unit vector from p towards light i, and the 1/d² falloff of a point light.
 vec3 toLight(int i, vec3 p, out float falloff) {

@@ -15,7 +15,10 @@ void main() {
         return;
     }
     vec4 n = texelFetch(u_normal, px, 0);
-    vec3 e = irradiance(p.xyz, n.xyz, mediumOf(p.w).r);
+    // The entry's cosine at the normal map's normal (the texel's area stays
+    // the geometry's).
+    vec3 e = irradiance(p.xyz, shadingNormal(n.xyz, (vec2(px) + 0.5) / vec2(textureSize(u_normal, 0))),
+                        mediumOf(p.w).r);
 #if TSIS_ENV
     e += texelFetch(u_envIrradiance, px, 0).rgb;
 #endif

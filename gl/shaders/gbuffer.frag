@@ -4,6 +4,7 @@
 // (for camera-view methods such as LSS; the shadow taps cost most of the pass),
 // and with TSIS_GBUFFER_UV the pixel's atlas coordinates (the pyramid reads B
 // from its texture-space copy there, render/method_pyramid.h).
+uniform vec3 u_eye;
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
@@ -24,7 +25,17 @@ layout(location = 2) out vec2 o_uv;
 #endif
 
 void main() {
-    vec3 n = normalize(v_normal);
+    vec3 g = normalize(v_normal);
+    vec3 n = shadingNormal(g, v_uv);
+    if (u_normalMapped) {
+        // A mapped normal turned away from the eye (at grazing view): moved
+        // back to just inside the hemisphere of the side the eye sees (the
+        // composite shades that side), else its exit and lobe are dark.
+        vec3 v = normalize(u_eye - v_position);
+        float s = dot(g, v) < 0.0 ? -1.0 : 1.0;
+        float c = s * dot(n, v);
+        if (c < 0.05) n = normalize(n + s * (0.05 - c) * v);
+    }
     o_position = vec4(v_position, v_medium);
     // With an albedo atlas, the normal's w is the pixel's atlas texel + 1 (the
     // host reads its exit factor there, render/albedo_atlas.h), else 1.

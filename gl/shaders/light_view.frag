@@ -16,7 +16,7 @@ layout(location = 1) out vec4 o_position;
 layout(location = 2) out vec4 o_normal;
 
 void main() {
-    vec3 n = normalize(v_normal);
+    vec3 n = shadingNormal(normalize(v_normal), v_uv);
     float falloff;
     vec3 l = toLight(u_light, v_position, falloff);
     float c = dot(n, l);

@@ -46,6 +46,10 @@ struct FileMaterial {
     std::string texturePath;
     std::string textureBytes;   // empty: read texturePath
     bool textureSrgb = true;    // glTF base colour and 8-bit OBJ maps are sRGB
+    // The tangent-space normal map (glTF normalTexture, OBJ norm/map_Bump),
+    // as the albedo texture (linear, never sRGB), and its scale on x and y.
+    std::string normalMapPath, normalMapBytes;
+    double normalScale = 1.0;
     std::optional<double> eta;  // KHR_materials_ior, OBJ Ni
     // The surface's GGX roughness R (physics/ggx.h): glTF roughnessFactor
     // (1 where the file gives none, as glTF says), OBJ Pr, or OBJ Ns by
@@ -55,6 +59,12 @@ struct FileMaterial {
     // its colour becomes attenuationColor.
     std::optional<double> attenuationDistance;
     glm::dvec3 attenuationColor{1.0};
+    // KHR_materials_volume_scatter: the volume's multiple-scattering albedo
+    // (what a deep slab of it reflects: tsis' albedo) and the phase
+    // function's g; with it the attenuation above is extinction, σt, not
+    // absorption alone.
+    std::optional<glm::dvec3> multiscatterColor;
+    double scatterAnisotropy = 0.0;
     // tsis' own parameters (glTF extras {"tsis": {...}}, README "Scenes and
     // materials"): a preset name, σs′/σa (1/mm), or albedo + mean free path (mm).
     std::string preset;

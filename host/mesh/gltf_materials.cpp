@@ -41,6 +41,7 @@ struct Reader {
     const ImageBytes& images;
     KindCounts ignored;          // material features tsis does not use
     KindCounts droppedTextures;  // base colour textures not used, by why
+    KindCounts droppedNormals;   // normal maps likewise
 
     std::string materialName(size_t i) const {
         const std::string& n = model.materials[i].name;
@@ -77,65 +78,89 @@ struct Reader {
         return c;
     }
 
-    // The base colour texture: a path or the image's bytes; false (noted)
-    // when it cannot be used.
-    void baseTexture(FileMaterial& fm, size_t i) {
-        const tinygltf::TextureInfo& info =
-            model.materials[i].pbrMetallicRoughness.baseColorTexture;
-        if (info.index < 0) return;
-        if (info.index >= static_cast<int>(model.textures.size()))
-            bad(i, "baseColorTexture: texture ", info.index, " does not exist");
-        if (info.texCoord != 0) {
-            droppedTextures.add(concat("TEXCOORD_", info.texCoord, " (only TEXCOORD_0 is read)"));
-            return;
+    // What a material uses a texture for: its key in messages, what the
+    // material keeps without it, and where dropped ones are counted.
+    struct TextureUse {
+        const char* key;      // "baseColorTexture"
+        const char* without;  // "albedo factor only"
+        KindCounts& dropped;
+    };
+
+    // A texture's image: a path and its bytes (read through gltf.cpp's
+    // checked callback), or for one inside the file its bytes under a name;
+    // false (noted) when it cannot be used.
+    bool textureImage(int index, int texCoord, const tinygltf::ExtensionMap& extensions, size_t i,
+                      const TextureUse& use, std::string& path, std::string& bytes) {
+        if (index < 0) return false;
+        if (index >= static_cast<int>(model.textures.size()))
+            bad(i, use.key, ": texture ", index, " does not exist");
+        if (texCoord != 0) {
+            use.dropped.add(concat("TEXCOORD_", texCoord, " (only TEXCOORD_0 is read)"));
+            return false;
         }
-        if (info.extensions.count("KHR_texture_transform")) {
-            droppedTextures.add("KHR_texture_transform");
-            return;
+        if (extensions.count("KHR_texture_transform")) {
+            use.dropped.add("KHR_texture_transform");
+            return false;
         }
-        const tinygltf::Texture& t = model.textures[static_cast<size_t>(info.index)];
+        const tinygltf::Texture& t = model.textures[static_cast<size_t>(index)];
         if (t.source < 0) {
-            droppedTextures.add("no PNG or JPEG source (an extension's image format)");
-            return;
+            use.dropped.add("no PNG or JPEG source (an extension's image format)");
+            return false;
         }
         if (t.source >= static_cast<int>(model.images.size()))
-            bad(i, "baseColorTexture: image ", t.source, " does not exist");
+            bad(i, use.key, ": image ", t.source, " does not exist");
         const size_t img = static_cast<size_t>(t.source);
         const tinygltf::Image& image = model.images[img];
         if (!image.uri.empty()) {
             if (folder.empty()) {
-                droppedTextures.add("an external image, not read when parsing from memory");
-                return;
+                use.dropped.add("an external image, not read when parsing from memory");
+                return false;
             }
-            // tinygltf read the file through gltf.cpp's checked callback
-            // (inside the folder, a regular file): its bytes, or why not.
             const std::string uri = percentDecoded(image.uri);
-            const std::string path =
+            const std::string file =
                 (std::filesystem::path(folder) / uri).lexically_normal().string();
             if (img < images.size() && !images[img].empty()) {
-                fm.textureBytes = images[img];
-                fm.texturePath = path;
-                return;
+                bytes = images[img];
+                path = file;
+                return true;
             }
             std::string why = "could not be read";
             try {
                 why = notRegularFile(assetFile(folder, uri, "texture"));
                 if (why.empty()) why = "could not be read";
-                why = concat("texture '", path, "' ", why);
+                why = concat("texture '", file, "' ", why);
             } catch (const Error& e) {
                 why = e.what();
             }
-            note(name, concat("material '", materialName(i), "': ", why, ": albedo factor only"));
-            return;
+            note(name, concat("material '", materialName(i), "': ", why, ": ", use.without));
+            return false;
         }
         // In the file (a bufferView or a data URI): the bytes tinygltf handed over.
         if (img >= images.size() || images[img].empty()) {
-            note(name, concat("material '", materialName(i), "': image ", img,
-                              " has no data: albedo factor only"));
-            return;
+            note(name, concat("material '", materialName(i), "': image ", img, " has no data: ",
+                              use.without));
+            return false;
         }
-        fm.textureBytes = images[img];
-        fm.texturePath = concat(name, "#image", img);
+        bytes = images[img];
+        path = concat(name, "#image", img);
+        return true;
+    }
+
+    void baseTexture(FileMaterial& fm, size_t i) {
+        const tinygltf::TextureInfo& info =
+            model.materials[i].pbrMetallicRoughness.baseColorTexture;
+        textureImage(info.index, info.texCoord, info.extensions, i,
+                     {"baseColorTexture", "albedo factor only", droppedTextures}, fm.texturePath,
+                     fm.textureBytes);
+    }
+
+    // The tangent-space normal map (linear, not sRGB) and its scale.
+    void normalTexture(FileMaterial& fm, size_t i) {
+        const tinygltf::NormalTextureInfo& info = model.materials[i].normalTexture;
+        if (textureImage(info.index, info.texCoord, info.extensions, i,
+                         {"normalTexture", "no normal map", droppedNormals}, fm.normalMapPath,
+                         fm.normalMapBytes))
+            fm.normalScale = info.scale;
     }
 
     // extras: {"tsis": {...}}: tsis' own parameters, over the glTF's.
@@ -207,6 +232,21 @@ struct Reader {
                 // The mesh is the volume: thickness is for thin-walled stand-ins.
                 if (v.Has("thicknessFactor") || v.Has("thicknessTexture"))
                     ignored.add("KHR_materials_volume thickness");
+            } else if (ext == "KHR_materials_volume_scatter") {
+                // The extension's defaults: a black (absorbing) albedo, g 0.
+                fm.multiscatterColor =
+                    v.Has("multiscatterColor")
+                        ? triple(v.Get("multiscatterColor"), i,
+                                 "KHR_materials_volume_scatter.multiscatterColor", false)
+                        : glm::dvec3(0.0);
+                if (v.Has("scatterAnisotropy")) {
+                    const char* key = "KHR_materials_volume_scatter.scatterAnisotropy";
+                    const tinygltf::Value& g = v.Get("scatterAnisotropy");
+                    if (!g.IsNumber()) bad(i, key, ": expected a number");
+                    fm.scatterAnisotropy = g.GetNumberAsDouble();
+                    if (!(std::abs(fm.scatterAnisotropy) < 1))
+                        bad(i, key, " ", fm.scatterAnisotropy, " must lie in (-1, 1)");
+                }
             } else {
                 ignored.add(ext);
             }
@@ -215,7 +255,7 @@ struct Reader {
         // tinygltf gives glTF's default, 1, where the file has no factor.
         fm.roughness = pbr.roughnessFactor;
         if (pbr.metallicRoughnessTexture.index >= 0) ignored.add("metallicRoughnessTexture");
-        if (m.normalTexture.index >= 0) ignored.add("normalTexture");
+        normalTexture(fm, i);
         if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");
         if (m.emissiveTexture.index >= 0) ignored.add("emissiveTexture");
         if (m.emissiveFactor.size() == 3 &&
@@ -238,6 +278,8 @@ std::vector<FileMaterial> readMaterials(const tinygltf::Model& model, const std:
     if (!r.droppedTextures.empty())
         note(name, "base colour textures ignored (albedo factor only): " +
                        r.droppedTextures.list("materials"));
+    if (!r.droppedNormals.empty())
+        note(name, "normal maps ignored: " + r.droppedNormals.list("materials"));
     if (!r.ignored.empty())
         note(name, "material features ignored (materials using them): " + r.ignored.list("uses"));
     return out;

@@ -468,14 +468,16 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
       {"name": "Skin",
        "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.5, 0.4, 0.5],
                                 "baseColorTexture": {"index": 0}, "roughnessFactor": 0.25},
-       "normalTexture": {"index": 0},
+       "normalTexture": {"index": 0, "scale": 0.5},
        "extensions": {"KHR_materials_ior": {"ior": 1.4},
                       "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.01,
                                                "attenuationColor": [0.8, 0.3, 0.2]}},
        "extras": {"tsis": {"preset": "marble", "colour": 1}}},
       {"name": "Jade", "alphaMode": "BLEND",
        "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}},
-       "extensions": {"KHR_materials_clearcoat": {}},
+       "extensions": {"KHR_materials_clearcoat": {},
+                      "KHR_materials_volume_scatter": {"multiscatterColor": [0.7, 0.8, 0.6],
+                                                       "scatterAnisotropy": -0.25}},
        "extras": {"tsis": {"albedo": [0.9, 0.9, 0.9], "mfp": [1, 2, 3], "eta": 1.5}}},
       {"pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.3, 0.4, 1],
                                 "baseColorTexture": {"index": 0, "texCoord": 1}}}])";
@@ -514,7 +516,14 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
     EXPECT_EQ(view.materials[2].texturePath, "");  // TEXCOORD_1: noted
     // roughnessFactor, glTF's 1 where the file has none.
     EXPECT_EQ(skin.roughness, 0.25);
+    EXPECT_EQ(skin.normalMapPath, path + "#image0");  // the normal map: its bytes, its scale
+    EXPECT_EQ(skin.normalMapBytes, skin.textureBytes);
+    EXPECT_EQ(skin.normalScale, 0.5);
+    EXPECT_TRUE(jade.normalMapPath.empty());
     EXPECT_EQ(jade.roughness, 1.0);
+    EXPECT_EQ(jade.multiscatterColor, glm::dvec3(0.7, 0.8, 0.6));
+    EXPECT_EQ(jade.scatterAnisotropy, -0.25);
+    EXPECT_FALSE(skin.multiscatterColor.has_value());
     EXPECT_EQ(view.materials[2].roughness, 1.0);
 
     // Each triangle's material and texcoords: the first quad's are its
@@ -542,8 +551,8 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
                   "TEXCOORD_0 is read) (1)\n" +
                   n +
                   "material features ignored (materials using them): baseColorFactor alpha < 1 "
-                  "(1), KHR_materials_volume thickness (1), normalTexture (1), "
-                  "KHR_materials_clearcoat (1), alphaMode BLEND (1)\n" +
+                  "(1), KHR_materials_volume thickness (1), KHR_materials_clearcoat (1), "
+                  "alphaMode BLEND (1)\n" +
                   n + "extensions ignored: KHR_materials_variants\n");
 }
 
@@ -617,6 +626,13 @@ TEST(GLTF, BadMaterialValuesAreOneLineErrors) {
     EXPECT_THAT(
         load(R"({"name": "M", "pbrMetallicRoughness": {"baseColorTexture": {"index": 4}}})"),
         HasSubstr("material 'M': baseColorTexture: texture 4 does not exist"));
+    EXPECT_THAT(load(R"({"name": "M", "extensions": {"KHR_materials_volume_scatter":
+                                                      {"scatterAnisotropy": 1}}})"),
+                HasSubstr("material 'M': KHR_materials_volume_scatter.scatterAnisotropy 1 must "
+                          "lie in (-1, 1)"));
+    EXPECT_THAT(load(R"({"name": "M", "extensions": {"KHR_materials_volume_scatter":
+                                                      {"multiscatterColor": [1, -1, 0]}}})"),
+                HasSubstr("KHR_materials_volume_scatter.multiscatterColor[1] -1 must be finite"));
 }
 
 // A glTF's external images pass the checked open tinygltf reads them with:

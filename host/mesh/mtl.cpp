@@ -18,7 +18,7 @@ using namespace meshparse;
 // these and newmtl.
 bool isRead(std::string_view key) {
     return key == "newmtl" || key == "Kd" || key == "map_Kd" || key == "Ni" || key == "Pr" ||
-           key == "Ns";
+           key == "Ns" || key == "norm" || key == "map_Bump" || key == "bump";
 }
 
 // Blender's exporter writes Ns = (30 (1 − R))² (its importer inverts it):
@@ -108,33 +108,50 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             } else if (!physical.back()) {
                 out.back().roughness = roughnessOfPhongExponent(v);
             }
-        } else if (key == "map_Kd") {
+        } else if (key == "map_Kd" || key == "norm" || key == "map_Bump" || key == "bump") {
             FileMaterial& m = out.back();
-            if (tok.size() < 2) failLine(line, "material '", m.name, "': map_Kd needs a file");
+            const bool albedo = key == "map_Kd";
+            const char* without = albedo ? "albedo factor only" : "no normal map";
+            if (tok.size() < 2) failLine(line, "material '", m.name, "': ", key, " needs a file");
             // Options (-s, -o, -clamp, …) change how the map is laid on: not
-            // supported, so the map is not used rather than used wrongly.
-            if (tok[1].size() > 1 && tok[1][0] == '-') {
-                note(meshName, concat(where(line), ": material '", m.name, "': map_Kd option ",
-                                      tok[1], " not supported: texture ignored (Kd only)"));
+            // supported, so the map is not used rather than used wrongly; a
+            // normal map's -bm (its scale) is read.
+            size_t first = 1;
+            double scale = 1.0;
+            if (!albedo && tok.size() > 3 && tok[1] == "-bm") {
+                scale = number(tok[2], line, "-bm");
+                first = 3;
+            }
+            if (tok[first].size() > 1 && tok[first][0] == '-') {
+                note(meshName, concat(where(line), ": material '", m.name, "': ", key, " option ",
+                                      tok[first], " not supported: texture ignored (",
+                                      albedo ? "Kd only" : without, ")"));
                 continue;
             }
             // A file name may hold spaces, even doubled ones: the rest of the
-            // line as written, from its second token.
+            // line as written, from its token.
             const std::string file(
-                tok[1].data(),
-                static_cast<size_t>(tok.back().data() + tok.back().size() - tok[1].data()));
-            m.texturePath.clear();
+                tok[first].data(),
+                static_cast<size_t>(tok.back().data() + tok.back().size() - tok[first].data()));
+            std::string& path = albedo ? m.texturePath : m.normalMapPath;
+            path.clear();
             try {
-                m.texturePath = assetFile(folder.empty() ? "." : folder, file, "texture");
+                path = assetFile(folder.empty() ? "." : folder, file, "texture");
             } catch (const Error& e) {
-                note(meshName, concat(where(line), ": material '", m.name, "': ", e.what(),
-                                      ": albedo factor only"));
+                note(meshName,
+                     concat(where(line), ": material '", m.name, "': ", e.what(), ": ", without));
                 continue;
             }
-            if (const std::string why = notRegularFile(m.texturePath); !why.empty()) {
-                note(meshName, concat(where(line), ": material '", m.name, "': texture '",
-                                      m.texturePath, "' ", why, ": albedo factor only"));
-                m.texturePath.clear();
+            if (const std::string why = notRegularFile(path); !why.empty()) {
+                note(meshName, concat(where(line), ": material '", m.name, "': texture '", path,
+                                      "' ", why, ": ", without));
+                path.clear();
+                continue;
+            }
+            if (!albedo) {
+                if (!std::isfinite(scale))
+                    failLine(line, "material '", m.name, "': -bm ", scale, " must be finite");
+                m.normalScale = scale;
             }
         } else {
             ignored.add(key);
@@ -150,7 +167,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                               ") read as no index of refraction given: the default η"));
     if (!ignored.empty())
         note(meshName, concat("material library '", path, "': statements ignored: ", ignored.list(),
-                              " (read: newmtl, Kd, map_Kd, Ni, Pr, Ns)"));
+                              " (read: newmtl, Kd, map_Kd, Ni, Pr, Ns, norm, map_Bump)"));
     return out;
 }
 

@@ -1,7 +1,8 @@
 // Wavefront .mtl material libraries (an OBJ's mtllib): newmtl, Kd (albedo),
 // map_Kd (albedo texture), Ni (η) and the surface's roughness are read: Pr
 // (the PBR extension's R), else Ns by Blender's mapping R = 1 − √Ns / 30;
-// every other statement is one note per kind. The materials go to FileView::materials (file_view.h).
+// every other statement is one note per kind. The materials go to FileView::materials
+// (file_view.h).
 #pragma once
 
 #include <string>

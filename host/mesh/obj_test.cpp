@@ -224,7 +224,7 @@ TEST(OBJ, MaterialsFromMtlLibraries) {
                                  "texture ignored (Kd only)\n"));
     EXPECT_THAT(notes, HasSubstr(n + mtl +
                                  ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
-                                 "Kd, map_Kd, Ni, Pr, Ns)\n"));
+                                 "Kd, map_Kd, Ni, Pr, Ns, norm, map_Bump)\n"));
     EXPECT_THAT(notes, HasSubstr(n + "material library '" + dir.file("gone.mtl") + "' not found"));
     EXPECT_THAT(notes,
                 HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
@@ -334,6 +334,33 @@ TEST(OBJ, RoughnessFromPrOrNs) {
     dir.file("a/q.mtl", "newmtl m\nNs x\n");
     EXPECT_THAT(errorOf([&] { loadMesh(obj, &view); }, obj),
                 HasSubstr("material 'm': Ns: bad number 'x'"));
+}
+
+// Normal maps: norm, map_Bump and bump name one (the rest of the line),
+// map_Bump's -bm its scale; other options drop it with a note.
+TEST(OBJ, NormalMapsFromNormAndMapBump) {
+    test::ScratchDir dir;
+    std::filesystem::create_directories(dir.path() / "a");
+    dir.file("a/n m.png", "x");
+    dir.file("a/q.mtl",
+             "newmtl m\nnorm n m.png\nnewmtl b\nmap_Bump -bm 0.4 n m.png\nnewmtl o\nbump -o 1 1 "
+             "n m.png\nnewmtl k\nmap_Kd n m.png\n");
+    const std::string obj = quadUsing(dir, "a", "q.mtl");
+    FileView view;
+    testing::internal::CaptureStderr();
+    loadMesh(obj, &view);
+    const std::string notes = testing::internal::GetCapturedStderr();
+    ASSERT_EQ(view.materials.size(), 4u) << notes;
+    const std::string png = std::filesystem::canonical(dir.file("a/n m.png")).string();
+    EXPECT_EQ(view.materials[0].normalMapPath, png);
+    EXPECT_EQ(view.materials[0].normalScale, 1.0);
+    EXPECT_EQ(view.materials[1].normalMapPath, png);
+    EXPECT_EQ(view.materials[1].normalScale, 0.4);
+    EXPECT_TRUE(view.materials[2].normalMapPath.empty());
+    EXPECT_THAT(notes, HasSubstr("material 'o': bump option -o not supported: texture ignored "
+                                 "(no normal map)"));
+    EXPECT_TRUE(view.materials[3].normalMapPath.empty());  // an albedo map is not a normal map
+    EXPECT_EQ(view.materials[3].texturePath, png);
 }
 
 // An OBJ's library and its textures come from its folder only: "../", an

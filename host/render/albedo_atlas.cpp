@@ -9,10 +9,6 @@
 
 namespace tsis {
 
-namespace {
-
-// Bilinear, wrapping (glTF's default sampler, and OBJ's), image convention
-// (0, 0) = the top-left corner.
 glm::dvec3 sampleTexture(const ImageF& image, const glm::vec2& uv) {
     const double x = double(uv.x) * image.width - 0.5, y = double(uv.y) * image.height - 0.5;
     const double fx = std::floor(x), fy = std::floor(y);
@@ -27,6 +23,8 @@ glm::dvec3 sampleTexture(const ImageF& image, const glm::vec2& uv) {
     }
     return sum;
 }
+
+namespace {
 
 // Distance from c to the segment p–q.
 double segmentDistance(const glm::dvec2& c, const glm::dvec2& p, const glm::dvec2& q) {

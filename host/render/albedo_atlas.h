@@ -46,6 +46,10 @@ struct AlbedoAtlas {
     }
 };
 
+// A texture at texture coordinate uv: bilinear, wrapping (glTF's default
+// sampler, and OBJ's), image convention (0, 0) = the top-left corner.
+glm::dvec3 sampleTexture(const ImageF& image, const glm::vec2& uv);
+
 // The albedo a triangle of file material `id` shows at texture coordinate
 // `texcoord` (a texture's texel × its scale, else the material's albedo;
 // `defaultAlbedo` for kNoFileMaterial), each channel at most kMaxAlbedo.

@@ -61,9 +61,8 @@ std::vector<float> reflectionAlbedoTable(const std::vector<float>& etaOfMedium,
     parallelFor(etaOfMedium.size() * n, 8, [&](size_t begin, size_t end) {
         for (size_t k = begin; k < end; ++k) {
             const double s = static_cast<double>(k % n) / (n - 1);
-            const float a = static_cast<float>(
-                ggxDirectionalAlbedo(etaOfMedium[k / n], roughnessOfMedium[k / n],
-                                     std::max(s * s, 1e-4)));
+            const float a = static_cast<float>(ggxDirectionalAlbedo(
+                etaOfMedium[k / n], roughnessOfMedium[k / n], std::max(s * s, 1e-4)));
             std::fill_n(&out[k * 4], 4, a);
         }
     });

@@ -13,6 +13,7 @@
 #include "cl/cl_runtime.h"
 #include "physics/dipole.h"
 #include "render/albedo_atlas.h"
+#include "render/normal_atlas.h"
 #include "render/frame_graph.h"
 #include "render/frame_resources.h"
 #include "render/frame_stats.h"
@@ -37,6 +38,8 @@ struct FrameContext {
     const SceneMedia* media = nullptr;
     // The albedo factor per atlas texel (render/albedo_atlas.h; empty: none).
     const AlbedoAtlas* albedo = nullptr;
+    // The normal maps' shading normal per atlas texel (render/normal_atlas.h; empty: none).
+    const NormalAtlas* normals = nullptr;
     const RenderOptions* options = nullptr;
     ClRuntime* cl = nullptr;
     FrameStats* stats = nullptr;  // setup-time values; passes report through Resources

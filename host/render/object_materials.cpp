@@ -48,8 +48,9 @@ glm::dvec3 meanTexel(const ImageF& image) {
 }
 
 // The mean free path KHR_materials_volume implies with albedo `a`: σa per
-// channel from the attenuation (Beer), σs′/σt′ from the albedo; a channel
-// the file does not attenuate takes `fallback`'s.
+// channel from the attenuation (Beer), σs′/σt′ from the albedo; with
+// KHR_materials_volume_scatter the attenuation is σt (its g reduces it); a
+// channel the file does not attenuate takes `fallback`'s.
 std::optional<glm::dvec3> volumeMeanFreePath(const FileMaterial& f, const glm::dvec3& a, double eta,
                                              ProfileModel model, double mmPerFileUnit,
                                              const glm::dvec3& fallback, Inversions& inversions) {
@@ -57,11 +58,18 @@ std::optional<glm::dvec3> volumeMeanFreePath(const FileMaterial& f, const glm::d
     const Material unit = inversions.of("", a, glm::dvec3(1.0), eta, model);  // σs′ = α′
     glm::dvec3 mfp = fallback;
     bool any = false;
+    const double g = f.scatterAnisotropy;
     for (int c = 0; c < 3; ++c) {
         const double colour = f.attenuationColor[c];
         if (!(colour > 0 && colour < 1)) continue;
-        const double sigmaA = -std::log(colour) / (*f.attenuationDistance * mmPerFileUnit);
-        mfp[c] = (1.0 - unit.sigmaSPrime[c]) / sigmaA;  // 1/σt′ = (1 − α′)/σa
+        const double beer = -std::log(colour) / (*f.attenuationDistance * mmPerFileUnit);
+        if (f.multiscatterColor) {
+            // beer = σt: σt′ = σt (1 − α g), α = σs/σt = α′/(1 − g + α′ g).
+            const double alpha = unit.sigmaSPrime[c] / (1.0 - g + unit.sigmaSPrime[c] * g);
+            mfp[c] = 1.0 / (beer * (1.0 - alpha * g));
+        } else {
+            mfp[c] = (1.0 - unit.sigmaSPrime[c]) / beer;  // beer = σa: 1/σt′ = (1 − α′)/σa
+        }
         any = true;
     }
     if (any && !meanFreePathProblem(mfp).empty())
@@ -105,9 +113,13 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
         if (over.mfp)
             o.medium = inversions.of(name, albedoOf(o.medium, model), *over.mfp, eta, model);
     } else {
-        o.textureScale = f.albedo ? *f.albedo : glm::dvec3(1.0);
+        // The volume's own albedo first (a texture still varies it, as it
+        // would the base colour).
+        const std::optional<glm::dvec3> given =
+            f.multiscatterColor ? f.multiscatterColor : f.albedo;
+        o.textureScale = given ? *given : glm::dvec3(1.0);
         glm::dvec3 a = o.textureScale;
-        if (!f.albedo && !o.texture) a = albedoOf(fallback, model);
+        if (!given && !o.texture) a = albedoOf(fallback, model);
         if (o.texture) a *= meanTexel(o.texture->image);
         for (int c = 0; c < 3; ++c)
             if (!(a[c] <= kMaxAlbedo) || !(a[c] >= 1e-3)) {
@@ -136,6 +148,17 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
     }
     o.medium.name = name;
     o.albedo = albedoOf(o.medium, model);
+    if (!f.normalMapPath.empty()) {
+        try {
+            auto t = std::make_shared<AlbedoTexture>();
+            t->name = f.normalMapPath;
+            t->image = readColorTexture(f.normalMapPath, f.normalMapBytes, false);
+            o.normalMap = std::move(t);
+            o.normalScale = f.normalScale;
+        } catch (const Error& e) {
+            note(file, concat("material '", name, "': ", e.what(), ": no normal map"));
+        }
+    }
     if (f.roughness) {
         const double r = *f.roughness;
         if (!std::isfinite(r))

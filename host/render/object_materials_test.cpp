@@ -68,6 +68,35 @@ TEST(ObjectMaterials, VolumeAttenuationGivesTheMeanFreePath) {
     EXPECT_NEAR(o.albedo.x, 0.6, 1e-6);
 }
 
+// KHR_materials_volume_scatter: multiscatterColor is the albedo (over the
+// base colour), the attenuation is extinction: 1/σt′ = 1/(σt (1 − α g)).
+TEST(ObjectMaterials, VolumeScatterGivesTheAlbedoAndTheExtinction) {
+    FileMaterial f;
+    f.albedo = glm::dvec3(0.2);  // the base colour: not the volume's
+    f.multiscatterColor = glm::dvec3(0.8, 0.6, 0.4);
+    f.attenuationDistance = 0.01;  // 10 mm
+    f.attenuationColor = glm::dvec3(0.5, 0.25, 0.1);
+    for (double g : {0.0, 0.6, -0.3}) {
+        SCOPED_TRACE(g);
+        f.scatterAnisotropy = g;
+        const ObjectMaterial o = one(f)[0];
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(o.albedo[c], (*f.multiscatterColor)[c], 1e-6);
+            const double sigmaT = -std::log(f.attenuationColor[c]) / 10.0;
+            const double reduced = o.medium.sigmaSPrime[c] + o.medium.sigmaA[c];
+            // σa is the same in both; σs = σs′/(1 − g); together σt.
+            EXPECT_NEAR(o.medium.sigmaA[c] + o.medium.sigmaSPrime[c] / (1.0 - g), sigmaT,
+                        1e-9 * sigmaT);
+            if (g == 0) EXPECT_NEAR(reduced, sigmaT, 1e-9 * sigmaT);
+        }
+    }
+    // Without the extension the same attenuation is absorption: another medium.
+    FileMaterial plain = f;
+    plain.multiscatterColor.reset();
+    plain.scatterAnisotropy = 0;
+    EXPECT_NEAR(one(plain)[0].medium.sigmaA.x, std::log(2.0) / 10.0, 1e-9);
+}
+
 TEST(ObjectMaterials, CommandLineReplacesAllAndBadValuesAreErrors) {
     FileMaterial f;
     f.albedo = glm::dvec3(0.5);

@@ -90,6 +90,7 @@ uint64_t RasterPasses::samplesKey(const FrameContext& ctx) const {
 void RasterPasses::startSamples(const FrameContext& ctx, const GpuMesh& mesh,
                                 const GlLights& lights) {
     const int aa = ctx.options->aa;
+    sampleGbufferPass_.setEye(ctx.eye);
     sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
                              ctx.width * aa, ctx.height * aa, 0, 0, cullsBackFaces(ctx, mesh));
 }
@@ -148,6 +149,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         [this, &ctx, meshHash, h, media](FrameGraph::Resources& res) {
             materials_.updateMedia(media);
             materials_.updateAlbedo(ctx.albedo->factor, ctx.atlasResolution, ctx.albedo->key);
+            materials_.updateNormals(ctx.normals->normal, ctx.atlasResolution, ctx.normals->key);
             uploadMesh(ctx.scene->mesh, meshHash);
             res.write(h.mesh) = gpuMesh_.get();
         });
@@ -168,7 +170,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             // A big mesh's depth-only views from its coarser copy.
             const int lod = ctx.options->lightLodTriangles;
             const GpuMesh* depth = maps ? nullptr : depthMesh(ctx.scene->mesh, lod, res.stats());
-            const uint64_t shading = Hasher(eta).add(ctx.albedo->key).add(normals).digest();
+            const uint64_t shading =
+                Hasher(eta).add(ctx.albedo->key).add(ctx.normals->key).add(normals).digest();
             lights_.resize(lights.size());
             viewKeys_.resize(lights.size(), 0);
             std::vector<size_t> changed;
@@ -263,6 +266,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                                      (graph.isRead(ctx.pointUvs) ? GBufferPass::kUv : 0u);
             Hasher key;
             key.add(meshHash_).add(ctx.width).add(ctx.height).add(outputs).add(ctx.albedo->key);
+            key.add(ctx.normals->key);
             key.add(ctx.viewProj);
             if (irradiance) key.add(lighting).add(eta);
             // The composite's samples' G-buffer, when it is to be drawn too,
@@ -280,6 +284,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     irradiance && ctx.scene->env
                         ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
                         : 0;
+                gbufferPass_.setEye(ctx.eye);
                 gbufferPass_.run(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
                                  ctx.width, ctx.height, outputs, env, cullsBackFaces(ctx, mesh));
                 glFinish();

@@ -183,6 +183,22 @@ const AlbedoAtlas& Renderer::albedoAtlas(const Scene& scene, const SceneMedia& m
     return albedo_;
 }
 
+const NormalAtlas& Renderer::normalAtlas(const Scene& scene, const RenderOptions& opt,
+                                         uint64_t meshKey) {
+    Hasher h(meshKey);
+    h.add(opt.atlasResolution);
+    for (const ObjectMaterial& o : scene.objectMaterials) {
+        h.add(o.normalScale);
+        if (o.normalMap)
+            h.add(o.normalMap->name).add(o.normalMap->image.width).add(o.normalMap->image.height);
+    }
+    if (h.digest() != normalsOf_) {
+        normals_ = bakeNormalAtlas(scene, opt.atlasResolution);
+        normalsOf_ = h.digest();
+    }
+    return normals_;
+}
+
 const SceneMedia& Renderer::media(const Scene& scene, uint64_t meshKey) {
     // The weld once per mesh; the slots again only when a material changed
     // (not every frame: SceneMedia holds a per-vertex table) or a surface's
@@ -272,7 +288,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     const SceneMedia& sm = media(scene, mesh);
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
-    const uint64_t lighting = Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).digest();
+    ctx.normals = &normalAtlas(scene, opt, mesh);
+    const uint64_t lighting = Hasher(lightingKey(scene, opt, mesh))
+                                  .add(ctx.albedo->key)
+                                  .add(ctx.normals->key)
+                                  .digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();
     ctx.lighting = lighting;
     const uint64_t view = Hasher().add(ctx.viewProj).add(opt.width).add(opt.height).digest();

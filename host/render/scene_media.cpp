@@ -35,10 +35,9 @@ SceneMedia sceneMedia(const Scene& scene, Media media) {
         const uint32_t id = m < s.media.materialOf.size() ? s.media.materialOf[m] : kNoFileMaterial;
         s.slotOfMedium.push_back(slotOf(id));
         s.etaOfMedium.push_back(static_cast<float>(scene.materialOf(id).eta));
-        s.roughnessOfMedium.push_back(
-            id < scene.objectMaterials.size()
-                ? static_cast<float>(scene.objectMaterials[id].roughness)
-                : -1.0f);
+        s.roughnessOfMedium.push_back(id < scene.objectMaterials.size()
+                                          ? static_cast<float>(scene.objectMaterials[id].roughness)
+                                          : -1.0f);
     }
     if (s.slotMaterial.empty()) s.slotMaterial.push_back(kNoFileMaterial);
     const Mesh& mesh = scene.mesh;

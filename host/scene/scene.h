@@ -53,6 +53,11 @@ struct ObjectMaterial {
     // The surface's GGX roughness R from the file, in [kMinRoughness, 1];
     // < 0: none given (RenderOptions::roughness decides).
     double roughness = -1.0;
+    // A tangent-space normal map (+x along the texture's u, +y up the image,
+    // glTF's convention; linear RGB), its x and y scaled by normalScale;
+    // null: none (render/normal_atlas.h bakes it per atlas texel).
+    std::shared_ptr<const AlbedoTexture> normalMap;
+    double normalScale = 1.0;
 };
 
 struct Scene {
