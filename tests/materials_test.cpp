@@ -331,8 +331,9 @@ TEST(Materials, NormalMapTurnsTheShadingNormalAndTheEntry) {
     for (const glm::dvec3& axis : {glm::dvec3(1, 0, 0), up}) {
         SCOPED_TRACE(axis == up ? "+y" : "+x");
         Scene mapped = plain;
-        o.normalMap = constantNormalMap(axis == up ? glm::dvec3(0, std::sin(theta), std::cos(theta))
-                                                   : glm::dvec3(std::sin(theta), 0, std::cos(theta)));
+        o.normalMap =
+            constantNormalMap(axis == up ? glm::dvec3(0, std::sin(theta), std::cos(theta))
+                                         : glm::dvec3(std::sin(theta), 0, std::cos(theta)));
         mapped.objectMaterials = {o};
         mapped.mesh.materialIds.assign(mapped.mesh.triangles.size(), 0);
         const FrameResult f = test::renderWith(mapped, opt, "pyramid");

@@ -110,6 +110,7 @@ TEST_F(View, ProgressiveFramesAccumulateAsRenderDoes) {
     const std::string opts = kSmall + "--method tsis --samples 64 ";
     RunResult r = view(opts + "--stats " + d + "/s.json", "frame 3\naov " + d + "/view\nclose\n");
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(d + "/s.json").find("\"frame_ms_p99\": "), std::string::npos);
     EXPECT_NE(readFile(d + "/s.json").find("\"accumulated_frames\": 4"), std::string::npos)
         << readFile(d + "/s.json");
     ASSERT_EQ(runTsis("render " + opts + "--frames 4 --progressive --aov " + d + "/render -o " + d +

@@ -117,8 +117,8 @@ void settings(ViewState& s, const PanelInfo& info) {
 }
 
 void frameLine(const PanelInfo& info) {
-    ImGui::Text("%.1f fps   frame %.1f ms   %d frame%s averaged", info.fps,
-                info.stats ? info.stats->stageMs("total") : 0.0, info.accumulated,
+    ImGui::Text("%.1f fps   frame %.1f ms (p99 %.1f)   %d frame%s averaged", info.fps,
+                info.stats ? info.stats->stageMs("total") : 0.0, info.frameMsP99, info.accumulated,
                 info.accumulated == 1 ? "" : "s");
     if (!info.frameProgress.label.empty()) progressLine(info.frameProgress, "frame");
     if (!info.frameError.empty()) errorText(info.frameError);

@@ -19,7 +19,8 @@ struct PanelInfo {
     // The file's materials (fileMaterialLines), shown beside the sliders'.
     std::vector<std::string> fileMaterials;
     bool sceneMaterialUsed = true;
-    double fps = 0;  // frames rendered per second, lately
+    double fps = 0;         // frames rendered per second, lately
+    double frameMsP99 = 0;  // the session's 99th-percentile frame (renderer ms)
     int accumulated = 0;
     const FrameStats* stats = nullptr;  // the last frame's
     std::string frameError;

@@ -12,6 +12,7 @@
 #include <deque>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "compare/heatmap.h"
 #include "compare/image_compare.h"
@@ -31,6 +32,14 @@
 namespace tsis {
 
 namespace {
+
+// The nearest-rank q-quantile of `values` (0 when empty).
+double percentile(std::vector<double> values, double q) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const auto rank = static_cast<size_t>(std::ceil(q * static_cast<double>(values.size())));
+    return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -152,6 +161,7 @@ class Viewer {
     int framesRendered_ = 0;
     Clock::time_point firstFrame_, lastFrame_;
     std::deque<Clock::time_point> recentFrames_;
+    std::vector<double> frameMs_;  // every frame's total, for its percentiles
     long long uiUpdates_ = 0;
     Clock::time_point start_ = Clock::now(), bucketStart_ = start_;
     int bucketUpdates_ = 0;
@@ -293,6 +303,7 @@ void Viewer::onFrame(FrameDone done) {
     }
     frameError_.clear();
     frame_ = std::move(done.frame);
+    frameMs_.push_back(frame_.stats.stageMs("total"));
     shown_ = submitted_;
     accumulated_ = accumulatedFrames(frame_.stats);
     window_.upload(0, frame_.width, frame_.height, frame_.rgb8);
@@ -465,6 +476,7 @@ void Viewer::panel() {
                            objects_, ")");
     } else
         info.mesh = "loading " + meshTaskSpec_;
+    info.frameMsP99 = percentile(frameMs_, 0.99);
     if (recentFrames_.size() > 1)
         info.fps = double(recentFrames_.size() - 1) /
                    std::max(1e-9, secondsBetween(recentFrames_.front(), recentFrames_.back()));
@@ -666,6 +678,12 @@ ViewerResult Viewer::run() {
     stats["ui_updates_per_s"] = seconds > 0 ? uiUpdates_ / seconds : 0.0;
     stats["min_ui_updates_per_s_while_busy"] =
         minBusyUpdatesPerS_ < 0 ? Json() : Json(minBusyUpdatesPerS_);
+    // Spikes: a session's frames by their renderer time (p99 against the median).
+    if (!frameMs_.empty()) {
+        stats["frame_ms_median"] = percentile(frameMs_, 0.5);
+        stats["frame_ms_p99"] = percentile(frameMs_, 0.99);
+        stats["frame_ms_max"] = percentile(frameMs_, 1.0);
+    }
     if (relRmse_) stats["reference_rel_rmse"] = *relRmse_;
     if (truth_) stats["truth_check_rel_rmse"] = truth_->subtracted;
     if (frame_.width > 0) stats["last_frame"] = frame_.stats.toJson();
