@@ -25,42 +25,42 @@ void MaterialTables::updateMedia(const std::vector<MediumSurface>& media) {
     media_ = media;
 }
 
+namespace {
+
+// A table of one vec3 per atlas texel as an RGBA texture (a = `fill`, as
+// the 1×1 texture of `fill` made while there is none: a sampler needs a
+// texture even where it is not read). Returns whether `values` has any.
+bool updateTexelTable(std::unique_ptr<FloatTexture>& texture, uint64_t& uploaded,
+                      const std::vector<glm::vec3>& values, int resolution, uint64_t version,
+                      float fill) {
+    if (!texture) {
+        texture = std::make_unique<FloatTexture>(1, 1);
+        const float none[4] = {fill, fill, fill, fill};
+        texture->upload(none);
+    }
+    if (values.empty() || version == uploaded) return !values.empty();
+    TSIS_CHECK_EQ(values.size(), static_cast<size_t>(resolution) * resolution);
+    std::vector<float> rgba(values.size() * 4, fill);
+    for (size_t i = 0; i < values.size(); ++i)
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = values[i][c];
+    if (texture->width() != resolution || texture->height() != resolution)
+        texture = std::make_unique<FloatTexture>(resolution, resolution);
+    texture->upload(rgba.data());
+    uploaded = version;
+    return true;
+}
+
+}  // namespace
+
 void MaterialTables::updateAlbedo(const std::vector<glm::vec3>& factor, int resolution,
                                   uint64_t version) {
-    if (!albedoTexture_) {  // bound even when unread: a sampler needs a texture
-        albedoTexture_ = std::make_unique<FloatTexture>(1, 1);
-        const float one[4] = {1, 1, 1, 1};
-        albedoTexture_->upload(one);
-    }
-    textured_ = !factor.empty();
-    if (!textured_ || version == albedoVersion_) return;
-    TSIS_CHECK_EQ(factor.size(), static_cast<size_t>(resolution) * resolution);
-    std::vector<float> rgba(factor.size() * 4, 1.0f);
-    for (size_t i = 0; i < factor.size(); ++i)
-        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = factor[i][c];
-    if (albedoTexture_->width() != resolution || albedoTexture_->height() != resolution)
-        albedoTexture_ = std::make_unique<FloatTexture>(resolution, resolution);
-    albedoTexture_->upload(rgba.data());
-    albedoVersion_ = version;
+    textured_ = updateTexelTable(albedoTexture_, albedoVersion_, factor, resolution, version, 1.0f);
 }
 
 void MaterialTables::updateNormals(const std::vector<glm::vec3>& normal, int resolution,
                                    uint64_t version) {
-    if (!normalTexture_) {  // bound even when unread, as the albedo's
-        normalTexture_ = std::make_unique<FloatTexture>(1, 1);
-        const float none[4] = {0, 0, 0, 0};
-        normalTexture_->upload(none);
-    }
-    normalMapped_ = !normal.empty();
-    if (!normalMapped_ || version == normalVersion_) return;
-    TSIS_CHECK_EQ(normal.size(), static_cast<size_t>(resolution) * resolution);
-    std::vector<float> rgba(normal.size() * 4, 0.0f);
-    for (size_t i = 0; i < normal.size(); ++i)
-        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = normal[i][c];
-    if (normalTexture_->width() != resolution || normalTexture_->height() != resolution)
-        normalTexture_ = std::make_unique<FloatTexture>(resolution, resolution);
-    normalTexture_->upload(rgba.data());
-    normalVersion_ = version;
+    normalMapped_ =
+        updateTexelTable(normalTexture_, normalVersion_, normal, resolution, version, 0.0f);
 }
 
 void MaterialTables::bind(const ShaderProgram& program, int unit, int normalUnit) const {

@@ -280,6 +280,16 @@ std::string quadUsing(const test::ScratchDir& dir, const std::string& folder,
                                            "1\nusemtl m\nf 1/1 2/2 3/3\n");
 }
 
+// Writes `mtl` as a/q.mtl (the library of `obj`, quadUsing's), loads `obj`
+// into `view`; returns the notes.
+std::string loadWithLibrary(const test::ScratchDir& dir, const std::string& obj,
+                            const std::string& mtl, FileView& view) {
+    dir.file("a/q.mtl", mtl);
+    testing::internal::CaptureStderr();
+    loadMesh(obj, &view);
+    return testing::internal::GetCapturedStderr();
+}
+
 // Exporters' habits read as they mean them: a UTF-8 BOM before the first
 // newmtl, Ni 1 for "no index given" (the default η, noted), a map_Kd name
 // with doubled spaces kept as written.
@@ -313,14 +323,13 @@ TEST(OBJ, MtlQuirksAreReadAsExportersMeanThem) {
 TEST(OBJ, RoughnessFromPrOrNs) {
     test::ScratchDir dir;
     std::filesystem::create_directories(dir.path() / "a");
-    dir.file("a/q.mtl",
-             "newmtl m\nNs 225\nnewmtl pr\nNs 900\nPr 0.7\nnewmtl first\nPr 0.2\nNs 0\n"
-             "newmtl none\nKd 1 1 1\nnewmtl sharp\nNs 1000\n");
     const std::string obj = quadUsing(dir, "a", "q.mtl");
     FileView view;
-    testing::internal::CaptureStderr();
-    loadMesh(obj, &view);
-    const std::string notes = testing::internal::GetCapturedStderr();
+    const std::string notes =
+        loadWithLibrary(dir, obj,
+                        "newmtl m\nNs 225\nnewmtl pr\nNs 900\nPr 0.7\nnewmtl first\nPr 0.2\nNs 0\n"
+                        "newmtl none\nKd 1 1 1\nnewmtl sharp\nNs 1000\n",
+                        view);
     ASSERT_EQ(view.materials.size(), 5u) << notes;
     EXPECT_DOUBLE_EQ(*view.materials[0].roughness, 0.5);  // (30 · 0.5)² = 225
     EXPECT_EQ(view.materials[1].roughness, 0.7);
@@ -342,14 +351,13 @@ TEST(OBJ, NormalMapsFromNormAndMapBump) {
     test::ScratchDir dir;
     std::filesystem::create_directories(dir.path() / "a");
     dir.file("a/n m.png", "x");
-    dir.file("a/q.mtl",
-             "newmtl m\nnorm n m.png\nnewmtl b\nmap_Bump -bm 0.4 n m.png\nnewmtl o\nbump -o 1 1 "
-             "n m.png\nnewmtl k\nmap_Kd n m.png\n");
     const std::string obj = quadUsing(dir, "a", "q.mtl");
     FileView view;
-    testing::internal::CaptureStderr();
-    loadMesh(obj, &view);
-    const std::string notes = testing::internal::GetCapturedStderr();
+    const std::string notes = loadWithLibrary(
+        dir, obj,
+        "newmtl m\nnorm n m.png\nnewmtl b\nmap_Bump -bm 0.4 n m.png\nnewmtl o\nbump -o 1 1 "
+        "n m.png\nnewmtl k\nmap_Kd n m.png\n",
+        view);
     ASSERT_EQ(view.materials.size(), 4u) << notes;
     const std::string png = std::filesystem::canonical(dir.file("a/n m.png")).string();
     EXPECT_EQ(view.materials[0].normalMapPath, png);
