@@ -44,8 +44,8 @@ struct FileMaterial {
     // against the file's folder, or for an image inside the file (glb, data
     // URI) its encoded bytes with `texturePath` naming it for messages.
     std::string texturePath;
-    std::string textureBytes;   // empty: read texturePath
-    bool textureSrgb = true;    // glTF base colour and 8-bit OBJ maps are sRGB
+    std::string textureBytes;  // empty: read texturePath
+    bool textureSrgb = true;   // glTF base colour and 8-bit OBJ maps are sRGB
     // The tangent-space normal map (glTF normalTexture, OBJ norm/map_Bump),
     // as the albedo texture (linear, never sRGB), and its scale on x and y.
     std::string normalMapPath, normalMapBytes;

@@ -137,8 +137,8 @@ struct Reader {
         }
         // In the file (a bufferView or a data URI): the bytes tinygltf handed over.
         if (img >= images.size() || images[img].empty()) {
-            note(name, concat("material '", materialName(i), "': image ", img, " has no data: ",
-                              use.without));
+            note(name, concat("material '", materialName(i), "': image ", img,
+                              " has no data: ", use.without));
             return false;
         }
         bytes = images[img];

@@ -41,7 +41,8 @@ std::vector<glm::vec4> vertexTangents(const Mesh& mesh) {
         const glm::dvec3 tv = t[v] - nv * glm::dot(nv, t[v]);
         if (!(glm::length(tv) > 1e-12)) continue;
         const glm::dvec3 unit = glm::normalize(tv);
-        out[v] = glm::vec4(glm::vec3(unit), glm::dot(glm::cross(nv, unit), b[v]) < 0 ? -1.0f : 1.0f);
+        out[v] =
+            glm::vec4(glm::vec3(unit), glm::dot(glm::cross(nv, unit), b[v]) < 0 ? -1.0f : 1.0f);
     }
     return out;
 }
@@ -102,8 +103,8 @@ NormalAtlas bakeNormalAtlas(const Scene& scene, int resolution) {
                     tv = glm::normalize(tv);
                     const glm::dvec3 bv = glm::cross(nv, tv) * (hand < 0 ? -1.0 : 1.0);
                     const glm::dvec3 c = sampleTexture(m->normalMap->image, tc) * 2.0 - 1.0;
-                    const glm::dvec3 turned = tv * (c.x * m->normalScale) +
-                                              bv * (c.y * m->normalScale) + nv * c.z;
+                    const glm::dvec3 turned =
+                        tv * (c.x * m->normalScale) + bv * (c.y * m->normalScale) + nv * c.z;
                     // A map pointing into the surface (or none): the geometry's.
                     if (glm::length(turned) > 1e-9 && glm::dot(turned, nv) > 0)
                         shading = glm::normalize(turned);

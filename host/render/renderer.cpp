@@ -289,10 +289,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
     ctx.normals = &normalAtlas(scene, opt, mesh);
-    const uint64_t lighting = Hasher(lightingKey(scene, opt, mesh))
-                                  .add(ctx.albedo->key)
-                                  .add(ctx.normals->key)
-                                  .digest();
+    const uint64_t lighting =
+        Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).add(ctx.normals->key).digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();
     ctx.lighting = lighting;
     const uint64_t view = Hasher().add(ctx.viewProj).add(opt.width).add(opt.height).digest();
