@@ -38,6 +38,17 @@ class Inversions {
     std::map<std::array<double, 8>, Material> made_;
 };
 
+// Whether every texel is grey (r = g = b): a height map, not a normal map.
+bool isGrey(const ImageF& image) {
+    if (image.channels < 3) return true;
+    const size_t n = static_cast<size_t>(image.width) * image.height;
+    for (size_t i = 0; i < n; ++i) {
+        const float* p = &image.pixels[i * static_cast<size_t>(image.channels)];
+        if (p[0] != p[1] || p[1] != p[2]) return false;
+    }
+    return true;
+}
+
 // The mean of a texture's texels.
 glm::dvec3 meanTexel(const ImageF& image) {
     glm::dvec3 sum(0.0);
@@ -153,7 +164,12 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
             auto t = std::make_shared<AlbedoTexture>();
             t->name = f.normalMapPath;
             t->image = readColorTexture(f.normalMapPath, f.normalMapBytes, false);
-            o.normalMap = std::move(t);
+            if (isGrey(t->image))  // an OBJ's bump is often a height map
+                note(file, concat("material '", name, "': normal map '", f.normalMapPath,
+                                  "' is grey (a height map?): not used (tsis reads tangent-space "
+                                  "normal maps)"));
+            else
+                o.normalMap = std::move(t);
             o.normalScale = f.normalScale;
         } catch (const Error& e) {
             note(file, concat("material '", name, "': ", e.what(), ": no normal map"));

@@ -4,7 +4,9 @@
 
 #include <cmath>
 
+#include "image/image_io.h"
 #include "render/albedo_inversion.h"
+#include "support/scratch_dir.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -95,6 +97,34 @@ TEST(ObjectMaterials, VolumeScatterGivesTheAlbedoAndTheExtinction) {
     plain.multiscatterColor.reset();
     plain.scatterAnisotropy = 0;
     EXPECT_NEAR(one(plain)[0].medium.sigmaA.x, std::log(2.0) / 10.0, 1e-9);
+}
+
+// A normal map is read linear, with its scale; a grey one (an OBJ's bump as
+// a height map) is noted and not used; one that cannot be read is a note.
+TEST(ObjectMaterials, NormalMapsAreReadAndHeightMapsRefused) {
+    test::ScratchDir dir;
+    writeImage8(dir.file("n.png"), 1, 1, 3, {128, 128, 255});
+    writeImage8(dir.file("h.png"), 1, 1, 3, {200, 200, 200});
+    FileMaterial f;
+    f.name = "m";
+    f.normalMapPath = dir.file("n.png");
+    f.normalScale = 0.7;
+    testing::internal::CaptureStderr();
+    const ObjectMaterial o = one(f)[0];
+    EXPECT_EQ(testing::internal::GetCapturedStderr().find("normal map"), std::string::npos);
+    ASSERT_TRUE(o.normalMap);
+    EXPECT_NEAR(o.normalMap->image.pixels[0], 128.0 / 255.0, 1e-6);  // linear, not sRGB
+    EXPECT_EQ(o.normalScale, 0.7);
+    for (const char* bad : {"h.png", "missing.png"}) {
+        f.normalMapPath = dir.file(bad);
+        testing::internal::CaptureStderr();
+        EXPECT_FALSE(one(f)[0].normalMap) << bad;
+        const std::string notes = testing::internal::GetCapturedStderr();
+        EXPECT_NE(notes.find(std::string(bad) == "h.png" ? "is grey (a height map?): not used"
+                                                         : "no normal map"),
+                  std::string::npos)
+            << notes;
+    }
 }
 
 TEST(ObjectMaterials, CommandLineReplacesAllAndBadValuesAreErrors) {
