@@ -254,6 +254,10 @@ struct Reader {
         const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
         // tinygltf gives glTF's default, 1, where the file has no factor.
         fm.roughness = pbr.roughnessFactor;
+        // A metal: tsis' surfaces are dielectric (only a factor the file
+        // gives counts; glTF's default, 1, is rarely meant).
+        if (pbr.metallicFactor > 0 && m.values.count("metallicFactor"))
+            ignored.add("metallicFactor > 0 (dielectric surfaces only)");
         if (pbr.metallicRoughnessTexture.index >= 0) ignored.add("metallicRoughnessTexture");
         normalTexture(fm, i);
         if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");

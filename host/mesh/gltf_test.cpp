@@ -467,7 +467,8 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
     const std::string materials = R"([
       {"name": "Skin",
        "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.5, 0.4, 0.5],
-                                "baseColorTexture": {"index": 0}, "roughnessFactor": 0.25},
+                                "baseColorTexture": {"index": 0}, "roughnessFactor": 0.25,
+                                "metallicFactor": 0.5},
        "normalTexture": {"index": 0, "scale": 0.5},
        "extensions": {"KHR_materials_ior": {"ior": 1.4},
                       "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.01,
@@ -541,19 +542,20 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
         }
 
     const std::string n = "tsis: note: mesh '" + path + "': ";
-    EXPECT_EQ(notes,
-              n +
-                  "material 'Skin': extras.tsis keys ignored: colour (read: preset, sigma_s, "
-                  "sigma_a, albedo, mfp, eta)\n" +
-                  n + "material 'Jade': texture '" + dir.file("missing.png") +
-                  "' not found: albedo factor only\n" + n +
-                  "base colour textures ignored (albedo factor only): TEXCOORD_1 (only "
-                  "TEXCOORD_0 is read) (1)\n" +
-                  n +
-                  "material features ignored (materials using them): baseColorFactor alpha < 1 "
-                  "(1), KHR_materials_volume thickness (1), KHR_materials_clearcoat (1), "
-                  "alphaMode BLEND (1)\n" +
-                  n + "extensions ignored: KHR_materials_variants\n");
+    EXPECT_EQ(
+        notes,
+        n +
+            "material 'Skin': extras.tsis keys ignored: colour (read: preset, sigma_s, "
+            "sigma_a, albedo, mfp, eta)\n" +
+            n + "material 'Jade': texture '" + dir.file("missing.png") +
+            "' not found: albedo factor only\n" + n +
+            "base colour textures ignored (albedo factor only): TEXCOORD_1 (only "
+            "TEXCOORD_0 is read) (1)\n" +
+            n +
+            "material features ignored (materials using them): baseColorFactor alpha < 1 "
+            "(1), KHR_materials_volume thickness (1), metallicFactor > 0 (dielectric surfaces "
+            "only) (1), KHR_materials_clearcoat (1), alphaMode BLEND (1)\n" +
+            n + "extensions ignored: KHR_materials_variants\n");
 }
 
 TEST(GLTF, TexturedPrimitiveWithoutTexcoordsIsNoted) {
