@@ -678,11 +678,12 @@ TEST(GLTF, ExternalImagesAreReadCheckedAndDecoded) {
             const FileMaterial m = load(uri, notes);
             const bool device = uri == "zero.png" || uri == "fifo.png";
             EXPECT_EQ(m.textureBytes.empty(), !allowed || device) << uri << " " << allowed;
-            if (m.textureBytes.empty())
+            if (m.textureBytes.empty()) {
                 EXPECT_THAT(notes, ::testing::HasSubstr(allowed || uri == "fifo.png"
                                                             ? "not a regular file"
                                                             : "lies outside the asset's folder"))
                     << uri;
+            }
         }
     }
     setOutsideAssetsAllowed(false);
