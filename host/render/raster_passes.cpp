@@ -51,7 +51,10 @@ struct MediumRoughness {
 };
 MediumRoughness mediumRoughness(const FrameContext& ctx) {
     MediumRoughness r;
-    for (float file : ctx.media->roughnessOfMedium) {
+    const std::vector<ObjectMaterial>& files = ctx.scene->objectMaterials;
+    for (size_t m = 0; m < ctx.media->etaOfMedium.size(); ++m) {
+        const uint32_t id = ctx.media->fileMaterialOfMedium(m);
+        const double file = id < files.size() ? files[id].roughness : -1.0;
         const auto v = static_cast<float>(surfaceRoughness(ctx.options->roughness, file));
         auto it = std::find(r.layers.begin(), r.layers.end(), v);
         if (it == r.layers.end()) it = r.layers.insert(r.layers.end(), v);

@@ -201,11 +201,9 @@ const NormalAtlas& Renderer::normalAtlas(const Scene& scene, const RenderOptions
 
 const SceneMedia& Renderer::media(const Scene& scene, uint64_t meshKey) {
     // The weld once per mesh; the slots again only when a material changed
-    // (not every frame: SceneMedia holds a per-vertex table) or a surface's
-    // roughness did (which nothing scattered depends on).
+    // (not every frame: SceneMedia holds a per-vertex table).
     Hasher h(meshKey);
     hashMaterials(h, scene);
-    for (const ObjectMaterial& o : scene.objectMaterials) h.add(o.roughness);
     const uint64_t key = h.digest();
     if (!media_ || key != mediaOf_) {
         media_ = std::make_unique<SceneMedia>(sceneMedia(scene, findMedia(scene.mesh)));

@@ -9,6 +9,10 @@ uint32_t SceneMedia::slotOfTag(float tag) const {
     return tag >= 1 && m < slotOfMedium.size() ? slotOfMedium[m] : 0;
 }
 
+uint32_t SceneMedia::fileMaterialOfMedium(size_t m) const {
+    return m < media.materialOf.size() ? media.materialOf[m] : kNoFileMaterial;
+}
+
 uint32_t SceneMedia::slotOfMaterial(uint32_t id) const {
     if (slotOfId.empty()) return 0;
     return slotOfId[std::min<size_t>(id, slotOfId.size() - 1)];
@@ -32,12 +36,9 @@ SceneMedia sceneMedia(const Scene& scene, Media media) {
     // The media's own first (the slots of a scene without mixed solids, in
     // the order they always had), then every other material a triangle has.
     for (uint32_t m = 0; m < s.media.count; ++m) {
-        const uint32_t id = m < s.media.materialOf.size() ? s.media.materialOf[m] : kNoFileMaterial;
+        const uint32_t id = s.fileMaterialOfMedium(m);
         s.slotOfMedium.push_back(slotOf(id));
         s.etaOfMedium.push_back(static_cast<float>(scene.materialOf(id).eta));
-        s.roughnessOfMedium.push_back(id < scene.objectMaterials.size()
-                                          ? static_cast<float>(scene.objectMaterials[id].roughness)
-                                          : -1.0f);
     }
     if (s.slotMaterial.empty()) s.slotMaterial.push_back(kNoFileMaterial);
     const Mesh& mesh = scene.mesh;

@@ -24,11 +24,11 @@ struct SceneMedia {
     // (render/albedo_atlas.h), not its medium's.
     bool mixed = false;
     std::vector<float> etaOfMedium;  // η of each medium's material (GL's Fresnel terms)
-    // The file's GGX roughness of each medium's material (< 0: none given).
-    std::vector<float> roughnessOfMedium;
     size_t slots() const { return slotMaterial.size(); }
     // The slot of a point that carries medium tag `tag` (1 + medium; 0: none → slot 0).
     uint32_t slotOfTag(float tag) const;
+    // The file material of medium m's first triangle (kNoFileMaterial: none).
+    uint32_t fileMaterialOfMedium(size_t m) const;
     // The slot of file material `id` (kNoFileMaterial: the scene's material).
     uint32_t slotOfMaterial(uint32_t id) const;
 };
