@@ -11,9 +11,9 @@
 #include <sstream>
 #include <thread>
 
-#include "cli/args.h"
 #include "cli/scene_options.h"
 #include "compare/image_compare.h"
+#include "util/args.h"
 #include "util/error.h"
 #include "util/output_file.h"
 

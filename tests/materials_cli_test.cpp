@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "image/image_io.h"
+#include "support/boxes.h"
 #include "support/tsis_cli.h"
 
 namespace tsis::test {
@@ -16,30 +17,6 @@ namespace {
 
 // Two 10 mm cubes 4 mm apart (diagonal √776 mm: kept at that size), the left
 // one of material "textured", the right one of "plain".
-std::string twoCubesObj() {
-    std::string s = "mtllib cubes.mtl\n";
-    int base = 0;
-    for (int cube = 0; cube < 2; ++cube) {
-        const double x0 = cube == 0 ? -12 : 2, x1 = x0 + 10;
-        for (int k = 0; k < 8; ++k)
-            s += "v " + std::to_string(k & 1 ? x1 : x0) + " " + std::to_string(k & 2 ? 5 : -5) +
-                 " " + std::to_string(k & 4 ? 5 : -5) + "\n";
-        s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
-        s += cube == 0 ? "usemtl textured\n" : "usemtl plain\n";
-        const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
-                                 {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-        const int t = 4 * cube + 1;
-        for (const auto& f : faces) {
-            s += "f";
-            for (int c = 0; c < 4; ++c)
-                s += " " + std::to_string(base + f[c] + 1) + "/" + std::to_string(t + c);
-            s += "\n";
-        }
-        base += 8;
-    }
-    return s;
-}
-
 // Mean red radiosity over the middle of each cube's front face (z = +5).
 void frontFaces(const ImageF& position, const ImageF& radiosity, double& left, double& right) {
     double sum[2] = {0, 0};

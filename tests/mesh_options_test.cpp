@@ -10,10 +10,10 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
-#include "cli/args.h"
 #include "cli/scene_options.h"
 #include "support/render.h"
 #include "support/tsis_cli.h"
+#include "util/args.h"
 
 namespace tsis::test {
 namespace {

@@ -4,8 +4,13 @@
 
 #include <CL/opencl.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "description/mesh_preparation.h"
+#include "description/scene_description.h"
+#include "render/render_options.h"
 #include "scene/scene.h"
 #include "tsis/scene.h"
 #include "util/error.h"
@@ -13,8 +18,18 @@
 namespace tsis::api {
 
 struct Scene::Impl {
-    tsis::Scene scene;
-    double sizeMm = 10;  // what the lights and camera were made for
+    SceneDescription description;  // what the scene was told
+    tsis::Scene scene;             // what it resolved to, its materials through `profile`
+    ProfileModel profile = RenderOptions().profile;
+    FileMaterials fileMaterials;  // as read, to resolve them through another profile
+    // From arrays: the mesh as given (options() cannot name it).
+    std::vector<float> vertices;
+    std::vector<uint32_t> triangles;
+    std::string arraysName;
+    std::vector<std::string> notes;
+    // The scene with its materials inverted through `p`; nullopt when that is
+    // `scene` (p is `profile`, or no material is given by a mean free path).
+    std::optional<tsis::Scene> withProfile(ProfileModel p) const;
 };
 
 inline Vec3 toVec3(const glm::dvec3& v) {

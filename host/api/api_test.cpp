@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -15,11 +16,13 @@
 #include <utility>
 #include <vector>
 
-#include "cli/args.h"
-#include "cli/scene_options.h"
+#include "description/scene_params.h"
 #include "render/renderer.h"
+#include "support/boxes.h"
 #include "support/error_of.h"
+#include "support/scratch_dir.h"
 #include "tsis/tsis.h"
+#include "util/args.h"
 
 namespace tsis::api {
 namespace {
@@ -68,8 +71,8 @@ TEST(ApiScene, FromOptionsAsTheCliMakesIt) {
     const Scene s(o);
     const tsis::Scene cli = sceneFromArgs(Args("render", sceneOptionSpecs(), o.args()));
     EXPECT_EQ(s.triangleCount(), cli.mesh.triangles.size());
-    EXPECT_EQ(s.material().name, "marble");
-    EXPECT_EQ(s.material().sigmaA[0], static_cast<float>(cli.material.sigmaA.x));
+    EXPECT_EQ(s.material()->name, "marble");
+    EXPECT_EQ(s.material()->sigmaA[0], static_cast<float>(cli.material.sigmaA.x));
     ASSERT_EQ(s.lights().size(), cli.lights.size());
     EXPECT_EQ(s.lights()[1].directional, true);
     EXPECT_EQ(s.camera().eye[2], cli.camera.eye.z);
@@ -81,7 +84,7 @@ TEST(ApiScene, SettersCheckAsTheCliAndKeepTheSceneOnError) {
     Material m = presetMaterial("skin1");
     m.sigmaA[1] = -1;
     EXPECT_NE(errorOf([&] { s.setMaterial(m); }).find("negative"), std::string::npos);
-    EXPECT_EQ(s.material().name, "skin1");
+    EXPECT_EQ(s.material()->name, "skin1");
     Camera c = s.camera();
     c.target = c.eye;
     EXPECT_EQ(errorOf([&] { s.setCamera(c); }), "--eye and --target are the same point");
@@ -97,7 +100,7 @@ TEST(ApiScene, SettersCheckAsTheCliAndKeepTheSceneOnError) {
     EXPECT_EQ(s.lights()[0].rgb[0], 2.0f);
     m.sigmaA[1] = 0.5f;
     s.setMaterial(m);
-    EXPECT_EQ(s.material().sigmaA[1], 0.5f);
+    EXPECT_EQ(s.material()->sigmaA[1], 0.5f);
 }
 
 // --env flows through the options as on the command line; its sun is the
@@ -133,6 +136,89 @@ TEST(ApiScene, FromArraysNormalisesAndRefusesBadIndices) {
               std::string::npos);
 }
 
+// The options split as the command line's are: the scene's to Scene, the
+// frame's to Renderer::render, and one given to the other is an error, not
+// an option that does nothing.
+TEST(ApiOptions, SceneAndRenderOptionsEachGoWhereTheyAct) {
+    Options o{{"mesh", "builtin:sphere"}, {"method", "tsis"},   {"material", "marble"},
+              {"samples", "64"},          {"atlas-res", "128"}, {"gl", "osmesa"}};
+    EXPECT_EQ(o.sceneOptions().args(),
+              (std::vector<std::string>{"--mesh", "builtin:sphere", "--material", "marble",
+                                        "--atlas-res", "128"}));
+    EXPECT_EQ(o.renderOptions().args(), (std::vector<std::string>{"--method", "tsis", "--samples",
+                                                                  "64", "--atlas-res", "128"}));
+    EXPECT_EQ(errorOf([&] { Scene{o}; }),
+              "Scene: option --gl is the Renderer's: give it when making one");
+    o.unset("gl");
+    EXPECT_EQ(errorOf([&] { Scene{o}; }),
+              "Scene: option --method is not the scene's: give it to Renderer::render");
+    Renderer r;
+    const Scene s(o.sceneOptions());
+    EXPECT_EQ(errorOf([&] { r.render(s, o.sceneOptions()); }),
+              "Renderer::render: option --mesh is the scene's: set it on the Scene");
+    // Albedo and mean free path in either order: each value is checked when
+    // set, the pair where the scene is made.
+    Options a, b;
+    a.set("albedo", "0.8,0.6,0.5").set("mfp", "3,1.5,0.8");
+    b.set("mfp", "3,1.5,0.8").set("albedo", "0.8,0.6,0.5");
+    EXPECT_EQ(Scene(a).material()->sigmaA, Scene(b).material()->sigmaA);
+    EXPECT_NE(errorOf([] {
+                  Scene(Options{{"albedo", "0.8,0.6,0.5"}});
+              }).find("--mfp"),
+              std::string::npos);
+}
+
+// A material given by albedo + mean free path stays so: each frame inverts it
+// through its own --profile, as `tsis render --profile P` does, whatever the
+// scene was made under.
+TEST(ApiScene, AlbedoAndMfpAreInvertedThroughTheFramesProfile) {
+    const Options scene{
+        {"mesh", "builtin:sphere"}, {"albedo", "0.8,0.6,0.5"}, {"mfp", "3,1.5,0.8"}};
+    const Options frame{{"width", "40"},      {"height", "32"},   {"atlas-res", "128"},
+                        {"light-res", "256"}, {"method", "tsis"}, {"samples", "64"},
+                        {"profile", "pbd"}};
+    const Scene s(scene);
+    ASSERT_TRUE(s.material()->albedo.has_value());
+    EXPECT_EQ((*s.material()->albedo)[0], 0.8f);
+    std::vector<std::string> argv = scene.args();
+    argv.insert(argv.end(), frame.args().begin(), frame.args().end());
+    const Args args("render", sceneOptionSpecs(), argv);
+    Renderer api;
+    tsis::Renderer internal;
+    const std::vector<uint8_t> pbd = api.render(s, frame).rgb8;
+    EXPECT_EQ(pbd, internal.render(sceneFromArgs(args), renderOptionsFromArgs(args)).rgb8);
+    Options dipole = frame;
+    dipole.set("profile", "dipole");
+    EXPECT_NE(api.render(s, dipole).rgb8, pbd);  // not the σ of the default's inversion
+}
+
+// A file's materials stay the file's (material() has none to show), are
+// listed by materials(), and options() makes the same scene again; a set
+// material replaces them all, as --material does.
+TEST(ApiScene, FileMaterialsStayTheFilesAndOptionsReplayTheScene) {
+    const tsis::test::ScratchDir dir;
+    std::ofstream(dir.file("cubes.obj")) << tsis::test::twoCubesObj();
+    std::ofstream(dir.file("cubes.mtl"))
+        << "newmtl textured\nKd 0.8 0.6 0.5\nnewmtl plain\nKd 0.3 0.3 0.3\nNi 1.3\n";
+    Scene s(Options{{"mesh", dir.file("cubes.obj")}, {"size-mm", "30"}});
+    EXPECT_FALSE(s.material().has_value());
+    const std::vector<Material> file = s.materials();
+    ASSERT_EQ(file.size(), 2u);
+    EXPECT_EQ(file[0].name, "textured");
+    EXPECT_EQ(file[1].name, "plain");
+    EXPECT_FLOAT_EQ(file[1].eta, 1.3f);
+    const Options frame{
+        {"width", "40"}, {"height", "32"}, {"atlas-res", "128"}, {"light-res", "256"}};
+    Renderer r;
+    const std::vector<uint8_t> first = r.render(s, frame).rgb8;
+    EXPECT_EQ(r.render(Scene(s.options()), frame).rgb8, first);
+    s.setMaterial(Material::preset("marble"));
+    EXPECT_EQ(s.material()->name, "marble");
+    EXPECT_EQ(s.materials().size(), 1u);
+    EXPECT_NE(r.render(s, frame).rgb8, first);
+    EXPECT_EQ(r.render(Scene(s.options()), frame).rgb8, r.render(s, frame).rgb8);
+}
+
 // The facade adds nothing to a frame: the same bytes as the internal renderer
 // given the options `tsis render` would parse.
 TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {
@@ -140,7 +226,7 @@ TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {
                     {"atlas-res", "128"},       {"light-res", "256"}, {"method", "tsis"},
                     {"samples", "64"}};
     Renderer renderer;
-    const Frame f = renderer.render(Scene(o), o);
+    const Frame f = renderer.render(Scene(o.sceneOptions()), o.renderOptions());
     const Args args("render", sceneOptionSpecs(), o.args());
     tsis::Renderer internal;
     const FrameResult r = internal.render(sceneFromArgs(args), renderOptionsFromArgs(args));
@@ -182,17 +268,17 @@ TEST(ApiRenderer, OneRendererServesSeveralThreads) {
         SCOPED_TRACE(gl);
         Options marble = o;
         marble.set("material", "marble");
-        const Scene scenes[2] = {Scene(o), Scene(marble)};
+        const Scene scenes[2] = {Scene(o.sceneOptions()), Scene(marble.sceneOptions())};
         Renderer r("", gl);
-        const std::vector<uint8_t> refs[2] = {r.render(scenes[0], o).rgb8,
-                                              r.render(scenes[1], o).rgb8};
+        const std::vector<uint8_t> refs[2] = {r.render(scenes[0], o.renderOptions()).rgb8,
+                                              r.render(scenes[1], o.renderOptions()).rgb8};
         std::vector<std::string> errors;
         int same[2] = {0, 0};
         std::mutex m;
         auto work = [&](int k) {
             for (int i = 0; i < 4; ++i) {
                 try {
-                    const bool equal = r.render(scenes[k], o).rgb8 == refs[k];
+                    const bool equal = r.render(scenes[k], o.renderOptions()).rgb8 == refs[k];
                     const std::lock_guard lock(m);
                     same[k] += equal;
                 } catch (const Error& e) {
@@ -209,7 +295,7 @@ TEST(ApiRenderer, OneRendererServesSeveralThreads) {
         EXPECT_EQ(same[1], 4);
         std::unique_ptr<Renderer> made;
         std::thread([&] { made = std::make_unique<Renderer>("", gl); }).join();
-        EXPECT_EQ(made->render(scenes[0], o).rgb8, refs[0]);
+        EXPECT_EQ(made->render(scenes[0], o.renderOptions()).rgb8, refs[0]);
     }
 }
 
@@ -223,8 +309,8 @@ TEST(ApiRenderer, CancelStopsTheFrameAndTheRendererStaysUsable) {
                         {"height", "32"},
                         {"atlas-res", "128"},
                         {"light-res", "256"}};
-    const Scene scene(small);
-    const std::vector<uint8_t> fresh = Renderer().render(scene, small).rgb8;
+    const Scene scene(small.sceneOptions());
+    const std::vector<uint8_t> fresh = Renderer().render(scene, small.renderOptions()).rgb8;
     Renderer r;
     // The options, and the poll that answers true: the third (100 ms in at
     // least, one per 50 ms) in a long frame, the first in a short one (the
@@ -241,15 +327,17 @@ TEST(ApiRenderer, CancelStopsTheFrameAndTheRendererStaysUsable) {
         SCOPED_TRACE(o.args().size());
         int polls = 0;
         const auto start = std::chrono::steady_clock::now();
-        EXPECT_THROW(r.render(scene, o, [&, stop = stopAt] { return ++polls >= stop; }), Cancelled);
+        EXPECT_THROW(
+            r.render(scene, o.renderOptions(), [&, stop = stopAt] { return ++polls >= stop; }),
+            Cancelled);
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         EXPECT_EQ(polls, stopAt);
         EXPECT_LT(s, 20.0);  // not the 60 s asked for (the bound is loose: not a timing)
-        EXPECT_EQ(r.render(scene, small).rgb8, fresh);
+        EXPECT_EQ(r.render(scene, small.renderOptions()).rgb8, fresh);
     }
     // A cancel that never answers true changes nothing.
-    EXPECT_EQ(r.render(scene, small, [] { return false; }).rgb8, fresh);
+    EXPECT_EQ(r.render(scene, small.renderOptions(), [] { return false; }).rgb8, fresh);
 }
 
 // After fork(), a renderer made before refuses at once in the child, and so
@@ -260,13 +348,13 @@ TEST(ApiRenderer, AForkedChildRefusesAtOnce) {
                     {"height", "16"},
                     {"atlas-res", "64"},
                     {"light-res", "256"}};
-    const Scene scene(o);
+    const Scene scene(o.sceneOptions());
     Renderer r;
-    r.render(scene, o);
+    r.render(scene, o.renderOptions());
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        const std::string same = errorOf([&] { r.render(scene, o); });
+        const std::string same = errorOf([&] { r.render(scene, o.renderOptions()); });
         const std::string made = errorOf([&] { Renderer again; });
         const bool ok = same.find("forked child") != std::string::npos &&
                         made.find("child forked after one was made") != std::string::npos &&
@@ -279,7 +367,7 @@ TEST(ApiRenderer, AForkedChildRefusesAtOnce) {
     if (status == -1) ::kill(child, SIGKILL), ::waitpid(child, &status, 0);
     EXPECT_TRUE(WIFEXITED(status)) << "the child hung or crashed";
     EXPECT_EQ(WEXITSTATUS(status), 0);
-    EXPECT_FALSE(r.render(scene, o).rgb8.empty());  // the parent's still renders
+    EXPECT_FALSE(r.render(scene, o.renderOptions()).rgb8.empty());  // the parent's still renders
 }
 
 TEST(ApiCompare, RefusesImagesPastItsLimitsAndShortPixels) {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
-#include "cli/args.h"
-#include "cli/scene_options.h"
+#include "description/scene_params.h"
+#include "util/args.h"
 #include "util/error.h"
 
 namespace tsis::api {
@@ -18,10 +18,11 @@ const OptionSpec* specOf(const std::string& name) {
     return nullptr;
 }
 
-// Everything `tsis render` checks before it loads the mesh.
+// Each value as `tsis render` checks it; what options say together (--albedo
+// needs --mfp) is checked where they are used: Scene, Renderer::render.
 void check(const std::vector<std::string>& argv) {
     const Args args("render", sceneOptionSpecs(), argv);
-    parseScene(args);
+    sceneDescriptionFromArgs(args);
     renderOptionsFromArgs(args);
 }
 
@@ -39,7 +40,42 @@ std::vector<std::string> without(const std::vector<std::string>& argv, const std
     return rest;
 }
 
+// The options of argv (known only) for which keep(name) holds.
+template <typename Keep>
+std::vector<std::string> kept(const std::vector<std::string>& argv, Keep keep) {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < argv.size(); ++i) {
+        const std::string name = argv[i].substr(2);
+        const OptionSpec* spec = specOf(name);
+        TSIS_CHECK(spec);
+        const size_t n = spec->takesValue ? 2 : 1;
+        if (keep(name)) out.insert(out.end(), argv.begin() + i, argv.begin() + i + n);
+        i += n - 1;
+    }
+    return out;
+}
+
+bool renderersOwn(const std::string& name) {
+    return name == "cl-device" || name == "gl";
+}
+
 }  // namespace
+
+Options Options::sceneOptions() const {
+    Options o;
+    o.args_ = kept(args_, [](const std::string& n) {
+        return findSceneParam(n) != nullptr || n == "atlas-res";
+    });
+    return o;
+}
+
+Options Options::renderOptions() const {
+    Options o;
+    o.args_ = kept(args_, [](const std::string& n) {
+        return findSceneParam(n) == nullptr && !renderersOwn(n);
+    });
+    return o;
+}
 
 Options::Options(std::initializer_list<std::pair<std::string, std::string>> values) {
     for (const auto& [name, value] : values) set(name, value);

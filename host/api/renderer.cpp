@@ -5,10 +5,10 @@
 #include <mutex>
 
 #include "api/api_internal.h"
-#include "cli/args.h"
-#include "cli/scene_options.h"
+#include "description/scene_params.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
+#include "util/args.h"
 #include "util/fork_guard.h"
 #include "util/json.h"
 #include "util/output_set.h"
@@ -52,9 +52,18 @@ Renderer::~Renderer() {
 
 Frame Renderer::render(const Scene& scene, const Options& options,
                        const std::function<bool()>& cancel) {
-    RenderOptions ro = renderOptionsFromArgs(Args("render", sceneOptionSpecs(), options.args()));
+    const Args args("render", sceneOptionSpecs(), options.args());
+    // A scene option would do nothing here: the scene has its own.
+    for (const SceneParam& p : sceneParams())
+        if (args.has(p.name))
+            fail("Renderer::render: option --", p.name, " is the scene's: set it on the Scene");
+    for (const char* own : {"cl-device", "gl"})
+        if (args.has(own))
+            fail("Renderer::render: option --", own, " is the Renderer's: give it when making one");
+    RenderOptions ro = renderOptionsFromArgs(args);
     ro.keepAovs = true;
-    const tsis::Scene& s = scene.impl_->scene;
+    const std::optional<tsis::Scene> inverted = scene.impl_->withProfile(ro.profile);
+    const tsis::Scene& s = inverted ? *inverted : scene.impl_->scene;
     Cancel stop(cancel);
     FrameResult r = guarded([&] {
         // Waiting for another thread's frame is cancelled as a frame is.

@@ -1,23 +1,34 @@
 #include "tsis/scene.h"
 
 #include "api/api_internal.h"
-#include "cli/args.h"
-#include "cli/scene_options.h"
+#include "description/mesh_preparation.h"
+#include "description/scene_params.h"
 #include "mesh/repair.h"
 #include "physics/material.h"
+#include "render/albedo_inversion.h"
+#include "render/render_params.h"
+#include "scene/environment.h"
+#include "util/args.h"
+#include "util/input_file.h"
+#include "util/note.h"
 
 namespace tsis::api {
 
 namespace {
 
-Args sceneArgsOf(const Options& options) {
-    return Args("render", sceneOptionSpecs(), options.args());
-}
-
-// Throws the CLI's error for whatever in `scene` its options could not say:
-// the scene is written as options and parsed back.
-void checkScene(const tsis::Scene& scene, double sizeMm) {
-    parseScene(Args("render", sceneOptionSpecs(), sceneArgs(scene, "builtin:default", sizeMm)));
+// The description the scene options among `options` give; a render option
+// is an error (Scene does nothing with it).
+SceneDescription describe(const Options& options, bool arrays) {
+    const Args args("render", sceneOptionSpecs(), options.args());
+    for (const OptionSpec& s : sceneOptionSpecs()) {
+        if (!args.has(s.name) || findSceneParam(s.name) || s.name == "atlas-res") continue;
+        if (s.name == "cl-device" || s.name == "gl")
+            fail("Scene: option --", s.name, " is the Renderer's: give it when making one");
+        fail("Scene: option --", s.name, " is not the scene's: give it to Renderer::render");
+    }
+    if (arrays && args.has("mesh"))
+        fail("Scene::fromArrays: option --mesh: the arrays are the mesh");
+    return sceneDescriptionFromArgs(args);
 }
 
 tsis::Material toInternal(const Material& m) {
@@ -30,13 +41,115 @@ tsis::Material toInternal(const Material& m) {
 }
 
 Material fromInternal(const tsis::Material& m) {
-    return {m.name, toVec3(m.sigmaSPrime), toVec3(m.sigmaA), static_cast<float>(m.eta)};
+    Material out;
+    out.name = m.name;
+    out.sigmaSPrime = toVec3(m.sigmaSPrime);
+    out.sigmaA = toVec3(m.sigmaA);
+    out.eta = static_cast<float>(m.eta);
+    return out;
+}
+
+// How a Material is said as options: its albedo and mean free path when it
+// has them, else its σ and η (with its preset's name when it is one).
+MaterialDescription describe(const Material& m) {
+    if (m.albedo.has_value() != m.mfpMm.has_value())
+        fail("Material: albedo and mfp_mm go together (or neither: σs' and σa)");
+    MaterialDescription d;
+    d.eta = m.eta;
+    if (m.albedo) {
+        d.albedo = glm::dvec3(toGlm(*m.albedo));
+        d.mfpMm = glm::dvec3(toGlm(*m.mfpMm));
+        return d;
+    }
+    for (const tsis::Material& p : presetMaterials()) {
+        if (p.name != m.name) continue;
+        d.preset = m.name;
+        // The preset as it is: said by name alone, so that it reads back so.
+        const Material same = fromInternal(p);
+        if (same.sigmaSPrime == m.sigmaSPrime && same.sigmaA == m.sigmaA) {
+            if (same.eta == m.eta) d.eta.reset();
+            return d;
+        }
+    }
+    d.sigmaSPrime = glm::dvec3(toGlm(m.sigmaSPrime));
+    d.sigmaA = glm::dvec3(toGlm(m.sigmaA));
+    return d;
+}
+
+// The material `d` gives as the API shows it.
+Material shown(const MaterialDescription& d, const tsis::Material& resolved) {
+    Material m = fromInternal(resolved);
+    if (d.albedo && d.mfpMm) {
+        m.albedo = toVec3(*d.albedo);
+        m.mfpMm = toVec3(*d.mfpMm);
+    }
+    return m;
+}
+
+// Scene::Impl's scene made again from its description, the mesh kept:
+// throws the description's error and leaves `impl` as it was.
+void replace(Scene::Impl& impl, const SceneDescription& next) {
+    tsis::Scene& s = impl.scene;
+    // Placed by the size the mesh has (the file's own, once loaded).
+    SceneDescription placing = next;
+    if (placing.mesh.sizeFromFile) {
+        placing.mesh.sizeFromFile = false;
+        placing.mesh.units.reset();
+        placing.mesh.sizeMm = s.sizeMm;
+    }
+    tsis::Scene placed = placedScene(placing, impl.profile);
+    placed.mesh = std::move(s.mesh);
+    placed.sizeMm = s.sizeMm;
+    // The file's materials stay unless the new description replaces them.
+    if (!overridesOf(next.material).replaceAll)
+        placed.objectMaterials = std::move(s.objectMaterials);
+    s = std::move(placed);
+    impl.description = next;
+}
+
+// `d` with the lights (unless an environment lights alone) and camera the
+// scene has now, a file's included, so that a change of something else keeps them.
+SceneDescription pinned(const Scene::Impl& impl, SceneDescription d) {
+    if (d.lights.empty() && !d.env)
+        for (const tsis::Light& l : impl.scene.lights)
+            if (!l.environment) d.lights.push_back(l);
+    const tsis::Camera& c = impl.scene.camera;
+    d.camera = {c.eye, c.target, c.up, c.fovYDegrees, std::nullopt};
+    return d;
 }
 
 }  // namespace
 
-Material presetMaterial(const std::string& name) {
+std::optional<tsis::Scene> Scene::Impl::withProfile(ProfileModel p) const {
+    if (p == profile || !description.material.mfpMm) return std::nullopt;
+    tsis::Scene s = scene;
+    const NoteCapture quiet;  // said once, when the scene was made
+    s.material = resolveMaterial(description.material, p);
+    if (!overridesOf(description.material).replaceAll)
+        s.objectMaterials =
+            objectMaterials(fileMaterials.materials, s.material, overridesOf(description.material),
+                            p, fileMaterials.mmPerFileUnit, fileMaterials.meshName);
+    return s;
+}
+
+Material Material::preset(const std::string& name) {
     return fromInternal(tsis::presetMaterial(name));
+}
+
+Material Material::fromAlbedo(const Vec3& albedo, const Vec3& mfpMm, float eta) {
+    Material m;
+    m.albedo = albedo;
+    m.mfpMm = mfpMm;
+    m.eta = eta;
+    // σ as the default profile inverts it (the renderer's own does it again).
+    const tsis::Material t = resolveMaterial(describe(m), RenderOptions().profile);
+    m.sigmaSPrime = toVec3(t.sigmaSPrime);
+    m.sigmaA = toVec3(t.sigmaA);
+    return m;
+}
+
+Material presetMaterial(const std::string& name) {
+    return Material::preset(name);
 }
 
 std::vector<std::string> presetMaterialNames() {
@@ -48,9 +161,17 @@ std::vector<std::string> presetMaterialNames() {
 Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 Scene::Scene(const Options& options) : impl_(std::make_unique<Impl>()) {
-    const Args args = sceneArgsOf(options);
-    impl_->scene = guarded([&] { return sceneFromArgs(args); });
-    impl_->sizeMm = impl_->scene.sizeMm;  // --size-mm S, or the file's own
+    impl_->description = describe(options, false);
+    const NoteCapture notes;
+    impl_->scene = guarded(
+        [&] { return buildScene(impl_->description, impl_->profile, &impl_->fileMaterials); });
+    impl_->notes = notes.notes();
+}
+
+Scene load(const std::string& path, const Options& options) {
+    Options o = options;
+    o.set("mesh", path);
+    return Scene(o);
 }
 
 Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<uint32_t>& triangles,
@@ -58,20 +179,28 @@ Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<ui
     if (vertices.size() % 3 || triangles.size() % 3)
         fail("mesh '", name, "': ", vertices.size(), " vertex coordinates and ", triangles.size(),
              " triangle indices: each must be a multiple of 3");
-    const Args args = sceneArgsOf(options);
     Scene s(std::make_unique<Impl>());
-    s.impl_->scene = parseScene(args);
-    s.impl_->sizeMm = sizeMmFromArgs(args);
+    Impl& impl = *s.impl_;
+    impl.description = describe(options, true);
+    impl.vertices = vertices;
+    impl.triangles = triangles;
+    impl.arraysName = name.empty() ? "arrays" : name;  // its notes name it
+    if (impl.description.mesh.sizeFromFile)
+        fail("--size-mm file: arrays have no size of their own");
+    const NoteCapture notes;
+    impl.scene = placedScene(impl.description, impl.profile);
     Mesh mesh;
-    mesh.name = name.empty() ? "arrays" : name;  // its notes name it
+    mesh.name = impl.arraysName;
     for (size_t i = 0; i < vertices.size(); i += 3)
         mesh.positions.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
     for (size_t i = 0; i < triangles.size(); i += 3)
         mesh.triangles.emplace_back(triangles[i], triangles[i + 1], triangles[i + 2]);
     // What a loader does (repair), then what `tsis render` does with a loaded mesh.
     repairMesh(mesh);
-    s.impl_->scene.mesh =
-        prepareLoadedMesh(std::move(mesh), s.impl_->sizeMm, meshOptionsFromArgs(args));
+    setOutsideAssetsAllowed(impl.description.mesh.allowOutsideAssets);
+    impl.scene.mesh = prepareLoadedMesh(std::move(mesh), nominalSizeMm(impl.description.mesh),
+                                        meshOptionsOf(impl.description.mesh));
+    impl.notes = notes.notes();
     return s;
 }
 
@@ -84,38 +213,80 @@ Scene& Scene::operator=(const Scene& other) {
 Scene& Scene::operator=(Scene&& other) noexcept = default;
 Scene::~Scene() = default;
 
-Material Scene::material() const {
-    return fromInternal(impl_->scene.material);
+std::optional<Material> Scene::material() const {
+    const MaterialDescription& d = impl_->description.material;
+    if (!impl_->scene.objectMaterials.empty()) return std::nullopt;
+    return shown(d, impl_->scene.material);
 }
 
 void Scene::setMaterial(const Material& material) {
-    tsis::Scene next = impl_->scene;
-    next.material = toInternal(material);
-    checkScene(next, impl_->sizeMm);
-    impl_->scene.material = next.material;
+    SceneDescription next = pinned(*impl_, impl_->description);
+    next.material = describe(material);
+    replace(*impl_, next);
+}
+
+std::vector<Material> Scene::materials() const {
+    const tsis::Scene& s = impl_->scene;
+    if (s.objectMaterials.empty()) return {*material()};
+    std::vector<Material> out;
+    for (size_t i = 0; i < s.objectMaterials.size(); ++i) {
+        const ObjectMaterial& o = s.objectMaterials[i];
+        Material m = fromInternal(o.medium);
+        if (i < impl_->fileMaterials.materials.size())
+            m.name = impl_->fileMaterials.materials[i].name;
+        m.albedo = toVec3(o.albedo);
+        if (o.texture) m.albedoTexture = o.texture->name;
+        out.push_back(m);
+    }
+    return out;
 }
 
 std::vector<Light> Scene::lights() const {
     std::vector<Light> out;
     for (const tsis::Light& l : impl_->scene.lights)
-        if (!l.environment)  // an --env map's sun is the map's, not a light to set
+        if (!l.environment)  // an environment's sun is the map's, not a light to set
             out.push_back({l.type == tsis::Light::Type::Directional, toVec3(l.vec), toVec3(l.rgb)});
     return out;
 }
 
 void Scene::setLights(const std::vector<Light>& lights) {
-    tsis::Scene next = impl_->scene;
+    SceneDescription next = pinned(*impl_, impl_->description);
     next.lights.clear();
     for (const Light& l : lights) {
         tsis::Light t;
         t.type = l.directional ? tsis::Light::Type::Directional : tsis::Light::Type::Point;
         t.vec = toGlm(l.vec);
         t.rgb = toGlm(l.rgb);
-        next.lights.push_back(t);
+        next.lights.push_back(parseLight(lightText(t)));  // checked as --light is
     }
-    applyEnvironment(next);  // the --env map's sun stays
-    checkScene(next, impl_->sizeMm);
-    impl_->scene.lights = next.lights;
+    if (lights.empty())  // none given: the defaults for the object's size
+        next.lights = defaultLights(impl_->scene.sizeMm);
+    replace(*impl_, next);
+}
+
+std::optional<Environment> Scene::environment() const {
+    const auto& e = impl_->description.env;
+    if (!e) return std::nullopt;
+    return Environment{e->path, e->intensity.value_or(1.0), e->rotateDegrees.value_or(0.0)};
+}
+
+void Scene::setEnvironment(const std::optional<Environment>& environment) {
+    // The lights given stay; the file's or the defaults give way to the map
+    // (it lights alone), and come back as the defaults without one.
+    SceneDescription next = impl_->description;
+    next.camera = pinned(*impl_, next).camera;
+    next.env.reset();
+    if (environment) {
+        if (environment->path.empty()) fail("Environment: no file (path is empty)");
+        Options check;  // each value as the CLI checks --env-intensity and --env-rotate
+        check.set("env-intensity", environment->intensity)
+            .set("env-rotate", environment->rotateDegrees);
+        next.env = EnvironmentDescription{environment->path, environment->intensity,
+                                          environment->rotateDegrees};
+    }
+    const NoteCapture notes;
+    replace(*impl_, next);
+    for (const std::string& n : notes.notes()) impl_->notes.push_back(n);
 }
 
 Camera Scene::camera() const {
@@ -124,10 +295,43 @@ Camera Scene::camera() const {
 }
 
 void Scene::setCamera(const Camera& camera) {
-    tsis::Scene next = impl_->scene;
-    next.camera = {toGlm(camera.eye), toGlm(camera.target), toGlm(camera.up), camera.fovYDegrees};
-    checkScene(next, impl_->sizeMm);
-    impl_->scene.camera = next.camera;
+    SceneDescription next = pinned(*impl_, impl_->description);
+    if (!(camera.fovYDegrees >= 1 && camera.fovYDegrees <= 170))
+        fail("--fov ", camera.fovYDegrees, " is out of range [1, 170]");
+    next.camera = {toGlm(camera.eye), toGlm(camera.target), toGlm(camera.up), camera.fovYDegrees,
+                   std::nullopt};
+    replace(*impl_, next);
+}
+
+Options Scene::options() const {
+    SceneDescription d = impl_->description;
+    // The lights and camera as the scene has them (a file's included).
+    d.lights.clear();
+    for (const tsis::Light& l : impl_->scene.lights)
+        if (!l.environment) d.lights.push_back(l);
+    const tsis::Camera& c = impl_->scene.camera;
+    d.camera = {c.eye, c.target, c.up, c.fovYDegrees, std::nullopt};
+    if (d.mesh.sizeFromFile) {
+        d.mesh.sizeFromFile = false;
+        d.mesh.units.reset();
+        d.mesh.sizeMm = impl_->scene.sizeMm;
+    }
+    if (d.fileLightUnits && d.env)  // the map's scale as used (W/(m²·sr) → W/(mm²·sr))
+        d.env->intensity = impl_->scene.env.intensity;
+    d.fileLightUnits = false;
+    Options o;
+    const std::vector<std::string> args = descriptionArgs(d);
+    for (size_t i = 0; i < args.size();) {
+        const std::string name = args[i].substr(2);
+        const bool flag = findSceneParam(name) && findSceneParam(name)->flag;
+        o.set(name, flag ? "true" : args[i + 1]);
+        i += flag ? 1 : 2;
+    }
+    return o;
+}
+
+const std::vector<std::string>& Scene::notes() const {
+    return impl_->notes;
 }
 
 std::string Scene::meshName() const {

@@ -21,13 +21,13 @@
 #include <optional>
 #include <sstream>
 
-#include "cli/args.h"
 #include "cli/scene_options.h"
 #include "gl/gl_context.h"
 #include "image/image_io.h"
 #include "mesh/mesh_io.h"
 #include "render/frame_memory.h"
 #include "render/renderer.h"
+#include "util/args.h"
 #include "util/error.h"
 #include "util/memory.h"
 #include "util/output_set.h"

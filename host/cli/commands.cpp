@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "cli/animate.h"
-#include "cli/args.h"
 #include "cli/compare_command.h"
 #include "cli/scene_options.h"
 #include "cli/view_command.h"
@@ -22,6 +21,7 @@
 #include "render/render_params.h"
 #include "render/renderer.h"
 #include "render/truth_check.h"
+#include "util/args.h"
 #include "util/error.h"
 #include "util/output_set.h"
 #include "util/progress.h"
@@ -139,9 +139,9 @@ int runRender(const std::vector<std::string>& argv) {
         Json j = frame.stats.toJson();
         j["mesh"] = scene.mesh.name;
         j["material"] = scene.material.name;
-        // The scene as options: a glTF's camera and lights as they were used.
-        j["scene_args"] =
-            sceneArgs(scene, args.getString("mesh", SceneDefaults().mesh), scene.sizeMm);
+        // The scene as options: a glTF's camera and lights as they were used,
+        // its materials the file's unless the command line gave one.
+        j["scene_args"] = sceneArgs(scene, sceneDescriptionFromArgs(args));
         j["lavg"] = frame.lavg;
         if (truth)
             j["truth_check"] = Json{{"rel_rmse", truth->relRmse},

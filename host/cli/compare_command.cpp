@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cli/args.h"
 #include "compare/heatmap.h"
 #include "compare/image_compare.h"
 #include "image/image_io.h"
+#include "util/args.h"
 #include "util/error.h"
 #include "util/input_file.h"
 #include "util/output_set.h"

@@ -138,8 +138,8 @@ TEST(SceneOptions, ValuesOutsideTheirRangeAreRefused) {
     refused({"--method", "tsis", "--rd-part", "middle"}, "--rd-part 'middle'");
     EXPECT_EQ(renderOptionsFromArgs(parse({"--light-res", "0"})).lightResolution, 0);
     // The atlas the mesh gets and the renderer's read the one row.
-    EXPECT_EQ(atlasOptionsFromArgs(parse({"--atlas-res", "128"})).resolution, 128);
-    EXPECT_THROW(atlasOptionsFromArgs(parse({"--atlas-res", "100"})), Error);
+    EXPECT_EQ(meshOptionsFromArgs(parse({"--atlas-res", "128"})).atlas.resolution, 128);
+    EXPECT_THROW(meshOptionsFromArgs(parse({"--atlas-res", "100"})), Error);
     // A struct filled in code goes through the same rows.
     RenderOptions o;
     o.samples = 0;

@@ -10,9 +10,9 @@
 #include <iostream>
 #include <optional>
 
-#include "cli/args.h"
 #include "cli/scene_options.h"
 #include "gl/gl_context.h"
+#include "util/args.h"
 #include "util/error.h"
 #include "util/output_set.h"
 #include "view/viewer.h"

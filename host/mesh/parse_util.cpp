@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "util/note.h"
+
 namespace tsis::meshparse {
 
 namespace {
@@ -121,8 +123,8 @@ float coordinate(double value, const std::string& name, size_t vertex, size_t li
 
 void note(const std::string& name, const std::string& what) {
     // Every note names its file; a mesh from memory without a name says so.
-    std::fprintf(stderr, "tsis: note: mesh '%s': %s\n",
-                 name.empty() ? "(unnamed)" : printable(name).c_str(), printable(what).c_str());
+    emitNote("mesh '" + (name.empty() ? std::string("(unnamed)") : printable(name)) +
+             "': " + printable(what));
 }
 
 void KindCounts::add(std::string_view kind) {

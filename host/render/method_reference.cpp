@@ -7,6 +7,7 @@
 
 #include "mesh/media.h"
 #include "util/error.h"
+#include "util/note.h"
 #include "util/progress.h"
 #include "util/timer.h"
 
@@ -51,7 +52,7 @@ void ReferenceMethod::checkCost(const ReferenceCost& cost, bool force) {
         fail("reference: ", cost.describe(), "; more than the bounds of ",
              kMaxReferencePoints / 1e6, " M points and ", kMaxReferenceEvaluations,
              " evaluations (use a larger --spacing, a smaller image, or --force)");
-    std::fprintf(stderr, "tsis: note: reference: %s (--force)\n", cost.describe().c_str());
+    emitNote("reference: " + cost.describe() + " (--force)");
 }
 
 void ReferenceMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {

@@ -9,13 +9,14 @@
 #include "physics/ggx.h"
 #include "render/albedo_inversion.h"
 #include "util/error.h"
+#include "util/note.h"
 
 namespace tsis {
 
 namespace {
 
 void note(const std::string& file, const std::string& what) {
-    std::fprintf(stderr, "tsis: note: mesh '%s': %s\n", file.c_str(), what.c_str());
+    emitNote("mesh '" + file + "': " + what);
 }
 
 // The inversions made (materialFromAlbedo bisects through the profile's

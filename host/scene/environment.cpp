@@ -12,6 +12,7 @@
 #include "tsis_shared.h"
 #include "util/error.h"
 #include "util/hash.h"
+#include "util/note.h"
 
 namespace tsis {
 
@@ -133,13 +134,15 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
         }
         clamped += negative;
     }
-    if (clamped)
-        std::fprintf(stderr,
-                     "tsis: note: --env '%s': %zu %s with negative values clamped to 0 (the "
-                     "lowest %.3g; within %g of the map's largest, %.3g)\n",
-                     printable(path).c_str(), clamped, clamped == 1 ? "pixel" : "pixels",
-                     static_cast<double>(lowest), static_cast<double>(kEnvNegativeTolerance),
-                     static_cast<double>(largest));
+    if (clamped) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%zu %s with negative values clamped to 0 (the lowest %.3g; within %g of "
+                      "the map's largest, %.3g)",
+                      clamped, clamped == 1 ? "pixel" : "pixels", static_cast<double>(lowest),
+                      static_cast<double>(kEnvNegativeTolerance), static_cast<double>(largest));
+        emitNote("--env '" + printable(path) + "': " + text);
+    }
     // The sun: the brightest texel's neighbourhood, when it stands out.
     size_t brightest = 0;
     double mean = 0, solid = 0;

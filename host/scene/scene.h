@@ -77,6 +77,10 @@ struct Scene {
     double sizeMm = 10;
 };
 
+// The sizes --size-mm takes (tsis render and tsis view alike) and the view's
+// size slider spans, mm.
+constexpr double kMinSizeMm = 1e-3, kMaxSizeMm = 1e5;
+
 // The largest number of lights a frame takes (GL uniform arrays and the mis
 // kernel's private arrays are sized by it): kernels/tsis_shared.h.
 constexpr int kMaxLights = TSIS_MAX_LIGHTS;

@@ -11,6 +11,7 @@
 #include <mutex>
 
 #include "util/error.h"
+#include "util/note.h"
 
 namespace tsis {
 
@@ -61,10 +62,7 @@ std::string usableCacheDirectory() {
     const std::string why = privateDirectory(dir);
     if (why.empty()) return dir;
     static std::once_flag once;
-    std::call_once(once, [&] {
-        std::fprintf(stderr, "tsis: note: cache folder '%s' not used: %s\n", dir.c_str(),
-                     why.c_str());
-    });
+    std::call_once(once, [&] { emitNote("cache folder '" + dir + "' not used: " + why); });
     return "";
 }
 

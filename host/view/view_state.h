@@ -55,10 +55,6 @@ struct FileMaterialLines {
 };
 FileMaterialLines fileMaterialLines(const Mesh& mesh, const ViewState& state);
 
-// The sizes --size-mm takes (tsis render and tsis view alike) and the size
-// slider spans, mm.
-constexpr double kMinSizeMm = 1e-3, kMaxSizeMm = 1e5;
-
 // A new size: the camera and point lights scale with the object (a point
 // light's intensity by the square, so that the irradiance stays).
 void resize(ViewState& state, double sizeMm);

@@ -29,6 +29,13 @@ class Options {
     // The value last set; nullopt when unset.
     std::optional<std::string> get(const std::string& name) const;
 
+    // The options split as `tsis render`'s are: those of the scene (Scene:
+    // mesh, material, light, env, eye, …) and those of a frame
+    // (Renderer::render: method, samples, width, …); atlas-res is both (the
+    // mesh's atlas and the frame's), cl-device and gl neither (Renderer's).
+    Options sceneOptions() const;
+    Options renderOptions() const;
+
     // As on the command line: {"--method", "tsis", "--samples", "1024", ...}.
     const std::vector<std::string>& args() const { return args_; }
     // The names, what they take and their defaults (`tsis render --help`'s table).

@@ -1,13 +1,15 @@
-// What a frame shows: a mesh, its material, the lights and the camera. Made
-// from the scene options (Options: mesh, size-mm, rotate, mesh-up, crease,
-// material, sigma-s, sigma-a, eta, light, eye, target, up, fov, atlas,
-// atlas-res) as `tsis render` makes it, or from vertex and triangle arrays;
-// then changed through plain structs.
+// What a frame shows: a mesh (a file, builtin:NAME or arrays) with its
+// materials, the lights, an environment and the camera, as typed values.
+// A Scene keeps what it was told: a material given as albedo + mean free
+// path stays so (each render inverts it through its own --profile), a file's
+// materials stay the file's until setMaterial replaces them, and options()
+// gives back the options that make the same scene again.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,21 +19,37 @@ namespace tsis::api {
 
 using Vec3 = std::array<float, 3>;
 
-// Scattering coefficients (docs/design.md §2): σs' and σa in 1/mm per RGB
-// channel, relative index of refraction η.
+// A medium (docs/design.md §2): σs' and σa in 1/mm per RGB channel and the
+// relative index of refraction η; or, where albedo and mfpMm are both given,
+// the medium of that total diffuse reflectance (0, 0.99] and mean free path
+// 1/σt' (mm), σ then the inversion's and set by the renderer.
 struct Material {
-    std::string name = "custom";
+    std::string name = "custom";  // a preset's name (Material::preset), else "custom"
     Vec3 sigmaSPrime{}, sigmaA{};
     float eta = 1.3f;
+    std::optional<Vec3> albedo, mfpMm;
+    // Textured surfaces (a file's) name their albedo texture; not settable.
+    std::string albedoTexture;
+
+    // A preset of `tsis materials` ("skin1", "marble", …); throws tsis::Error.
+    static Material preset(const std::string& name);
+    static Material fromAlbedo(const Vec3& albedo, const Vec3& mfpMm, float eta = 1.3f);
 };
-// A preset of `tsis materials` ("skin1", "marble", …); throws tsis::Error.
-Material presetMaterial(const std::string& name);
+Material presetMaterial(const std::string& name);  // Material::preset
 std::vector<std::string> presetMaterialNames();
 
 struct Light {
     bool directional = false;
     Vec3 vec{};         // point: position (mm); directional: the direction light travels
     Vec3 rgb{1, 1, 1};  // point: intensity (W/sr); directional: irradiance (W/mm²)
+};
+
+// A lat-long radiance map (.exr, .hdr) in W/(mm²·sr) lighting the scene,
+// scaled by intensity and turned by rotateDegrees about the up axis (+y).
+struct Environment {
+    std::string path;
+    double intensity = 1;
+    double rotateDegrees = 0;
 };
 
 struct Camera {
@@ -41,13 +59,14 @@ struct Camera {
 
 class Scene {
   public:
-    // The scene of `tsis render` with these options (render options among
-    // them are checked, not used). Loads the mesh: throws tsis::Error.
+    // The scene of these scene options (`tsis render`'s: mesh, size-mm,
+    // material, light, env, eye, …; Options::help lists them). Loads the
+    // mesh. A render option (method, samples, …) is an error: it belongs to
+    // Renderer::render. Throws tsis::Error.
     explicit Scene(const Options& options = {});
     // The mesh from arrays: x,y,z per vertex and three indices per triangle
     // (counter-clockwise seen from outside), turned, centred and scaled to
-    // size-mm and given normals as a file is; the rest from `options` (its
-    // mesh is not used).
+    // size-mm and given normals as a file is; the rest from `options` (no mesh).
     static Scene fromArrays(const std::vector<float>& vertices,
                             const std::vector<uint32_t>& triangles, const Options& options = {},
                             const std::string& name = "arrays");
@@ -57,14 +76,33 @@ class Scene {
     Scene& operator=(Scene&& other) noexcept;
     ~Scene();
 
-    // Checked as the CLI checks --sigma-s/--sigma-a/--eta, --light and
-    // --eye/--target/--up/--fov: throws tsis::Error and keeps the scene.
-    Material material() const;
+    // The material every triangle scatters in when one is set (setMaterial,
+    // or the options' material); nullopt when each part of the mesh file
+    // keeps its own (materials()).
+    std::optional<Material> material() const;
+    // Replaces every object's material (as --material does), checked as the
+    // CLI checks it: throws tsis::Error and keeps the scene.
     void setMaterial(const Material& material);
+    // What each part scatters in: the file's materials in the file's order
+    // (σ as resolved by the default profile), or the one material.
+    std::vector<Material> materials() const;
+
+    // Checked as the CLI checks --light and --eye/--target/--up/--fov:
+    // throws tsis::Error and keeps the scene.
     std::vector<Light> lights() const;
     void setLights(const std::vector<Light>& lights);
+    std::optional<Environment> environment() const;
+    void setEnvironment(const std::optional<Environment>& environment);
     Camera camera() const;
     void setCamera(const Camera& camera);
+
+    // The scene options that make this scene again (Scene(options()); from
+    // arrays: fromArrays with them). Lights and camera as set, the material
+    // as given (none: the file's).
+    Options options() const;
+    // The notes loading the scene made (what `tsis render` prints as
+    // "tsis: note: …"), in order.
+    const std::vector<std::string>& notes() const;
 
     std::string meshName() const;
     size_t vertexCount() const;
@@ -77,5 +115,9 @@ class Scene {
     explicit Scene(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
+
+// Reads a mesh file (glTF, OBJ, PLY, STL, OFF) into a Scene with its
+// materials, camera and lights; `options` as Scene's. Scene(options with mesh).
+Scene load(const std::string& path, const Options& options = {});
 
 }  // namespace tsis::api

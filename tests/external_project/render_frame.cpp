@@ -12,10 +12,11 @@ int main(int argc, char** argv) {
             const std::string a = argv[i];
             options.set(a.substr(0, a.find('=')), a.substr(a.find('=') + 1));
         }
-        tsis::api::Scene scene(options);
+        // The scene's options make the scene, the rest the frame.
+        tsis::api::Scene scene(options.sceneOptions());
         scene.setLights({{false, {0, 12, 6}, {150, 150, 150}}});
         tsis::api::Renderer renderer;
-        const tsis::api::Frame frame = renderer.render(scene, options);
+        const tsis::api::Frame frame = renderer.render(scene, options.renderOptions());
         tsis::api::writeImage(frame, argc > 1 ? argv[1] : "frame.png");
         std::printf("%dx%d, log-average luminance %g\n", frame.width, frame.height, frame.lavg);
     } catch (const tsis::Error& e) {

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "mesh/mesh.h"
 
@@ -52,6 +53,32 @@ inline void addSphere(Mesh& m, glm::vec3 centre, float radius, unsigned rings = 
             if (i + 1 < rings)
                 m.triangles.emplace_back(at(i, j + 1), at(i + 1, j), at(i + 1, j + 1));
         }
+}
+
+// Two 10 mm cubes 4 mm apart along x as OBJ text, the left of material
+// "textured" and the right of "plain" from cubes.mtl, each face with UVs.
+inline std::string twoCubesObj() {
+    std::string s = "mtllib cubes.mtl\n";
+    int base = 0;
+    for (int cube = 0; cube < 2; ++cube) {
+        const double x0 = cube == 0 ? -12 : 2, x1 = x0 + 10;
+        for (int k = 0; k < 8; ++k)
+            s += "v " + std::to_string(k & 1 ? x1 : x0) + " " + std::to_string(k & 2 ? 5 : -5) +
+                 " " + std::to_string(k & 4 ? 5 : -5) + "\n";
+        s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+        s += cube == 0 ? "usemtl textured\n" : "usemtl plain\n";
+        const int faces[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                                 {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+        const int t = 4 * cube + 1;
+        for (const auto& f : faces) {
+            s += "f";
+            for (int c = 0; c < 4; ++c)
+                s += " " + std::to_string(base + f[c] + 1) + "/" + std::to_string(t + c);
+            s += "\n";
+        }
+        base += 8;
+    }
+    return s;
 }
 
 }  // namespace tsis::test

@@ -1,4 +1,4 @@
-#include "cli/args.h"
+#include "util/args.h"
 
 #include <gtest/gtest.h>
 
