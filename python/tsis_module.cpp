@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -63,7 +64,7 @@ void setOption(Options& o, const std::string& name, const py::handle& v) {
     }
 }
 
-Options optionsOf(const py::kwargs& kwargs) {
+Options optionsOf(const py::dict& kwargs) {
     Options o;
     for (const auto& [k, v] : kwargs) setOption(o, optionName(k.cast<std::string>()), v);
     return o;
@@ -182,16 +183,123 @@ std::vector<uint32_t> triangleRows(const py::handle& value) {
     return out;
 }
 
-py::object frameToPython(const Frame& f) {
+// --- values shown and kept -----------------------------------------------
+
+// The shortest text that reads back to `x` (0.1f → "0.1", 150.f → "150").
+template <typename T>
+std::string num(T x) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
+}
+
+std::string vec(const Vec3& v) {
+    return "(" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ")";
+}
+
+std::string quoted(const std::string& s) {
+    return py::repr(py::str(s)).cast<std::string>();
+}
+
+// The option names as Python spells them (size-mm → size_mm).
+std::string pythonName(std::string name) {
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
+// Whether option `name` takes no value: a flag set to "false" leaves no
+// argument behind, an option with a value keeps "--name false" or refuses it.
+bool isFlag(const std::string& name) {
+    try {
+        Options o;
+        o.set(name, "false");
+        return o.args().empty();
+    } catch (const tsis::Error&) {
+        return false;
+    }
+}
+
+// Options as keyword arguments that make them again: {"size_mm": "20",
+// "light": ["point:…", …], "allow_outside_assets": True}.
+py::dict keywordsOf(const Options& o) {
+    py::dict d;
+    const std::vector<std::string>& a = o.args();
+    for (size_t i = 0; i < a.size(); ++i) {
+        const std::string name = a[i].substr(2);
+        const py::str key(pythonName(name));
+        if (isFlag(name)) {
+            d[key] = true;
+        } else if (name == "light") {  // the one repeatable scene option
+            if (!d.contains(key)) d[key] = py::list();
+            d[key].cast<py::list>().append(a[++i]);
+        } else {
+            d[key] = a[++i];
+        }
+    }
+    return d;
+}
+
+// --- notes as warnings ---------------------------------------------------
+
+PyObject* noteWarning = nullptr;  // tsis.NoteWarning, made with the module
+bool quiet = false;               // tsis.set_quiet (guarded by the GIL)
+
+// Each note through warnings.warn(text, tsis.NoteWarning), pointing at the
+// Python line that made the scene; nothing when quiet. A filter that turns
+// warnings into errors raises here.
+void warnNotes(const std::vector<std::string>& notes, size_t from = 0) {
+    for (size_t i = from; !quiet && i < notes.size(); ++i)
+        if (PyErr_WarnEx(noteWarning, notes[i].c_str(), 1) < 0) throw py::error_already_set();
+}
+
+// --- Scene, Renderer and Frame as Python holds them -----------------------
+
+// A mesh given as arrays (options() cannot name it; pickling needs it).
+struct MeshArrays {
+    std::vector<float> vertices;
+    std::vector<uint32_t> triangles;
+};
+
+struct PyScene : Scene {
+    explicit PyScene(Scene s, std::shared_ptr<const MeshArrays> a = nullptr)
+        : Scene(std::move(s)), arrays(std::move(a)) {}
+    std::shared_ptr<const MeshArrays> arrays;  // null: made from options
+};
+
+// A Scene from options, or from arrays when they are given.
+PyScene makeScene(const py::dict& options, const py::object& vertices = py::none(),
+                  const py::object& triangles = py::none()) {
+    if (vertices.is_none()) return PyScene(Scene(optionsOf(options)));
+    auto a =
+        std::make_shared<MeshArrays>(MeshArrays{vertexRows(vertices), triangleRows(triangles)});
+    return PyScene(Scene::fromArrays(a->vertices, a->triangles, optionsOf(options)), a);
+}
+
+// A Renderer that remembers what it was made with (for its repr).
+struct PyRenderer : Renderer {
+    PyRenderer(const std::string& cl, const std::string& g)
+        : Renderer(cl, g), clDevice(cl), gl(g) {}
+    std::string clDevice, gl;
+};
+
+struct PyFrame {
+    py::object image, radiance, radiosity, position, normal, coverage, fluxAtlas;
+    double lavg = 0;
+    py::dict stats;
+};
+
+PyFrame frameToPython(const Frame& f) {
     py::array_t<uint8_t> rgb({f.height, f.width, 3});
     std::copy(f.rgb8.begin(), f.rgb8.end(), rgb.mutable_data());
-    const py::object stats = py::module_::import("json").attr("loads")(f.statsJson);
-    return py::module_::import("types").attr("SimpleNamespace")(
-        py::arg("image") = rgb, py::arg("radiance") = toNumpy(f.radiance),
-        py::arg("radiosity") = toNumpy(f.radiosity), py::arg("position") = toNumpy(f.position),
-        py::arg("normal") = toNumpy(f.normal), py::arg("coverage") = toNumpy(f.coverage),
-        py::arg("flux_atlas") = toNumpy(f.fluxAtlas), py::arg("lavg") = f.lavg,
-        py::arg("stats") = stats);
+    return {rgb,
+            toNumpy(f.radiance),
+            toNumpy(f.radiosity),
+            toNumpy(f.position),
+            toNumpy(f.normal),
+            toNumpy(f.coverage),
+            toNumpy(f.fluxAtlas),
+            f.lavg,
+            py::module_::import("json").attr("loads")(f.statsJson)};
 }
 
 // The renderer tsis.render() uses: made on first use, kept for the next
@@ -225,12 +333,14 @@ class SceneInFrame {
 // A setter of Scene.`name` that refuses while a frame reads the scene.
 template <typename T>
 auto sceneSetter(void (Scene::*set)(const T&), const char* name) {
-    return [set, name](Scene& s, const T& value) {
+    return [set, name](PyScene& s, const T& value) {
         if (scenesInFrames().count(&s))
             throw tsis::Error(std::string("Scene.") + name +
                               ": the scene is being rendered on another thread; change it "
                               "between frames (or render a copy: copy.copy(scene))");
+        const size_t said = s.notes().size();
         (s.*set)(value);
+        warnNotes(s.notes(), said);  // e.g. an environment's
     };
 }
 
@@ -242,7 +352,7 @@ bool onMainThread() {
 // A frame with the GIL released. On the main thread Python's signal
 // handlers run while it renders (Ctrl-C: the frame stops, KeyboardInterrupt
 // is raised and the renderer stays usable); other threads cannot take signals.
-py::object renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
+PyFrame renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
     const Options o = optionsOf(kw);
     std::optional<py::error_already_set> raised;  // by a signal handler
     std::function<bool()> signals;
@@ -265,28 +375,127 @@ py::object renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
     return frameToPython(f);
 }
 
+// A Material from the keywords of one of its two forms.
+Material makeMaterial(const std::string& name, const std::optional<Vec3>& sigmaS,
+                      const std::optional<Vec3>& sigmaA, const std::optional<Vec3>& albedo,
+                      const std::optional<Vec3>& mfpMm, float eta) {
+    const bool bySigma = sigmaS && sigmaA && !albedo && !mfpMm;
+    const bool byAlbedo = albedo && mfpMm && !sigmaS && !sigmaA;
+    if (!bySigma && !byAlbedo) {
+        std::string given;
+        for (const auto& [what, has] : {std::pair{"sigma_s", bool(sigmaS)},
+                                        {"sigma_a", bool(sigmaA)},
+                                        {"albedo", bool(albedo)},
+                                        {"mfp_mm", bool(mfpMm)}})
+            if (has) given += std::string(given.empty() ? "" : ", ") + what;
+        throw tsis::Error(
+            "Material: give sigma_s and sigma_a, or albedo and mfp_mm (one form, "
+            "both of its values); given: " +
+            (given.empty() ? "none" : given));
+    }
+    Material m = byAlbedo ? Material::fromAlbedo(*albedo, *mfpMm, eta) : Material{};
+    if (bySigma) {
+        m.sigmaSPrime = *sigmaS;
+        m.sigmaA = *sigmaA;
+        m.eta = eta;
+    }
+    m.name = name;
+    return m;
+}
+
+// A path: str or os.PathLike.
+std::string pathOf(const py::object& p) {
+    return py::str(py::module_::import("os").attr("fspath")(p)).cast<std::string>();
+}
+
+// A sequence `t` of exactly n items for __setstate__.
+py::tuple state(const py::tuple& t, size_t n, const char* what) {
+    if (t.size() != n) throw std::runtime_error(std::string(what) + ": invalid pickled state");
+    return t;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(tsis, m) {
     m.doc() =
         "tsis: translucent materials rendered with the dipole BSSRDF (README, docs/design.md)";
     py::register_exception<tsis::Error>(m, "Error", PyExc_RuntimeError);
+    noteWarning = PyErr_NewExceptionWithDoc(
+        "tsis.NoteWarning", "what loading a scene noted (`tsis render`'s \"tsis: note: …\")",
+        PyExc_UserWarning, nullptr);
+    m.attr("NoteWarning") = py::handle(noteWarning);
+    m.def(
+        "set_quiet",
+        [](bool q) {
+            const bool was = quiet;
+            quiet = q;
+            return was;
+        },
+        py::arg("quiet") = true,
+        "quiet: scenes made from Python no longer warn their notes (tsis.NoteWarning); returns "
+        "the previous setting");
 
     py::class_<Material>(m, "Material")
-        .def(py::init([](const std::string& name, Vec3 sigmaS, Vec3 sigmaA, float eta) {
-                 return Material{name, sigmaS, sigmaA, eta};
-             }),
-             py::arg("name") = "custom", py::arg("sigma_s"), py::arg("sigma_a"),
-             py::arg("eta") = 1.3f)
+        .def(py::init(&makeMaterial), py::arg("name") = "custom", py::kw_only(),
+             py::arg("sigma_s") = py::none(), py::arg("sigma_a") = py::none(),
+             py::arg("albedo") = py::none(), py::arg("mfp_mm") = py::none(), py::arg("eta") = 1.3f,
+             "Material(sigma_s=…, sigma_a=…, eta=1.3) or Material(albedo=…, mfp_mm=…, eta=1.3)")
+        .def_static("preset", &Material::preset, py::arg("name"),
+                    "a preset of tsis.preset_materials()")
         .def_readwrite("name", &Material::name)
-        .def_readwrite("sigma_s", &Material::sigmaSPrime, "reduced scattering σs' (1/mm, RGB)")
-        .def_readwrite("sigma_a", &Material::sigmaA, "absorption σa (1/mm, RGB)")
+        // σ given: the material is no longer the albedo's (albedo, mfp_mm None).
+        .def_property(
+            "sigma_s", [](const Material& x) { return x.sigmaSPrime; },
+            [](Material& x, const Vec3& v) {
+                x.sigmaSPrime = v;
+                x.albedo = x.mfpMm = std::nullopt;
+            },
+            "reduced scattering σs' (1/mm, RGB)")
+        .def_property(
+            "sigma_a", [](const Material& x) { return x.sigmaA; },
+            [](Material& x, const Vec3& v) {
+                x.sigmaA = v;
+                x.albedo = x.mfpMm = std::nullopt;
+            },
+            "absorption σa (1/mm, RGB)")
         .def_readwrite("eta", &Material::eta)
-        .def("__repr__", [](const Material& x) {
-            return py::str("Material({!r}, sigma_s={}, sigma_a={}, eta={})")
-                .format(x.name, x.sigmaSPrime, x.sigmaA, x.eta);
-        });
-    m.def("preset_material", &presetMaterial, py::arg("name"));
+        .def_readonly("albedo", &Material::albedo,
+                      "diffuse reflectance (RGB) when given, else None")
+        .def_readonly("mfp_mm", &Material::mfpMm, "mean free path (mm, RGB) when given, else None")
+        .def_readonly("albedo_texture", &Material::albedoTexture, "a file material's texture")
+        .def("__repr__",
+             [](const Material& x) {
+                 std::string s = "Material(" + (x.name == "custom" ? "" : quoted(x.name) + ", ");
+                 if (x.albedo && x.mfpMm)
+                     s += "albedo=" + vec(*x.albedo) + ", mfp_mm=" + vec(*x.mfpMm);
+                 else
+                     s += "sigma_s=" + vec(x.sigmaSPrime) + ", sigma_a=" + vec(x.sigmaA);
+                 return s + ", eta=" + num(x.eta) + ")";
+             })
+        .def(
+            "__eq__",
+            [](const Material& a, const Material& b) {
+                return a.name == b.name && a.sigmaSPrime == b.sigmaSPrime && a.sigmaA == b.sigmaA &&
+                       a.eta == b.eta && a.albedo == b.albedo && a.mfpMm == b.mfpMm &&
+                       a.albedoTexture == b.albedoTexture;
+            },
+            py::is_operator())
+        .def(py::pickle(
+            [](const Material& x) {
+                return py::make_tuple(x.name, x.sigmaSPrime, x.sigmaA, x.eta, x.albedo, x.mfpMm,
+                                      x.albedoTexture);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 7, "Material");
+                return Material{t[0].cast<std::string>(),
+                                t[1].cast<Vec3>(),
+                                t[2].cast<Vec3>(),
+                                t[3].cast<float>(),
+                                t[4].cast<std::optional<Vec3>>(),
+                                t[5].cast<std::optional<Vec3>>(),
+                                t[6].cast<std::string>()};
+            }));
+    m.def("preset_material", &presetMaterial, py::arg("name"), "Material.preset");
     m.def("preset_materials", &presetMaterialNames);
 
     py::class_<Light>(m, "Light")
@@ -300,7 +509,56 @@ PYBIND11_MODULE(tsis, m) {
              py::arg("rgb") = Vec3{1, 1, 1})
         .def_readwrite("directional", &Light::directional)
         .def_readwrite("vec", &Light::vec, "point: position (mm); directional: direction")
-        .def_readwrite("rgb", &Light::rgb, "point: intensity (W/sr); directional: W/mm²");
+        .def_readwrite("rgb", &Light::rgb, "point: intensity (W/sr); directional: W/mm²")
+        .def("__repr__",
+             [](const Light& l) {
+                 return std::string("Light(") + (l.directional ? "direction=" : "position=") +
+                        vec(l.vec) + ", rgb=" + vec(l.rgb) + ")";
+             })
+        .def(
+            "__eq__",
+            [](const Light& a, const Light& b) {
+                return a.directional == b.directional && a.vec == b.vec && a.rgb == b.rgb;
+            },
+            py::is_operator())
+        .def(py::pickle([](const Light& l) { return py::make_tuple(l.directional, l.vec, l.rgb); },
+                        [](const py::tuple& t0) {
+                            const py::tuple t = state(t0, 3, "Light");
+                            return Light{t[0].cast<bool>(), t[1].cast<Vec3>(), t[2].cast<Vec3>()};
+                        }));
+
+    py::class_<Environment>(m, "Environment")
+        .def(py::init([](const py::object& path, double rotateDeg, double intensity) {
+                 return Environment{pathOf(path), intensity, rotateDeg};
+             }),
+             py::arg("path"), py::kw_only(), py::arg("rotate_deg") = 0.0,
+             py::arg("intensity") = 1.0,
+             "a lat-long radiance map (.exr, .hdr) in W/(mm²·sr), scaled by intensity and "
+             "turned by rotate_deg about +y; checked when set as Scene.environment")
+        .def_readwrite("path", &Environment::path)
+        .def_readwrite("rotate_deg", &Environment::rotateDegrees)
+        .def_readwrite("intensity", &Environment::intensity)
+        .def("__repr__",
+             [](const Environment& e) {
+                 return "Environment(" + quoted(e.path) + ", rotate_deg=" + num(e.rotateDegrees) +
+                        ", intensity=" + num(e.intensity) + ")";
+             })
+        .def(
+            "__eq__",
+            [](const Environment& a, const Environment& b) {
+                return a.path == b.path && a.rotateDegrees == b.rotateDegrees &&
+                       a.intensity == b.intensity;
+            },
+            py::is_operator())
+        .def(py::pickle(
+            [](const Environment& e) {
+                return py::make_tuple(e.path, e.rotateDegrees, e.intensity);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 3, "Environment");
+                return Environment{t[0].cast<std::string>(), t[2].cast<double>(),
+                                   t[1].cast<double>()};
+            }));
 
     py::class_<Camera>(m, "Camera")
         .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, float fov) {
@@ -311,38 +569,147 @@ PYBIND11_MODULE(tsis, m) {
         .def_readwrite("eye", &Camera::eye)
         .def_readwrite("target", &Camera::target)
         .def_readwrite("up", &Camera::up)
-        .def_readwrite("fov", &Camera::fovYDegrees);
+        .def_readwrite("fov", &Camera::fovYDegrees, "vertical field of view (degrees)")
+        .def("__repr__",
+             [](const Camera& c) {
+                 return "Camera(eye=" + vec(c.eye) + ", target=" + vec(c.target) +
+                        ", up=" + vec(c.up) + ", fov=" + num(c.fovYDegrees) + ")";
+             })
+        .def(
+            "__eq__",
+            [](const Camera& a, const Camera& b) {
+                return a.eye == b.eye && a.target == b.target && a.up == b.up &&
+                       a.fovYDegrees == b.fovYDegrees;
+            },
+            py::is_operator())
+        .def(py::pickle(
+            [](const Camera& c) { return py::make_tuple(c.eye, c.target, c.up, c.fovYDegrees); },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 4, "Camera");
+                return Camera{t[0].cast<Vec3>(), t[1].cast<Vec3>(), t[2].cast<Vec3>(),
+                              t[3].cast<float>()};
+            }));
 
-    py::class_<Scene>(m, "Scene")
-        .def(py::init([](const py::kwargs& kw) { return Scene(optionsOf(kw)); }),
+    py::class_<PyScene>(m, "Scene")
+        .def(py::init([](const py::kwargs& kw) {
+                 PyScene s = makeScene(kw);
+                 warnNotes(s.notes());
+                 return s;
+             }),
              "Scene(mesh='builtin:default', size_mm=10, material='skin1', …): the scene options "
-             "of `tsis render`")
+             "of `tsis render`; each note loading it makes is a tsis.NoteWarning")
         .def_static(
             "from_arrays",
             [](const py::object& vertices, const py::object& triangles, const py::kwargs& kw) {
-                return Scene::fromArrays(vertexRows(vertices), triangleRows(triangles),
-                                         optionsOf(kw));
+                PyScene s = makeScene(kw, vertices, triangles);
+                warnNotes(s.notes());
+                return s;
             },
             py::arg("vertices"), py::arg("triangles"),
             "vertices N×3 and triangles M×3 (counter-clockwise from outside); options as Scene()")
-        .def_property("material", &Scene::material, sceneSetter(&Scene::setMaterial, "material"))
+        .def_property("material", &Scene::material, sceneSetter(&Scene::setMaterial, "material"),
+                      "the material of every triangle; None when the mesh file's own apply")
+        .def_property_readonly("materials", &Scene::materials,
+                               "what each part scatters in (the file's, or the one material)")
         .def_property("lights", &Scene::lights, sceneSetter(&Scene::setLights, "lights"))
+        .def_property("environment", &Scene::environment,
+                      sceneSetter(&Scene::setEnvironment, "environment"),
+                      "the Environment lighting the scene, or None")
         .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"))
-        .def("__copy__", [](const Scene& s) { return Scene(s); })
-        .def("__deepcopy__", [](const Scene& s, const py::dict&) { return Scene(s); })
+        .def_property_readonly("notes", &Scene::notes, "what loading the scene noted")
+        .def(
+            "options", [](const PyScene& s) { return keywordsOf(s.options()); },
+            "the scene options as keywords that make this scene again (tsis.Scene(**options); "
+            "from arrays: Scene.from_arrays(vertices, triangles, **options))")
         .def_property_readonly("mesh_name", &Scene::meshName)
         .def_property_readonly("vertex_count", &Scene::vertexCount)
-        .def_property_readonly("triangle_count", &Scene::triangleCount);
+        .def_property_readonly("triangle_count", &Scene::triangleCount)
+        .def("__copy__", [](const PyScene& s) { return PyScene(s); })
+        .def("__deepcopy__", [](const PyScene& s, const py::dict&) { return PyScene(s); })
+        .def("__repr__",
+             [](const PyScene& s) {
+                 const auto mat = s.material();
+                 return "<tsis.Scene " + quoted(s.meshName()) + ": " +
+                        std::to_string(s.triangleCount()) + " triangles, material " +
+                        (mat ? mat->name : "from the file") + ", " +
+                        std::to_string(s.lights().size()) + " lights" +
+                        (s.environment() ? ", environment " + quoted(s.environment()->path) : "") +
+                        ">";
+             })
+        // Pickled as its options (and its arrays), made again on unpickling.
+        .def(py::pickle(
+            [](const PyScene& s) {
+                py::object v = py::none(), t = py::none();
+                if (s.arrays) {
+                    const MeshArrays& a = *s.arrays;
+                    v = py::array_t<float>({py::ssize_t(a.vertices.size() / 3), py::ssize_t(3)},
+                                           a.vertices.data());
+                    t = py::array_t<uint32_t>({py::ssize_t(a.triangles.size() / 3), py::ssize_t(3)},
+                                              a.triangles.data());
+                }
+                return py::make_tuple(keywordsOf(s.options()), v, t);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 3, "Scene");
+                return makeScene(t[0].cast<py::dict>(), t[1], t[2]);
+            }));
 
-    py::class_<Renderer>(m, "Renderer")
+    py::class_<PyFrame>(m, "Frame", "what Renderer.render gives")
+        .def_readwrite("image", &PyFrame::image, "tone-mapped sRGB, H×W×3 uint8, row 0 = top")
+        .def_readwrite("radiance", &PyFrame::radiance, "H×W×3 float32")
+        .def_readwrite("radiosity", &PyFrame::radiosity, "H×W×3 float32")
+        .def_readwrite("position", &PyFrame::position, "H×W×3 float32 (mm)")
+        .def_readwrite("normal", &PyFrame::normal, "H×W×3 float32")
+        .def_readwrite("coverage", &PyFrame::coverage, "H×W×1 float32")
+        .def_readwrite("flux_atlas", &PyFrame::fluxAtlas, "the flux atlas, float32")
+        .def_readwrite("lavg", &PyFrame::lavg, "log-average luminance of the covered pixels")
+        .def_readwrite("stats", &PyFrame::stats, "what `tsis render --stats` writes")
+        .def("__repr__",
+             [](const PyFrame& f) {
+                 const py::object ms = f.stats.contains("ms") ? f.stats["ms"] : py::dict();
+                 std::string s =
+                     py::str("<tsis.Frame {}×{} {}, lavg {:.4g}")
+                         .format(f.stats.attr("get")("width"), f.stats.attr("get")("height"),
+                                 f.stats.attr("get")("method"), f.lavg);
+                 if (py::isinstance<py::dict>(ms) && ms.contains("total"))
+                     s += py::str(", {:.1f} ms").format(ms["total"]).cast<std::string>();
+                 return s + ">";
+             })
+        .def(py::pickle(
+            [](const PyFrame& f) {
+                return py::make_tuple(f.image, f.radiance, f.radiosity, f.position, f.normal,
+                                      f.coverage, f.fluxAtlas, f.lavg, f.stats);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 9, "Frame");
+                return PyFrame{t[0],
+                               t[1],
+                               t[2],
+                               t[3],
+                               t[4],
+                               t[5],
+                               t[6],
+                               t[7].cast<double>(),
+                               t[8].cast<py::dict>()};
+            }));
+
+    py::class_<PyRenderer>(m, "Renderer")
         .def(py::init<const std::string&, const std::string&>(), py::arg("cl_device") = "",
              py::arg("gl") = "")
-        .def("render", &renderFrame, py::arg("scene"),
-             "a frame: image (H×W×3 uint8), radiance, radiosity, position, normal, coverage, "
-             "flux_atlas (float32, row 0 = top), lavg, stats (dict); options as `tsis render`");
+        .def(
+            "render",
+            [](PyRenderer& r, const PyScene& s, const py::kwargs& kw) {
+                return renderFrame(r, s, kw);
+            },
+            py::arg("scene"),
+            "a Frame: image (H×W×3 uint8), radiance, radiosity, position, normal, coverage, "
+            "flux_atlas (float32, row 0 = top), lavg, stats (dict); options as `tsis render`")
+        .def("__repr__", [](const PyRenderer& r) {
+            return "tsis.Renderer(cl_device=" + quoted(r.clDevice) + ", gl=" + quoted(r.gl) + ")";
+        });
     m.def(
         "render",
-        [](const Scene& s, const py::kwargs& kw) { return renderFrame(sharedRenderer(), s, kw); },
+        [](const PyScene& s, const py::kwargs& kw) { return renderFrame(sharedRenderer(), s, kw); },
         py::arg("scene"), "Renderer.render with one renderer kept for every call");
     m.def(
         "compare",

@@ -1,0 +1,240 @@
+"""The Python face of tsis (README "Python"): keyword constructors, reprs,
+equality, pickling, notes as warnings, numpy scalars, two renderers on two
+threads, and the type stubs (python/tsis/__init__.pyi)."""
+import ast
+import copy
+import pathlib
+import pickle
+import threading
+import time
+import warnings
+
+import numpy as np
+import pytest
+
+import tsis
+
+SMALL = dict(width=40, height=32, atlas_res=128, light_res=256)
+SKY = str(pathlib.Path(__file__).resolve().parents[2] / "data" / "env" / "sky.hdr")
+
+
+def tetrahedron():
+    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64)
+    t = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], dtype=np.int64)
+    return v, t
+
+
+def roundtrip(x):
+    return pickle.loads(pickle.dumps(x))
+
+
+# --- values --------------------------------------------------------------
+
+
+def test_material_has_two_keyword_forms():
+    m = tsis.Material(albedo=(0.8, 0.6, 0.5), mfp_mm=(3, 1.5, 0.8), eta=1.4)
+    assert m.albedo == pytest.approx([0.8, 0.6, 0.5]) and m.mfp_mm == pytest.approx([3, 1.5, 0.8])
+    assert m.eta == pytest.approx(1.4) and m.name == "custom"
+    assert all(x > 0 for x in m.sigma_s + m.sigma_a)  # inverted by the default profile
+    s = tsis.Material("mine", sigma_s=(1, 2, 3), sigma_a=(0.1, 0.2, 0.3))
+    assert s.albedo is None and s.mfp_mm is None and s.eta == pytest.approx(1.3)
+    for bad, given in [(dict(), "none"), (dict(sigma_s=(1, 1, 1)), "sigma_s"),
+                       (dict(albedo=(0.5,) * 3, sigma_a=(1,) * 3), "sigma_a, albedo"),
+                       (dict(sigma_s=(1,) * 3, sigma_a=(1,) * 3, albedo=(0.5,) * 3,
+                             mfp_mm=(1,) * 3), "sigma_s, sigma_a, albedo, mfp_mm")]:
+        with pytest.raises(tsis.Error, match=f"give sigma_s and sigma_a, or albedo and mfp_mm "
+                                             f".*; given: {given}$"):
+            tsis.Material(**bad)
+    # σ set by hand: the material is no longer the albedo's.
+    m.sigma_a = [x * 2 for x in m.sigma_a]
+    assert m.albedo is None and m.mfp_mm is None
+
+
+def test_presets():
+    assert tsis.Material.preset("skin1") == tsis.preset_material("skin1")
+    assert tsis.Material.preset("marble").eta == pytest.approx(1.5)
+    with pytest.raises(tsis.Error):
+        tsis.Material.preset("nope")
+
+
+VALUES = [
+    tsis.Material.preset("skin1"),
+    tsis.Material("thin", sigma_s=(0.1, 0.2, 0.3), sigma_a=(0.01, 0.02, 0.03), eta=1.33),
+    tsis.Material(albedo=(0.8, 0.6, 0.5), mfp_mm=(3, 1.5, 0.8)),
+    tsis.Light(position=(0, 12, 6), rgb=(150, 150, 150)),
+    tsis.Light(direction=(0.6, -0.4, -1), rgb=(0.12, 0.12, 0.12)),
+    tsis.Camera(eye=(0, 0, 25), fov=30.5),
+    tsis.Environment("sky.hdr", rotate_deg=30, intensity=0.25),
+]
+
+
+@pytest.mark.parametrize("x", VALUES, ids=lambda x: type(x).__name__)
+def test_values_have_an_eval_repr_equality_and_pickle(x):
+    again = eval(repr(x), vars(tsis))
+    assert again == x and not (again != x)
+    assert roundtrip(x) == x and copy.deepcopy(x) == x
+    assert x != "something else"
+    with pytest.raises(TypeError):
+        hash(x)  # mutable: not hashable
+
+
+def test_values_differ_when_a_field_does():
+    a, b = tsis.Camera(eye=(0, 0, 25)), tsis.Camera(eye=(0, 0, 25))
+    b.fov = 36
+    assert a != b
+    assert tsis.Environment("a.hdr") != tsis.Environment("a.hdr", intensity=2)
+    assert tsis.Light(position=(1, 2, 3)) != tsis.Light(direction=(1, 2, 3))
+
+
+def test_numpy_scalars_wherever_a_number_goes():
+    light = tsis.Light(position=np.array([0, 12, 6]), rgb=(np.int64(150), np.float32(150), 150))
+    assert light == tsis.Light(position=(0, 12, 6), rgb=(150, 150, 150))
+    assert tsis.Camera(eye=(0, 0, np.float32(25)), fov=np.float64(30)).fov == 30
+    assert tsis.Material(sigma_s=np.ones(3), sigma_a=np.full(3, 0.1, np.float32),
+                         eta=np.float32(1.25)).eta == 1.25
+    assert tsis.Environment(pathlib.Path("x.hdr"), rotate_deg=np.int64(30),
+                            intensity=np.float32(0.5)) == tsis.Environment("x.hdr", rotate_deg=30,
+                                                                            intensity=0.5)
+    s = tsis.Scene(mesh="builtin:sphere")
+    assert tsis.render(s, width=np.int64(32), height=np.int16(24), atlas_res=np.int64(64),
+                       light_res=256).image.shape == (24, 32, 3)
+
+
+# --- scenes --------------------------------------------------------------
+
+
+def test_scene_environment_materials_and_repr():
+    s = tsis.Scene(mesh="builtin:sphere", material="marble")
+    assert s.environment is None and s.materials == [s.material]
+    assert "builtin:sphere" in repr(s) and "marble" in repr(s)
+    s.environment = tsis.Environment(SKY, rotate_deg=30)
+    assert s.environment == tsis.Environment(SKY, rotate_deg=30) and s.lights == []
+    assert s.options()["env_rotate"] == "30" and "sky.hdr" in repr(s)
+    with pytest.raises(tsis.Error, match="env-intensity"):
+        s.environment = tsis.Environment(SKY, intensity=-1)
+    s.environment = None
+    assert s.environment is None and len(s.lights) == 2  # the defaults again
+
+
+def test_notes_are_warnings_unless_quiet():
+    open_mesh = dict(vertices=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], triangles=[[0, 1, 2]])
+    with pytest.warns(tsis.NoteWarning, match="not closed") as said:
+        s = tsis.Scene.from_arrays(**open_mesh)
+    assert [str(w.message) for w in said] == s.notes and len(s.notes) == 1
+    assert said[0].filename == __file__  # points at the line that made the scene
+    assert issubclass(tsis.NoteWarning, UserWarning)
+    was = tsis.set_quiet(True)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            assert tsis.Scene.from_arrays(**open_mesh).notes == s.notes
+    finally:
+        tsis.set_quiet(was)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert tsis.Scene(mesh="builtin:sphere").notes == []
+        with pytest.raises(tsis.NoteWarning):
+            tsis.Scene.from_arrays(**open_mesh)
+
+
+def changed_scene():
+    s = tsis.Scene(mesh="builtin:sphere", size_mm=12)
+    s.material = tsis.Material(albedo=(0.8, 0.6, 0.5), mfp_mm=(2, 1, 0.5), eta=1.4)
+    s.lights = [tsis.Light(position=(3, 12, 6), rgb=(140, 150, 160))]
+    s.camera = tsis.Camera(eye=(1, 2, 24), fov=33)
+    return s
+
+
+def test_a_scene_pickles_as_its_options_and_renders_the_same_bytes():
+    s = changed_scene()
+    again = roundtrip(s)
+    remade = tsis.Scene(**s.options())
+    assert again.options() == s.options() == remade.options()
+    assert again.material == s.material and again.lights == s.lights
+    assert again.camera == s.camera
+    r = tsis.Renderer()
+    want = r.render(s, method="tsis", samples=64, **SMALL).image
+    for other in (again, remade, copy.copy(s), copy.deepcopy(s)):
+        assert np.array_equal(r.render(other, method="tsis", samples=64, **SMALL).image, want)
+
+
+def test_a_scene_from_arrays_pickles_with_its_arrays():
+    v, t = tetrahedron()
+    s = tsis.Scene.from_arrays(v, t, size_mm=5, material="marble")
+    s.camera = tsis.Camera(eye=(0, 1, 12))
+    again = roundtrip(s)
+    assert again.mesh_name == "arrays" and again.triangle_count == 4
+    assert again.options() == s.options() and "mesh" not in s.options()
+    a, b = (tsis.render(x, **SMALL) for x in (s, again))
+    assert np.array_equal(a.image, b.image) and np.array_equal(a.radiance, b.radiance)
+
+
+def test_a_frame_is_a_class_that_pickles():
+    f = tsis.render(tsis.Scene(mesh="builtin:sphere"), method="tsis", samples=64, **SMALL)
+    assert isinstance(f, tsis.Frame)
+    assert repr(f).startswith("<tsis.Frame 40×32 tsis, lavg ") and " ms>" in repr(f)
+    g = roundtrip(f)
+    for name in ("image", "radiance", "radiosity", "position", "normal", "coverage",
+                 "flux_atlas"):
+        assert np.array_equal(getattr(g, name), getattr(f, name), equal_nan=True), name
+        assert getattr(g, name).dtype == getattr(f, name).dtype
+    assert g.lavg == f.lavg and g.stats == f.stats
+    assert repr(tsis.Renderer(gl="osmesa")) == "tsis.Renderer(cl_device='', gl='osmesa')"
+
+
+# --- threads -------------------------------------------------------------
+
+
+def test_two_renderers_on_two_threads_render_at_once():
+    scenes = [tsis.Scene(mesh="builtin:sphere", material=m) for m in ("skin1", "marble")]
+    renderers = [tsis.Renderer(), tsis.Renderer()]
+    opts = dict(method="volumetric", spp=16, **SMALL)
+    for r, s in zip(renderers, scenes):
+        r.render(s, **opts)  # programs built, light maps made
+
+    def frames(k):
+        return [renderers[k].render(scenes[k], **opts).image for _ in range(3)]
+
+    t = time.perf_counter()
+    serial = [frames(0), frames(1)]
+    serial_s = time.perf_counter() - t
+    threaded = [None, None]
+    threads = [threading.Thread(target=lambda k=k: threaded.__setitem__(k, frames(k)))
+               for k in (0, 1)]
+    t = time.perf_counter()
+    [x.start() for x in threads]
+    [x.join() for x in threads]
+    threaded_s = time.perf_counter() - t
+    print(f"two renderers: one after another {serial_s:.2f} s, two threads {threaded_s:.2f} s "
+          f"({threaded_s / serial_s:.2f}×)")
+    for k in (0, 1):
+        assert threaded[k] is not None and len(threaded[k]) == 3
+        assert all(np.array_equal(a, b) for a, b in zip(threaded[k], serial[k]))
+
+
+# --- stubs ---------------------------------------------------------------
+
+
+def test_stub_covers_the_module():
+    stub = pathlib.Path(__file__).resolve().parents[1] / "tsis" / "__init__.pyi"
+    tree = ast.parse(stub.read_text())
+    top, members = set(), {}
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            top.add(node.name)
+        elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            top.update(t.id for t in targets if isinstance(t, ast.Name))
+        if isinstance(node, ast.ClassDef):
+            members[node.name] = {n.name if hasattr(n, "name") else n.target.id
+                                  for n in node.body if isinstance(n, (ast.FunctionDef,
+                                                                       ast.AnnAssign))}
+    public = {n for n in dir(tsis) if not n.startswith("_") and not isinstance(
+        getattr(tsis, n), type(tsis))}  # submodules have their own sources
+    assert public - top == set()
+    for name, names in members.items():
+        cls = getattr(tsis, name)
+        if issubclass(cls, BaseException):
+            continue
+        own = {n for n in vars(cls) if not n.startswith("_")}
+        assert own - names == set(), name

@@ -1,0 +1,102 @@
+# Type stubs of `import tsis` (python/tsis_module.cpp). Kept whole: the test
+# test_stub_covers_the_module checks every public name of the module is here.
+from os import PathLike
+from typing import Any, Sequence, SupportsFloat, SupportsIndex
+
+import numpy as np
+import numpy.typing as npt
+
+Vec3 = Sequence[SupportsFloat]  # three numbers (numpy scalars and arrays too)
+# An option's value: str as typed, a number, a flag, or a sequence (x,y,z; a
+# list of lights).
+OptionValue = str | SupportsFloat | SupportsIndex | bool | Sequence[Any]
+
+class Error(RuntimeError): ...
+class NoteWarning(UserWarning): ...
+
+def set_quiet(quiet: bool = True) -> bool: ...
+
+class Material:
+    name: str
+    sigma_s: list[float]  # setting it (or sigma_a) drops albedo and mfp_mm
+    sigma_a: list[float]
+    eta: float
+    @property
+    def albedo(self) -> list[float] | None: ...
+    @property
+    def mfp_mm(self) -> list[float] | None: ...
+    @property
+    def albedo_texture(self) -> str: ...
+    def __init__(self, name: str = "custom", *, sigma_s: Vec3 | None = None,
+                 sigma_a: Vec3 | None = None, albedo: Vec3 | None = None,
+                 mfp_mm: Vec3 | None = None, eta: float = 1.3) -> None: ...
+    @staticmethod
+    def preset(name: str) -> Material: ...
+
+def preset_material(name: str) -> Material: ...
+def preset_materials() -> list[str]: ...
+
+class Light:
+    directional: bool
+    vec: list[float]  # point: position (mm); directional: direction
+    rgb: list[float]
+    def __init__(self, *, position: Vec3 | None = None, direction: Vec3 | None = None,
+                 rgb: Vec3 = (1, 1, 1)) -> None: ...
+
+class Environment:
+    path: str
+    rotate_deg: float
+    intensity: float
+    def __init__(self, path: str | PathLike[str], *, rotate_deg: float = 0.0,
+                 intensity: float = 1.0) -> None: ...
+
+class Camera:
+    eye: list[float]
+    target: list[float]
+    up: list[float]
+    fov: float
+    def __init__(self, eye: Vec3, target: Vec3 = (0, 0, 0), up: Vec3 = (0, 1, 0),
+                 fov: float = 35.0) -> None: ...
+
+class Scene:
+    material: Material | None  # None: the mesh file's own materials apply
+    lights: list[Light]
+    environment: Environment | None
+    camera: Camera
+    @property
+    def materials(self) -> list[Material]: ...
+    @property
+    def notes(self) -> list[str]: ...
+    @property
+    def mesh_name(self) -> str: ...
+    @property
+    def vertex_count(self) -> int: ...
+    @property
+    def triangle_count(self) -> int: ...
+    def __init__(self, **options: OptionValue) -> None: ...
+    @staticmethod
+    def from_arrays(vertices: npt.ArrayLike, triangles: npt.ArrayLike,
+                    **options: OptionValue) -> Scene: ...
+    def options(self) -> dict[str, str | bool | list[str]]: ...
+    def __copy__(self) -> Scene: ...
+    def __deepcopy__(self, memo: dict[int, Any]) -> Scene: ...
+
+class Frame:
+    image: npt.NDArray[np.uint8]  # H×W×3, row 0 = top
+    radiance: npt.NDArray[np.float32]  # H×W×3
+    radiosity: npt.NDArray[np.float32]
+    position: npt.NDArray[np.float32]
+    normal: npt.NDArray[np.float32]
+    coverage: npt.NDArray[np.float32]  # H×W×1
+    flux_atlas: npt.NDArray[np.float32]
+    lavg: float
+    stats: dict[str, Any]
+
+class Renderer:
+    def __init__(self, cl_device: str = "", gl: str = "") -> None: ...
+    def render(self, scene: Scene, **options: OptionValue) -> Frame: ...
+
+def render(scene: Scene, **options: OptionValue) -> Frame: ...
+def compare(image: npt.ArrayLike, reference: npt.ArrayLike,
+            mask: npt.ArrayLike | None = None) -> dict[str, float | int]: ...
+def option_help() -> str: ...
