@@ -8,7 +8,7 @@
 #   ./setup.sh fuzz [S] [ARGS…]  install clang + build and run the mesh-loader fuzzer for S seconds (default 60; ARGS to libFuzzer)
 #   ./setup.sh sanitize   build with ASan+UBSan into build-sanitize/ and run the whole suite
 #   ./setup.sh sanitize-quick   the same for the loaders, physics, CL host code and one render (CI)
-#   ./setup.sh python     install + build + install `import tsis` for /usr/bin/python3
+#   ./setup.sh python     install + build the module alone + install `import tsis` for /usr/bin/python3
 #   ./setup.sh clang      build everything with clang and -Werror into build-clang/ (CI)
 #   ./setup.sh tidy       clang-tidy (.clang-tidy) on the C++ files changed since .ci/tidy-base (CI)
 #   ./setup.sh bench-blender [ARGS…]  install Blender (only if missing) and time tsis against EEVEE's
@@ -76,9 +76,10 @@ unpack_meshes() {
   log "unpacked $(ls "$dest" | wc -l) meshes into $dest"
 }
 
+# build [--target T]: everything, or the targets named.
 build() {
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$BUILD_DIR" -j "$JOBS"
+  cmake --build "$BUILD_DIR" -j "$JOBS" "$@"
 }
 
 # Everything (tests, bench, the Python module) with clang and warnings as
@@ -114,6 +115,8 @@ install_packages
 unpack_meshes
 case "${1:-}" in
   fuzz | sanitize | sanitize-quick | clang | tidy | bench-blender) ;;
+  # The module alone: the library it links, not the CLI, tests or benches.
+  python) build --target tsis_python ;;
   *) build ;;
 esac
 case "${1:-}" in

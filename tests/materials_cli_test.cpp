@@ -11,12 +11,11 @@
 #include "image/image_io.h"
 #include "support/boxes.h"
 #include "support/tsis_cli.h"
+#include "util/json.h"
 
 namespace tsis::test {
 namespace {
 
-// Two 10 mm cubes 4 mm apart (diagonal √776 mm: kept at that size), the left
-// one of material "textured", the right one of "plain".
 // Mean red radiosity over the middle of each cube's front face (z = +5).
 void frontFaces(const ImageF& position, const ImageF& radiosity, double& left, double& right) {
     double sum[2] = {0, 0};
@@ -141,6 +140,38 @@ TEST(MaterialsCli, OneSolidOfTwoMaterialsScattersEachWithItsOwn) {
     EXPECT_LT(left, 2e-3);
     EXPECT_LT(right, 2e-3);
     EXPECT_GT(apart, 0.3);
+}
+
+// --stats' scene_args replay the render: with the same render options they
+// give the same bytes, a file's materials (textured or not, mfp and η given
+// over them), a material given by albedo + mfp and an environment included.
+TEST(MaterialsCli, StatsSceneArgsReplayTheRenderExactly) {
+    ScratchDir dir;
+    std::ofstream(dir.file("cubes.obj")) << twoCubesObj();
+    std::ofstream(dir.file("cubes.mtl"))
+        << "newmtl textured\nKd 1 1 1\nmap_Kd grey.png\nnewmtl plain\nKd 0.3 0.3 0.3\nNi 1.3\n";
+    writeImage8(dir.file("grey.png"), 4, 4, 3, std::vector<uint8_t>(48, 200));
+    const std::string cubes = "--mesh " + dir.file("cubes.obj");
+    const std::string sky = std::string(TSIS_SOURCE_DIR) + "/data/env/sky.hdr";
+    const std::string frame = "--width 48 --height 32 --atlas-res 128 --light-res 256 ";
+    for (const std::string& scene : std::vector<std::string>{
+             cubes, cubes + " --size-mm 40 --mfp 2,1,0.5 --eta 1.4",
+             "--mesh builtin:sphere --albedo 0.8,0.6,0.5 --mfp 3,1.5,0.8 --profile pbd",
+             "--mesh builtin:sphere --material marble --env " + sky + " --env-rotate 30"}) {
+        SCOPED_TRACE(scene);
+        const RunResult a = runTsis("render " + frame + scene + " -o " + dir.file("a.png") +
+                                    " --stats " + dir.file("a.json"));
+        ASSERT_EQ(a.exitCode, 0) << a.err;
+        const Json stats = Json::parse(readFile(dir.file("a.json")));
+        // scene_args has the mesh's --atlas-res: the rest of the frame's options.
+        std::string replay = "render --width 48 --height 32 --light-res 256 ";
+        if (scene.find("--profile pbd") != std::string::npos) replay += "--profile pbd ";
+        for (const auto& arg : stats.at("scene_args"))
+            replay += shellQuote(arg.get<std::string>()) + " ";
+        const RunResult b = runTsis(replay + "-o " + dir.file("b.png"));
+        ASSERT_EQ(b.exitCode, 0) << b.err;
+        EXPECT_EQ(readFile(dir.file("a.png")), readFile(dir.file("b.png"))) << replay;
+    }
 }
 
 }  // namespace

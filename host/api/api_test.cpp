@@ -219,6 +219,78 @@ TEST(ApiScene, FileMaterialsStayTheFilesAndOptionsReplayTheScene) {
     EXPECT_EQ(r.render(Scene(s.options()), frame).rgb8, r.render(s, frame).rgb8);
 }
 
+// Mean red radiance of the covered pixels whose x position is beyond `x`
+// on the side of `sign`, and how many there were.
+std::pair<double, int> sideMean(const Frame& f, float x, float sign) {
+    double sum = 0;
+    int n = 0;
+    for (int k = 0; k < f.width * f.height; ++k) {
+        if (!(f.coverage.pixels[k] > 0.5f)) continue;
+        if (sign * (f.position.pixels[3 * k] - x) <= 0) continue;
+        sum += f.radiance.pixels[3 * k];
+        ++n;
+    }
+    return {n ? sum / n : 0.0, n};
+}
+
+// A scene of objects: each stands where its transform puts it and scatters
+// in its own material (a change of one object's material changes its pixels
+// alone: no light crosses between media), each error names its object, and
+// one object of arrays is fromArrays' scene.
+TEST(ApiScene, ObjectsStandWhereTheyArePutAndScatterInTheirOwnMaterials) {
+    const Options frame{
+        {"width", "64"}, {"height", "32"}, {"atlas-res", "256"}, {"light-res", "256"}};
+    auto objects = [](const char* right) {
+        std::vector<Object> o(2);
+        o[0].mesh = o[1].mesh = "builtin:sphere";
+        o[0].transform.translateMm = {-3, 0, 0};
+        o[1].transform = {1.5f, {0, 90, 0}, {3, 0, 0}};
+        o[0].material = Material::preset("marble");
+        o[1].material = Material::preset(right);
+        return o;
+    };
+    const Options scene{{"size-mm", "file"}, {"light", "dir:0,0,-1:1,1,1"}, {"eye", "0,0,12"}};
+    const Scene same = Scene::fromObjects(objects("marble"), scene);
+    const Scene other = Scene::fromObjects(objects("ketchup"), scene);
+    ASSERT_EQ(other.materials().size(), 2u);
+    EXPECT_EQ(other.materials()[1].name, "object 1");
+    EXPECT_EQ(other.objects().size(), 2u);
+    Renderer r;
+    const Frame a = r.render(same, frame), b = r.render(other, frame);
+    // The left sphere (radius 1 mm at x = −3) and the right one (1.5 mm at x = +3).
+    const auto [leftA, nLeft] = sideMean(a, -1.5f, -1);
+    const auto [leftB, nLeftB] = sideMean(b, -1.5f, -1);
+    const auto [rightA, nRight] = sideMean(a, 1.0f, 1);
+    const auto [rightB, nRightB] = sideMean(b, 1.0f, 1);
+    std::printf("left %.5f / %.5f (%d px), right %.5f / %.5f (%d px)\n", leftA, leftB, nLeft,
+                rightA, rightB, nRight);
+    EXPECT_GT(nLeft, 20);
+    EXPECT_GT(nRight, 2 * nLeft);  // 1.5× the radius: 2.25× the pixels
+    EXPECT_EQ(nLeftB, nLeft);
+    EXPECT_EQ(nRightB, nRight);
+    EXPECT_NEAR(leftB / leftA, 1.0, 0.03);
+    EXPECT_GT(std::abs(rightB / rightA - 1.0), 0.1);
+    // Errors name the object.
+    std::vector<Object> bad = objects("marble");
+    bad[1].transform.scale = -1;
+    EXPECT_EQ(errorOf([&] { Scene::fromObjects(bad); }),
+              "object 1 (builtin:sphere): scale -1 must be positive");
+    bad[1].transform.scale = 1;
+    bad[1].vertices = {0, 0, 0};
+    EXPECT_EQ(errorOf([&] { Scene::fromObjects(bad); }),
+              "object 1: a mesh file and arrays: give one");
+    EXPECT_NE(errorOf([] { Scene::fromObjects({}); }).find("at least one object"),
+              std::string::npos);
+    // One object of arrays: the scene fromArrays makes.
+    const std::vector<float> v = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const std::vector<uint32_t> t = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    Object tet;
+    tet.vertices = v;
+    tet.triangles = t;
+    EXPECT_EQ(r.render(Scene::fromObjects({tet}), frame).rgb8,
+              r.render(Scene::fromArrays(v, t, {}, "object 0"), frame).rgb8);
+}
+
 // The facade adds nothing to a frame: the same bytes as the internal renderer
 // given the options `tsis render` would parse.
 TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {

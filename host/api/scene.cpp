@@ -17,8 +17,9 @@ namespace tsis::api {
 namespace {
 
 // The description the scene options among `options` give; a render option
-// is an error (Scene does nothing with it).
-SceneDescription describe(const Options& options, bool arrays) {
+// is an error (Scene does nothing with it), and so is --mesh where `maker`
+// (fromArrays, fromObjects) has the mesh already.
+SceneDescription describe(const Options& options, const char* maker = nullptr) {
     const Args args("render", sceneOptionSpecs(), options.args());
     for (const OptionSpec& s : sceneOptionSpecs()) {
         if (!args.has(s.name) || findSceneParam(s.name) || s.name == "atlas-res") continue;
@@ -26,9 +27,26 @@ SceneDescription describe(const Options& options, bool arrays) {
             fail("Scene: option --", s.name, " is the Renderer's: give it when making one");
         fail("Scene: option --", s.name, " is not the scene's: give it to Renderer::render");
     }
-    if (arrays && args.has("mesh"))
-        fail("Scene::fromArrays: option --mesh: the arrays are the mesh");
+    if (maker && args.has("mesh"))
+        fail("Scene::", maker, ": option --mesh: the ",
+             maker == std::string("fromArrays") ? "arrays" : "objects", " are the mesh");
     return sceneDescriptionFromArgs(args);
+}
+
+// A mesh from arrays as a loader gives one (repaired), named `name`.
+Mesh meshOfArrays(const std::vector<float>& vertices, const std::vector<uint32_t>& triangles,
+                  const std::string& name) {
+    if (vertices.size() % 3 || triangles.size() % 3)
+        fail("mesh '", name, "': ", vertices.size(), " vertex coordinates and ", triangles.size(),
+             " triangle indices: each must be a multiple of 3");
+    Mesh mesh;
+    mesh.name = name;
+    for (size_t i = 0; i < vertices.size(); i += 3)
+        mesh.positions.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
+    for (size_t i = 0; i < triangles.size(); i += 3)
+        mesh.triangles.emplace_back(triangles[i], triangles[i + 1], triangles[i + 2]);
+    repairMesh(mesh);
+    return mesh;
 }
 
 tsis::Material toInternal(const Material& m) {
@@ -87,8 +105,9 @@ Material shown(const MaterialDescription& d, const tsis::Material& resolved) {
 }
 
 // Scene::Impl's scene made again from its description, the mesh kept:
-// throws the description's error and leaves `impl` as it was.
-void replace(Scene::Impl& impl, const SceneDescription& next) {
+// throws the description's error and leaves `impl` as it was. With
+// `newMaterial` the description's material replaces every object's and file's.
+void replace(Scene::Impl& impl, const SceneDescription& next, bool newMaterial = false) {
     tsis::Scene& s = impl.scene;
     // Placed by the size the mesh has (the file's own, once loaded).
     SceneDescription placing = next;
@@ -100,11 +119,10 @@ void replace(Scene::Impl& impl, const SceneDescription& next) {
     tsis::Scene placed = placedScene(placing, impl.profile);
     placed.mesh = std::move(s.mesh);
     placed.sizeMm = s.sizeMm;
-    // The file's materials stay unless the new description replaces them.
-    if (!overridesOf(next.material).replaceAll)
-        placed.objectMaterials = std::move(s.objectMaterials);
+    if (!newMaterial) placed.objectMaterials = std::move(s.objectMaterials);
     s = std::move(placed);
     impl.description = next;
+    if (newMaterial) impl.fileMaterials.materials.clear();  // until the scene is made again
 }
 
 // `d` with the lights (unless an environment lights alone) and camera the
@@ -121,14 +139,19 @@ SceneDescription pinned(const Scene::Impl& impl, SceneDescription d) {
 }  // namespace
 
 std::optional<tsis::Scene> Scene::Impl::withProfile(ProfileModel p) const {
-    if (p == profile || !description.material.mfpMm) return std::nullopt;
+    // What a profile inverts: albedo + mfp given, and a file's materials
+    // (their albedo with a mean free path).
+    if (p == profile || (!description.material.mfpMm && fileMaterials.materials.empty()))
+        return std::nullopt;
     tsis::Scene s = scene;
     const NoteCapture quiet;  // said once, when the scene was made
     s.material = resolveMaterial(description.material, p);
-    if (!overridesOf(description.material).replaceAll)
-        s.objectMaterials =
-            objectMaterials(fileMaterials.materials, s.material, overridesOf(description.material),
-                            p, fileMaterials.mmPerFileUnit, fileMaterials.meshName);
+    // Objects keep their own materials; the description's fills the rest.
+    const MaterialOverrides over =
+        description.objects.empty() ? overridesOf(description.material) : MaterialOverrides{};
+    if (!over.replaceAll)
+        s.objectMaterials = objectMaterials(fileMaterials.materials, s.material, over, p,
+                                            fileMaterials.mmPerFileUnit, fileMaterials.meshName);
     return s;
 }
 
@@ -161,7 +184,7 @@ std::vector<std::string> presetMaterialNames() {
 Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 Scene::Scene(const Options& options) : impl_(std::make_unique<Impl>()) {
-    impl_->description = describe(options, false);
+    impl_->description = describe(options);
     const NoteCapture notes;
     impl_->scene = guarded(
         [&] { return buildScene(impl_->description, impl_->profile, &impl_->fileMaterials); });
@@ -176,32 +199,55 @@ Scene load(const std::string& path, const Options& options) {
 
 Scene Scene::fromArrays(const std::vector<float>& vertices, const std::vector<uint32_t>& triangles,
                         const Options& options, const std::string& name) {
-    if (vertices.size() % 3 || triangles.size() % 3)
-        fail("mesh '", name, "': ", vertices.size(), " vertex coordinates and ", triangles.size(),
-             " triangle indices: each must be a multiple of 3");
     Scene s(std::make_unique<Impl>());
     Impl& impl = *s.impl_;
-    impl.description = describe(options, true);
+    impl.arraysName = name.empty() ? "arrays" : name;  // its notes name it
+    Mesh mesh = meshOfArrays(vertices, triangles, impl.arraysName);
+    impl.description = describe(options, "fromArrays");
     impl.vertices = vertices;
     impl.triangles = triangles;
-    impl.arraysName = name.empty() ? "arrays" : name;  // its notes name it
     if (impl.description.mesh.sizeFromFile)
         fail("--size-mm file: arrays have no size of their own");
     const NoteCapture notes;
     impl.scene = placedScene(impl.description, impl.profile);
-    Mesh mesh;
-    mesh.name = impl.arraysName;
-    for (size_t i = 0; i < vertices.size(); i += 3)
-        mesh.positions.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
-    for (size_t i = 0; i < triangles.size(); i += 3)
-        mesh.triangles.emplace_back(triangles[i], triangles[i + 1], triangles[i + 2]);
-    // What a loader does (repair), then what `tsis render` does with a loaded mesh.
-    repairMesh(mesh);
+    // What `tsis render` does with a loaded mesh.
     setOutsideAssetsAllowed(impl.description.mesh.allowOutsideAssets);
     impl.scene.mesh = prepareLoadedMesh(std::move(mesh), nominalSizeMm(impl.description.mesh),
                                         meshOptionsOf(impl.description.mesh));
     impl.notes = notes.notes();
     return s;
+}
+
+Scene Scene::fromObjects(const std::vector<Object>& objects, const Options& options) {
+    Scene s(std::make_unique<Impl>());
+    Impl& impl = *s.impl_;
+    if (objects.empty()) fail("Scene::fromObjects: a scene of objects needs at least one object");
+    impl.description = describe(options, "fromObjects");
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const Object& o = objects[i];
+        ObjectDescription d;
+        d.spec = o.mesh;
+        if (o.mesh.empty())
+            d.arrays = std::make_shared<const Mesh>(
+                meshOfArrays(o.vertices, o.triangles, "object " + std::to_string(i)));
+        else if (!o.vertices.empty() || !o.triangles.empty())
+            fail("object ", i, ": a mesh file and arrays: give one");
+        d.scale = o.transform.scale;
+        d.rotateDegrees = glm::dvec3(toGlm(o.transform.rotateDegrees));
+        d.translateMm = glm::dvec3(toGlm(o.transform.translateMm));
+        if (o.material) d.material = describe(*o.material);
+        impl.description.objects.push_back(std::move(d));
+    }
+    impl.objects = objects;
+    const NoteCapture notes;
+    impl.scene =
+        guarded([&] { return buildScene(impl.description, impl.profile, &impl.fileMaterials); });
+    impl.notes = notes.notes();
+    return s;
+}
+
+const std::vector<Object>& Scene::objects() const {
+    return impl_->objects;
 }
 
 Scene::Scene(const Scene& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
@@ -222,7 +268,9 @@ std::optional<Material> Scene::material() const {
 void Scene::setMaterial(const Material& material) {
     SceneDescription next = pinned(*impl_, impl_->description);
     next.material = describe(material);
-    replace(*impl_, next);
+    for (ObjectDescription& o : next.objects) o.material = next.material;
+    replace(*impl_, next, true);
+    for (Object& o : impl_->objects) o.material = material;
 }
 
 std::vector<Material> Scene::materials() const {

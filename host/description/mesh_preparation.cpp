@@ -68,6 +68,14 @@ void loadMeshInto(Scene& scene, const std::string& spec, double size, const Mesh
                   std::optional<double> unitsMm, FileMaterials* kept) {
     FileView view;
     Mesh mesh = loadMesh(spec, &view);
+    loadMeshInto(scene, std::move(mesh), std::move(view), spec, size, o, use, overrides, profile,
+                 fileSize, unitsMm, kept);
+}
+
+void loadMeshInto(Scene& scene, Mesh mesh, FileView view, const std::string& spec, double size,
+                  const MeshOptions& o, const FileViewUse& use, const MaterialOverrides& overrides,
+                  ProfileModel profile, const std::function<void(Scene&, double)>& fileSize,
+                  std::optional<double> unitsMm, FileMaterials* kept) {
     turn(mesh, &view, o);
     if (fileSize) {
         size = fileSizeMm(mesh, view, unitsMm, spec);

@@ -53,5 +53,10 @@ void loadMeshInto(Scene& scene, const std::string& spec, double size, const Mesh
                   const FileViewUse& use, const MaterialOverrides& overrides, ProfileModel profile,
                   const std::function<void(Scene&, double)>& fileSize = {},
                   std::optional<double> unitsMm = std::nullopt, FileMaterials* kept = nullptr);
+// The same for a mesh already loaded with its file's view (`spec` names it).
+void loadMeshInto(Scene& scene, Mesh mesh, FileView view, const std::string& spec, double size,
+                  const MeshOptions& o, const FileViewUse& use, const MaterialOverrides& overrides,
+                  ProfileModel profile, const std::function<void(Scene&, double)>& fileSize,
+                  std::optional<double> unitsMm, FileMaterials* kept);
 
 }  // namespace tsis

@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "description/mesh_preparation.h"
+#include "description/objects.h"
 #include "physics/material.h"
 #include "render/albedo_inversion.h"
 #include "scene/environment.h"
@@ -167,10 +168,20 @@ void loadSceneMesh(Scene& scene, const SceneDescription& d, ProfileModel profile
         placeBySize(s, d, size);
         applyEnvironment(s);
     };
-    loadMeshInto(scene, meshSpecOf(d.mesh), nominalSizeMm(d.mesh), meshOptionsOf(d.mesh),
-                 fileViewUseOf(d), overridesOf(d.material), profile,
-                 d.mesh.sizeFromFile ? std::function<void(Scene&, double)>(placeAgain) : nullptr,
-                 unitsMmOf(d.mesh), kept);
+    const std::function<void(Scene&, double)> fileSize =
+        d.mesh.sizeFromFile ? std::function<void(Scene&, double)>(placeAgain) : nullptr;
+    if (d.objects.empty()) {
+        loadMeshInto(scene, meshSpecOf(d.mesh), nominalSizeMm(d.mesh), meshOptionsOf(d.mesh),
+                     fileViewUseOf(d), overridesOf(d.material), profile, fileSize,
+                     unitsMmOf(d.mesh), kept);
+        return;
+    }
+    // The objects' own materials stay theirs: the description's fills the rest.
+    FileView view;
+    Mesh mesh = combinedMesh(d.objects, view);
+    loadMeshInto(scene, std::move(mesh), std::move(view), "objects", nominalSizeMm(d.mesh),
+                 meshOptionsOf(d.mesh), fileViewUseOf(d), MaterialOverrides{}, profile, fileSize,
+                 std::nullopt, kept);
 }
 
 Scene buildScene(const SceneDescription& d, ProfileModel profile, FileMaterials* kept) {

@@ -10,11 +10,13 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "atlas/atlas.h"
+#include "mesh/mesh.h"
 #include "render/object_materials.h"
 #include "render/render_options.h"
 #include "scene/from_file.h"
@@ -68,6 +70,20 @@ struct MaterialDescription {
     bool any() const { return preset || sigmaSPrime || sigmaA || eta || albedo || mfpMm; }
 };
 
+// One object of a scene of several (Scene::fromObjects, description/objects.h).
+struct ObjectDescription {
+    std::string spec;                    // a mesh file or builtin:NAME; empty: `arrays`
+    std::shared_ptr<const Mesh> arrays;  // a mesh given as arrays (repaired), in mm
+    // Scaled, then turned (degrees about X, then Y, then Z), then moved, in
+    // the scene's millimetres; a file's positions in its stated unit (glTF:
+    // metres), else as millimetres.
+    double scale = 1;
+    glm::dvec3 rotateDegrees{0.0}, translateMm{0.0};
+    // Its material over all of its triangles; none: its file's materials,
+    // where it has none the scene's.
+    std::optional<MaterialDescription> material;
+};
+
 struct EnvironmentDescription {
     std::string path;  // a lat-long radiance map (.exr, .hdr); empty: not given (an error)
     std::optional<double> intensity, rotateDegrees;
@@ -80,7 +96,10 @@ struct CameraDescription {
 };
 
 struct SceneDescription {
-    MeshDescription mesh;
+    MeshDescription mesh;  // with objects: how their one mesh is made ready (no spec)
+    // Objects each placed and given its material (empty: mesh.spec alone).
+    // The description's material then fills only what no object or file gives.
+    std::vector<ObjectDescription> objects;
     MaterialDescription material;
     std::vector<Light> lights;  // empty: the file's, else the defaults (none with an env)
     std::optional<EnvironmentDescription> env;

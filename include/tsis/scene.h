@@ -57,6 +57,27 @@ struct Camera {
     float fovYDegrees = 35;  // vertical
 };
 
+// Where an object stands in its scene: scaled, then turned (degrees about
+// X, then Y, then Z), then moved (mm).
+struct Transform {
+    float scale = 1;
+    Vec3 rotateDegrees{0, 0, 0};
+    Vec3 translateMm{0, 0, 0};
+};
+
+// One object of a scene of several (Scene::fromObjects): a mesh file (its
+// positions in the unit it states, glTF's metres, else millimetres) or
+// arrays (mm), placed by its transform, scattering in its material.
+struct Object {
+    std::string mesh;                 // a file (glTF, OBJ, PLY, STL, OFF) or builtin:NAME
+    std::vector<float> vertices;      // with no mesh: x,y,z per vertex (mm)
+    std::vector<uint32_t> triangles;  // three per triangle, counter-clockwise from outside
+    Transform transform;
+    // Over all of the object; none: its file's materials, and where it has
+    // none the scene's (the options' material).
+    std::optional<Material> material;
+};
+
 class Scene {
   public:
     // The scene of these scene options (`tsis render`'s: mesh, size-mm,
@@ -70,6 +91,14 @@ class Scene {
     static Scene fromArrays(const std::vector<float>& vertices,
                             const std::vector<uint32_t>& triangles, const Options& options = {},
                             const std::string& name = "arrays");
+    // Several objects, each placed and given its material, as one scene: the
+    // whole scaled to size-mm (or with size-mm "file" kept at its own size in
+    // mm); the rest from `options` (no mesh). Every method sees them as it
+    // sees a file of several objects: a medium each, shadows between them.
+    static Scene fromObjects(const std::vector<Object>& objects, const Options& options = {});
+    // The objects as given to fromObjects (empty for any other scene).
+    const std::vector<Object>& objects() const;
+
     Scene(const Scene& other);
     Scene(Scene&& other) noexcept;
     Scene& operator=(const Scene& other);
