@@ -291,6 +291,41 @@ TEST(ApiScene, ObjectsStandWhereTheyArePutAndScatterInTheirOwnMaterials) {
               r.render(Scene::fromArrays(v, t, {}, "object 0"), frame).rgb8);
 }
 
+// A volumetric frame split into batches of passes (--spp-offset) merges,
+// as the spp-weighted mean of their radiance, into the whole frame's: to
+// float rounding, for both estimators (tsis.distributed.render_split).
+TEST(ApiRenderer, VolumetricBatchesMergeIntoTheWholeFrame) {
+    const Scene s(Options{{"mesh", "builtin:sphere"}, {"material", "marble"}});
+    Renderer r;
+    for (const char* estimator : {"camera", "light"}) {
+        SCOPED_TRACE(estimator);
+        Options o{{"width", "24"},
+                  {"height", "24"},
+                  {"method", "volumetric"},
+                  {"estimator", estimator},
+                  {"seed", "7"}};
+        o.set("spp", "6");
+        const Image whole = r.render(s, o).radiance;
+        std::vector<double> merged(whole.pixels.size(), 0.0);
+        for (const auto& [offset, spp] : {std::pair{0, 1}, std::pair{1, 3}, std::pair{4, 2}}) {
+            o.set("spp", spp).set("spp-offset", offset);
+            const Image part = r.render(s, o).radiance;
+            for (size_t k = 0; k < merged.size(); ++k) merged[k] += part.pixels[k] * spp / 6.0;
+        }
+        double worst = 0, mean = 0;
+        for (size_t k = 0; k < merged.size(); ++k) {
+            worst = std::max(worst, std::abs(merged[k] - whole.pixels[k]));
+            mean += whole.pixels[k] / static_cast<double>(merged.size());
+        }
+        std::printf("%s: largest difference %.3g, mean radiance %.3g\n", estimator, worst, mean);
+        EXPECT_GT(mean, 0.0);
+        EXPECT_LE(worst, 1e-5 * std::max(mean, 1e-3)) << "mean " << mean;
+        // Other seeds' passes are other pictures: the check can fail.
+        o.set("spp", "6").set("spp-offset", "6");
+        EXPECT_NE(r.render(s, o).radiance.pixels, whole.pixels);
+    }
+}
+
 // The facade adds nothing to a frame: the same bytes as the internal renderer
 // given the options `tsis render` would parse.
 TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {

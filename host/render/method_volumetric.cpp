@@ -1,5 +1,6 @@
 #include "render/method_volumetric.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -61,7 +62,9 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     });
 
     const RenderOptions& o = *ctx.options;
-    const int spp = o.spp > 0 ? o.spp : (o.timeSeconds > 0 ? (1 << 20) : kDefaultSpp);
+    // Pass s draws its own streams (below): at most 2^20 passes in all.
+    const int spp = std::min(o.spp > 0 ? o.spp : (o.timeSeconds > 0 ? (1 << 20) : kDefaultSpp),
+                             (1 << 20) - o.sppOffset);
     const uint64_t seed = frameSeed(ctx);
     std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
     std::atomic<long long> vertices{0}, nee{0}, unsettled{0};
@@ -116,7 +119,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     };
     int done = 0;
     while (done < spp) {
-        const auto s = static_cast<uint64_t>(done);
+        const auto s = static_cast<uint64_t>(o.sppOffset + done);
         if (photons)
             lightPass(s);
         else

@@ -146,6 +146,10 @@ struct RenderOptions {
     // a time budget in seconds (0 = none); render/method_volumetric.h.
     int spp = 0;
     double timeSeconds = 0;
+    // volumetric: the index of the first pass, so that batches of one frame
+    // (offsets 0, N, 2N, … of --spp N each) draw the passes the whole frame
+    // draws: their spp-weighted mean is its image.
+    int sppOffset = 0;
     // Copy radiosity/radiance/position/normal/coverage/atlas to the host result.
     bool keepAovs = false;
     // Average this frame's radiosity with the frames before it while nothing

@@ -217,6 +217,11 @@ std::vector<RenderParam> makeParams() {
         number({"spp", "N  paths per pixel (default 16; with --time: until the time is up)",
                 M{"volumetric"}, kRadiosity, false, false},
                &O::spp, {1, 1 << 20}),
+        number({"spp-offset",
+                "K  the first pass's index: batches of one frame (--spp N each at offsets 0, N, "
+                "2N, …; tsis.distributed) whose spp-weighted mean is the whole frame",
+                M{"volumetric"}, kRadiosity},
+               &O::sppOffset, {0, 1 << 19}),
         choice({"estimator",
                 "E  camera (paths from each pixel, connected to the lights) or light (photons "
                 "from the lights, connected to the pinhole; --spp N: N × the covered pixels "
