@@ -1,15 +1,19 @@
 #!/usr/bin/env python3
-"""hygiene.docs: README.md and docs/design.md name only what exists.
+"""hygiene.docs: README.md and docs/**/*.md name only what exists.
 
   hygiene_docs.py SOURCE_DIR TSIS_BINARY
 
-Checks that every repository path they name (in `code` or a relative link)
-is a file or folder of the tree, that every --option they name is one a tsis
-command takes (its --help) or one of the other programs listed below, and
-that design.md's method table (§4) lists exactly the methods tsis registers,
-and that README's table of method options gives each the methods the
-parameter table gives it (as `tsis render --help` prints them).
-Prints one line per problem; exit 1 when there is any.
+Checks, in README.md and every Markdown file under docs/ (the design, the
+user guide docs/guide/, the Python page), that every repository path they
+name in `code` is a file or folder of the tree; that every relative link
+(and image) leads, from the file's own folder, to a file or folder of the
+tree, and its #anchor, if any, to a heading of the Markdown file it names
+(GitHub's heading ids); that every --option they name is one a tsis command
+takes (its --help) or one of the other programs listed below; that
+design.md's method table (§4) lists exactly the methods tsis registers; and
+that the guide's table of method options (docs/guide/rendering.md) gives each
+the methods the parameter table gives it (as `tsis render --help` prints
+them). Prints one line per problem; exit 1 when there is any.
 """
 import fnmatch
 import os
@@ -32,9 +36,15 @@ BUILD_DIRS = ("build/", "build-bench/", "build-sanitize/")
 SOURCE_EXT = re.compile(r"\.(h|cpp|cl|sh|py|md|cmake|txt|glsl|vert|frag|script|csv|\*)$")
 
 
+# The guide's page that holds the table of method options.
+METHOD_OPTIONS_DOC = "docs/guide/rendering.md"
+
+
 def tracked_paths(root):
+    # Tracked files and new ones not yet added (not what .gitignore ignores).
     try:
-        files = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True,
+        files = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"],
+                               cwd=root, capture_output=True, text=True,
                                check=True).stdout.split("\n")
     except (OSError, subprocess.CalledProcessError):  # a source tree without git
         files = [os.path.relpath(os.path.join(d, f), root)
@@ -54,11 +64,79 @@ def tracked_paths(root):
     return paths
 
 
+def doc_files(root):
+    """README.md and every Markdown file under docs/, as paths from the root."""
+    docs = ["README.md"]
+    for d, dirs, names in os.walk(os.path.join(root, "docs")):
+        dirs.sort()
+        docs += sorted(os.path.relpath(os.path.join(d, n), root) for n in names
+                       if n.endswith(".md"))
+    return docs
+
+
+def without_code_blocks(text):
+    """The text with fenced code blocks blanked (their lines kept, emptied)."""
+    out, fence = [], None
+    for line in text.split("\n"):
+        m = re.match(r"^ {0,3}(`{3,}|~{3,})", line)
+        if fence is None and m:
+            fence = m.group(1)
+            out.append("")
+        elif fence is not None:
+            if re.match(r"^ {0,3}" + re.escape(fence[0]) + "{%d,}\\s*$" % len(fence), line):
+                fence = None
+            out.append("")
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
+def heading_ids(text):
+    """The ids GitHub gives a Markdown file's headings (github-slugger)."""
+    ids, seen = set(), {}
+    for m in re.finditer(r"^ {0,3}#{1,6}[ \t]+(.*?)(?:[ \t]+#+)?[ \t]*$",
+                         without_code_blocks(text), re.M):
+        title = re.sub(r"!?\[([^\]]*)\]\([^)]*\)", r"\1", m.group(1))  # links: their text
+        title = re.sub(r"<[^>]+>", "", title).replace("`", "").replace("**", "")
+        slug = re.sub(r"[^\w\- ]", "", title.strip().lower()).replace(" ", "-")
+        n = seen.get(slug, 0)
+        seen[slug] = n + 1
+        ids.add(slug if n == 0 else f"{slug}-{n}")
+    return ids
+
+
+def link_targets(text):
+    """Relative link and image targets outside code: (path or '', anchor or '')."""
+    prose = re.sub(r"`[^`\n]*`", "", without_code_blocks(text))
+    for target in re.findall(r"\]\(<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\)", prose):
+        if re.match(r"[a-z][a-z0-9+.-]*:", target):  # a URL (https:, mailto:)
+            continue
+        path, _, anchor = target.partition("#")
+        yield path, anchor
+
+
+def check_links(root, doc, text, paths, problems):
+    doc_dir = os.path.dirname(doc)
+    for path, anchor in sorted(set(link_targets(text))):
+        shown = path + ("#" + anchor if anchor else "")
+        target = os.path.normpath(os.path.join(doc_dir, path)) if path else doc
+        if target.startswith("..") or os.path.isabs(path):
+            problems.append(f"{doc}: links to '{shown}', outside the tree")
+            continue
+        if target.rstrip("/") not in paths:
+            problems.append(f"{doc}: links to '{shown}', which is not in the tree")
+            continue
+        if anchor and target.endswith(".md"):
+            with open(os.path.join(root, target), encoding="utf-8") as f:
+                ids = heading_ids(f.read())
+            if anchor not in ids:
+                problems.append(f"{doc}: links to '{shown}': {target} has no heading "
+                                f"with the id '{anchor}'")
+
+
 def path_candidates(text):
-    """Backticked words and relative link targets that look like repository paths."""
+    """Backticked words that look like repository paths."""
     words = re.findall(r"`([^`\n]+)`", text)
-    words += [m for m in re.findall(r"\]\(([^)\s]+)\)", text)
-              if not re.match(r"[a-z]+:|#", m)]
     for w in words:
         w = w.split()[0] if w.split() else w
         w = w.split("#")[0]
@@ -114,9 +192,9 @@ def parameter_methods(tsis, registry):
     return owners
 
 
-def readme_parameter_methods(readme, registry):
-    """README's table of method options: option → the methods its row names."""
-    section = re.search(r"^Options of some methods.*?\n\n(\|.*?)\n\n", readme, re.M | re.S)
+def doc_parameter_methods(doc, registry):
+    """The guide's table of method options: option → the methods its row names."""
+    section = re.search(r"^Options of some methods.*?\n\n(\|.*?)\n\n", doc, re.M | re.S)
     rows = {}
     for line in (section.group(1).split("\n") if section else [])[2:]:
         cells = [c.strip() for c in line.strip("|").split("|")]
@@ -142,12 +220,13 @@ def main():
     problems = []
     if len(commands) < 5:
         problems.append(f"tsis help lists {commands}: not the command list expected")
-    for doc in ("README.md", "docs/design.md"):
+    for doc in doc_files(root):
         text = open(os.path.join(root, doc), encoding="utf-8").read()
         doc_dir = os.path.dirname(doc)
         for w in sorted(set(path_candidates(text))):
             if not path_exists(w, paths, doc_dir):
                 problems.append(f"{doc}: names '{w}', which is not in the tree")
+        check_links(root, doc, text, paths, problems)
         # Options in prose and code alike; a word like "--" or "---" is not one.
         for o in sorted(set(re.findall(r"(?<![\w-])--([a-z][a-z0-9-]*[a-z0-9])", text))):
             if o not in known:
@@ -158,18 +237,18 @@ def main():
         problems.append("tsis render --method '?' did not list the methods")
     elif sorted(table) != sorted(registry):
         problems.append(f"docs/design.md §4 lists methods {table}; tsis registers {registry}")
-    # README's method column says what the parameter table says.
-    readme = open(os.path.join(root, "README.md"), encoding="utf-8").read()
+    # The guide's method column says what the parameter table says.
+    doc = METHOD_OPTIONS_DOC
     owners = parameter_methods(tsis, registry)
-    rows = readme_parameter_methods(readme, registry)
+    rows = doc_parameter_methods(open(os.path.join(root, doc), encoding="utf-8").read(), registry)
     if not rows:
-        problems.append("README.md: no table of method options found")
+        problems.append(f"{doc}: no table of method options found")
     for name, methods in sorted(rows.items()):
         if owners.get(name) != methods:
-            problems.append(f"README.md: --{name} is for {sorted(methods)}; tsis render --help "
+            problems.append(f"{doc}: --{name} is for {sorted(methods)}; tsis render --help "
                             f"says {sorted(owners.get(name, set()))}")
     for name in sorted(set(owners) - set(rows)):
-        problems.append(f"README.md: the table of method options lacks --{name}")
+        problems.append(f"{doc}: the table of method options lacks --{name}")
     for p in problems:
         print("hygiene.docs: " + p)
     return 1 if problems else 0
