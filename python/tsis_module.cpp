@@ -416,7 +416,7 @@ py::tuple state(const py::tuple& t, size_t n, const char* what) {
 
 }  // namespace
 
-PYBIND11_MODULE(tsis, m) {
+PYBIND11_MODULE(_tsis, m) {
     m.doc() =
         "tsis: translucent materials rendered with the dipole BSSRDF (README, docs/design.md)";
     py::register_exception<tsis::Error>(m, "Error", PyExc_RuntimeError);
@@ -730,5 +730,29 @@ PYBIND11_MODULE(tsis, m) {
         },
         py::arg("image"), py::arg("reference"), py::arg("mask") = py::none(),
         "the metrics of `tsis compare --json` (psnr inf when equal)");
+    m.def(
+        "write_image",
+        [](const py::object& path, const py::object& image) {
+            const py::array a = arrayOf(image, "image");
+            if (a.dtype().is(py::dtype::of<uint8_t>())) {  // tone-mapped: PNG, JPEG, …
+                if (a.ndim() != 3 || a.shape(2) != 3)
+                    throw tsis::Error("image: expected an H×W×3 uint8 array, got shape " +
+                                      shapeOf(a));
+                const auto u = py::array_t<uint8_t, py::array::c_style>::ensure(a);
+                Frame f;
+                f.height = static_cast<int>(a.shape(0));
+                f.width = static_cast<int>(a.shape(1));
+                f.rgb8.assign(u.data(), u.data() + u.size());
+                writeImage(f, pathOf(path));
+            } else {
+                writeImage(imageOf(a, "image"), pathOf(path));  // linear: EXR
+            }
+        },
+        py::arg("path"), py::arg("image"),
+        "writes Frame.image (H×W×3 uint8; PNG, JPEG… by the extension) or a linear float "
+        "image (H×W×C; EXR)");
+    m.def(
+        "read_image", [](const py::object& path) { return toNumpy(readImage(pathOf(path))); },
+        py::arg("path"), "an image file as linear float32, H×W×C");
     m.def("option_help", &Options::help);
 }

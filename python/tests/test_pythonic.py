@@ -238,3 +238,20 @@ def test_stub_covers_the_module():
             continue
         own = {n for n in vars(cls) if not n.startswith("_")}
         assert own - names == set(), name
+
+
+# --- the package ---------------------------------------------------------
+
+
+def test_the_package_reexports_the_extension_and_writes_images(tmp_path):
+    import tsis._tsis as ext
+    assert tsis.Scene is ext.Scene and tsis.distributed.__name__ == "tsis.distributed"
+    assert {n for n in dir(ext) if not n.startswith("_")} <= set(tsis.__all__)
+    assert pickle.loads(pickle.dumps(tsis.Camera(eye=(1, 2, 3)))) == tsis.Camera(eye=(1, 2, 3))
+    f = tsis.render(tsis.Scene(mesh="builtin:sphere"), **SMALL)
+    tsis.write_image(tmp_path / "f.png", f.image)
+    tsis.write_image(str(tmp_path / "f.exr"), f.radiance)
+    assert np.array_equal(np.round(tsis.read_image(tmp_path / "f.png") * 255), f.image)
+    assert np.array_equal(tsis.read_image(tmp_path / "f.exr"), f.radiance)
+    with pytest.raises(tsis.Error, match=r"H×W×3 uint8 array, got shape \(32, 40\)"):
+        tsis.write_image(tmp_path / "g.png", f.image[..., 0])

@@ -1,10 +1,13 @@
-# Type stubs of `import tsis` (python/tsis_module.cpp). Kept whole: the test
-# test_stub_covers_the_module checks every public name of the module is here.
+# Type stubs of `import tsis` (the extension tsis._tsis, python/tsis_module.cpp).
+# Kept whole: test_stub_covers_the_module checks that every public name of the
+# package, and every public member of its classes, is here.
 from os import PathLike
 from typing import Any, Sequence, SupportsFloat, SupportsIndex
 
 import numpy as np
 import numpy.typing as npt
+
+from . import distributed as distributed
 
 Vec3 = Sequence[SupportsFloat]  # three numbers (numpy scalars and arrays too)
 # An option's value: str as typed, a number, a flag, or a sequence (x,y,z; a
@@ -99,4 +102,6 @@ class Renderer:
 def render(scene: Scene, **options: OptionValue) -> Frame: ...
 def compare(image: npt.ArrayLike, reference: npt.ArrayLike,
             mask: npt.ArrayLike | None = None) -> dict[str, float | int]: ...
+def write_image(path: str | PathLike[str], image: npt.ArrayLike) -> None: ...
+def read_image(path: str | PathLike[str]) -> npt.NDArray[np.float32]: ...
 def option_help() -> str: ...

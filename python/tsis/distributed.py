@@ -1,0 +1,1 @@
+"""Many frames on many workers (docs/python.md)."""
