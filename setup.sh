@@ -26,7 +26,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libembree-dev clang-format python3
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-venv python3-pip
   clang clang-tidy
 )
 BUILD_DIR=${TSIS_BUILD_DIR:-build}
@@ -104,6 +104,20 @@ sanitize_build() {
   cmake --build "$SANITIZE_DIR" -j "$JOBS" "${targets[@]}"
 }
 
+# What the Python tests need beyond Debian's packages: Ray (tsis.distributed's
+# cluster engine, an optional dependency of the module) from PyPI, in a venv
+# that sees Debian's numpy and pytest ($BUILD_DIR/pyenv; CTest's python.tests
+# runs in it when it is there).
+PYENV_RAY=${TSIS_RAY_VERSION:-ray==2.60.0}
+python_env() {
+  local venv="$BUILD_DIR/pyenv"
+  if [ -x "$venv/bin/python" ] && "$venv/bin/python" -c 'import ray' 2>/dev/null; then return; fi
+  log "installing $PYENV_RAY for the Python tests into $venv"
+  mkdir -p "$BUILD_DIR"
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "$PYENV_RAY"
+}
+
 if [ "${1:-}" = fuzz ]; then
   PACKAGES+=(libclang-rt-14-dev)
 fi
@@ -117,6 +131,10 @@ case "${1:-}" in
   fuzz | sanitize | sanitize-quick | clang | tidy | bench-blender) ;;
   # The module alone: the library it links, not the CLI, tests or benches.
   python) build --target tsis_python ;;
+  test)
+    python_env
+    build
+    ;;
   *) build ;;
 esac
 case "${1:-}" in

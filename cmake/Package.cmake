@@ -1,4 +1,4 @@
-# The installed library (README "The C++ library"): libtsis.so, made of the
+# The installed library (docs/guide/library.md): libtsis.so, made of the
 # static modules with only the public API (include/tsis/) exported, the public
 # headers and a CMake package, so that another project does
 #   find_package(tsis REQUIRED)

@@ -21,7 +21,7 @@ double srgbOf(double c) {
     return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
-// The curves as README states them (gl/shaders/common.glsl toneCurve).
+// The curves as docs/guide/rendering.md states them (gl/shaders/common.glsl toneCurve).
 double curve(const std::string& tone, double ls) {
     if (tone == "aces") {
         const double x = 0.6 * ls;

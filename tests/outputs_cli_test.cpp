@@ -1,4 +1,4 @@
-// Output files through the binary (README "Output files"): every output is
+// Output files through the binary (docs/guide/rendering.md "Output files"): every output is
 // checked before the mesh is loaded, a run writes all of its outputs or none,
 // devices, FIFOs and links are written through (never replaced), "-" is
 // standard output, and messages tell the real reason and quote input safely.

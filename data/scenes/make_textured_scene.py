@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a small textured two-object scene (README "Scenes and materials"):
+"""Writes a small textured two-object scene (docs/guide/scenes-and-materials.md "Scenes and materials"):
 a wax-like tile with a checker texture (map_Kd) beside a jade sphere (Kd only),
 as DIR/two_objects.obj + .mtl + checker.png. Units: millimetres.
 

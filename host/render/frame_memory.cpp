@@ -8,7 +8,7 @@ namespace tsis {
 namespace {
 
 // Peak resident bytes of `tsis render` (GNU time's maxrss, default scene and
-// method, README "Memory"), fitted as fixed + per image pixel + per atlas
+// method, docs/guide/rendering.md "Memory"), fitted as fixed + per image pixel + per atlas
 // texel + per light-map texel: 1024² → 2048² adds 123 B a pixel (206 with
 // --aov), atlas 512² → 2048² 227 B a texel, light maps 256² → 2048² 16 B.
 constexpr double kFixed = 275e6;  // GL, CL, programs, the default mesh

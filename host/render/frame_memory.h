@@ -10,7 +10,7 @@
 namespace tsis {
 
 // Bytes of a frame of `o` (the process' peak resident set, less the mesh):
-// a fit of measured peaks (README "Memory"), on the generous side.
+// a fit of measured peaks (docs/guide/rendering.md "Memory"), on the generous side.
 uint64_t frameMemoryBytes(const RenderOptions& o);
 
 // Throws tsis::Error when frameMemoryBytes(o) exceeds the memory available

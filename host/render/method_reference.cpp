@@ -29,7 +29,7 @@ double ReferenceMethod::defaultSpacing(const Material& m) {
 
 std::string ReferenceCost::describe() const {
     char s[256];
-    // 0.56 G evaluations/s: bench_kernels on a 2-core PoCL device (README).
+    // 0.56 G evaluations/s: bench_kernels on a 2-core PoCL device (docs/guide/performance.md).
     std::snprintf(s, sizeof s,
                   "%.3g M surface points (%.2g GB), %.2g Rd evaluations per frame (%.2g h at "
                   "0.56 G/s)",

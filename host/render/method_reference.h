@@ -31,7 +31,7 @@ namespace tsis {
 
 // Bounds of a run without --force: 20 M points (≈ 2 GB with their device copy)
 // and 2·10¹² Rd evaluations per frame (about an hour on a 2-core PoCL device
-// at 0.56 G/s, README).
+// at 0.56 G/s, docs/guide/performance.md).
 constexpr uint64_t kMaxReferencePoints = 20'000'000;
 constexpr double kMaxReferenceEvaluations = 2e12;
 

@@ -1,6 +1,6 @@
 // --method volumetric: volumetric light transport in the mesh's interior, the
 // physical truth the dipole model approximates (docs/design.md §4; measured in
-// README "Physical accuracy").
+// docs/guide/accuracy.md "Physical accuracy").
 //
 // The problem. A homogeneous medium fills the closed mesh: σs = σs′ with an
 // isotropic phase function (the similarity relation the dipole rests on),

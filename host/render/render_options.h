@@ -66,7 +66,7 @@ enum class VolumetricEstimator { Camera, Light };
 VolumetricEstimator parseVolumetricEstimator(const std::string& name);
 const char* volumetricEstimatorName(VolumetricEstimator estimator);
 
-// The display's tone curve (gl/shaders/common.glsl toneCurve, README
+// The display's tone curve (gl/shaders/common.glsl toneCurve, docs/guide/rendering.md
 // "Exposure, reflection and antialiasing"): Reinhard's Ls/(1 + Ls), ACES
 // fitted (Narkowicz 2015) or none (the exposed radiance clamped to [0, 1]).
 // The values are the shader's u_tone.
@@ -87,7 +87,7 @@ const char* backgroundName(Background background);
 // The user-set fields' names, ranges, help and the methods that read them
 // are declared once, in render/render_params.cpp; a new field needs a row there.
 struct RenderOptions {
-    std::string method = "pyramid";  // the most accurate per ms measured (README)
+    std::string method = "pyramid";  // the most accurate per ms measured (docs/guide/methods.md)
     int width = 512, height = 512;
     int atlasResolution = 512;  // flux/position atlas (power of two; bench/results/frame.md)
     // Shadow map and light-view flux map; 0 = from the object's size in
@@ -99,7 +99,7 @@ struct RenderOptions {
     int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
     // The display (docs/design.md "The composite"): radiance × 2^exposure before the tone
-    // curve, a fixed exposure (README "Exposure, reflection and antialiasing"), or with
+    // curve, a fixed exposure (docs/guide/rendering.md "Exposure, reflection and antialiasing"), or with
     // autoExposure each frame's key/L_avg (Reinhard's key, the log-average luminance).
     float exposure = 3.3f;
     bool autoExposure = false;
@@ -117,14 +117,14 @@ struct RenderOptions {
     double rpBound = 0.1;
     double rpK = 1.5;
     RdPart rdPart = RdPart::Full;  // tsis/ltsm: Rd, Rd·Wl or Rd·Wg
-    // The thesis' model (bench/tables keeps it); README "Physical accuracy"
+    // The thesis' model (bench/tables keeps it); docs/guide/accuracy.md "Physical accuracy"
     // measures the others against volumetric transport.
     ProfileModel profile = ProfileModel::Dipole;
     ExitTerm exit = ExitTerm::Jensen;
     // Add Jensen et al. 2001's single-scattering term L⁽¹⁾ to the profile
     // methods' radiosity (render/single_scatter.h; volumetric has it already).
     bool singleScatter = false;
-    EnergyTarget energy = EnergyTarget::SemiInfinite;  // README "Physical accuracy"
+    EnergyTarget energy = EnergyTarget::SemiInfinite;  // docs/guide/accuracy.md "Physical accuracy"
     // The object's own transport (render/object_transport.h): the default,
     // chosen by error against volumetric truth; --model thesis turns it off.
     Transport transport = Transport::Object;

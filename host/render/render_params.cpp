@@ -169,25 +169,22 @@ std::vector<RenderParam> makeParams() {
                "M  the subsurface model: object (the default: the profile with the object's own "
                "transport, chosen by error against volumetric truth) or thesis (the thesis' "
                "dipole and exit term alone; sets --transport off, --profile dipole, --exit "
-               "jensen, --energy semi-infinite); README \"Physical accuracy\"",
+               "jensen, --energy semi-infinite); docs/guide/accuracy.md",
                kProfiled, kRadiosity}),
         choice({"profile",
                 "P  the radial profile: dipole (Jensen's), better-dipole (d'Eon's), pbd (photon "
-                "beam diffusion) or mc (Monte Carlo, cached on disk); README \"Physical "
-                "accuracy\"",
+                "beam diffusion) or mc (Monte Carlo, cached on disk); docs/guide/accuracy.md",
                 kProfiled, kRadiosity},
                &O::profile, parseProfileModel, profileModelName, ProfileModel::Pbd),
         choice({"energy",
                 "T  the light the profile lets out: semi-infinite (its own ∫Rd) or object (scaled "
-                "up to what the closed object lets out, 1 − σa·4η²·V/S); README \"Physical "
-                "accuracy\"",
+                "up to what the closed object lets out, 1 − σa·4η²·V/S); docs/guide/accuracy.md",
                 kProfiled, kRadiosity},
                &O::energy, parseEnergyTarget, energyTargetName, EnergyTarget::Object),
         choice({"transport",
                 "T  the object's own transport: off (the profile alone) or object (the "
                 "volumetric walk's flux between patches of the surface in place of the "
-                "profile's, fitted once per mesh and material and cached); README \"Physical "
-                "accuracy\"",
+                "profile's, fitted once per mesh and material and cached); docs/guide/accuracy.md",
                 kProfiled, kRadiosity},
                &O::transport, parseTransport, transportName, Transport::Off),
         // The exit term changes only the radiance, but volumetric's radiosity
@@ -197,8 +194,9 @@ std::vector<RenderParam> makeParams() {
              kEvery, kRadiosity},
             &O::exit, parseExitTerm, exitTermName, ExitTerm::Normalized),
         flag({"single-scatter",
-              "add Jensen et al. 2001's single-scattering term L(1) (README \"Where the error "
-              "lives\")",
+              "add Jensen et al. 2001's single-scattering term L(1) (docs/guide/accuracy.md, "
+              "\"Where the "
+              "error lives now\")",
               kProfiled, kRadiosity},
              &O::singleScatter, true),
         number({"ltsm-rings", "L  rings of the light-view filter", M{"ltsm", "hybrid"}, kRadiosity},
@@ -247,7 +245,7 @@ std::vector<RenderParam> makeParams() {
             &O::lightLodTriangles, {1000, 1 << 30, false, "off"}),
         number({"exposure",
                 "EV  radiance × 2^EV before the tone curve (fixed: the same for every frame and "
-                "light; README \"Exposure, reflection and antialiasing\")",
+                "light; docs/guide/rendering.md \"Exposure, reflection and antialiasing\")",
                 kEvery, kDisplay},
                &O::exposure, {-30, 30}),
         flag({"auto-exposure",

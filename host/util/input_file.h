@@ -3,7 +3,7 @@
 //  * regular files only: a FIFO would block the read forever and a device
 //    such as /dev/zero never ends, so both are refused at once (directly or
 //    through a link), before any byte is read;
-//  * a size limit per kind (README "Input files"), checked on the opened file
+//  * a size limit per kind (docs/guide/rendering.md "Input files"), checked on the opened file
 //    and again while reading: no unbounded read;
 //  * an asset's own files (an OBJ's mtllib and map_Kd, a glTF's buffers and
 //    images) only inside the asset's folder, links resolved, unless the user
