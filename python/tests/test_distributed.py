@@ -1,0 +1,118 @@
+"""tsis.distributed: sweeps of tiny frames on two local worker processes (and
+on Ray when it is installed): images and index lines, a rerun that skips what
+is done, failures retried then recorded, a worker that dies replaced."""
+import json
+import os
+import time
+
+import numpy as np
+import pytest
+
+import tsis
+from tsis import distributed
+
+SCENE = dict(mesh="builtin:sphere", atlas_res=64)
+RENDER = dict(method="tsis", width=24, height=24, atlas_res=64, light_res=256, samples=64)
+
+
+def four_jobs():
+    return distributed.grid(scene=dict(SCENE, material=["skin1", "marble"]),
+                            render=dict(RENDER, samples=[32, 64]))
+
+
+def index_of(out):
+    with open(out / "index.jsonl") as f:
+        return [json.loads(line) for line in f]
+
+
+def test_grid_is_the_product_with_stable_ids():
+    jobs = four_jobs()
+    assert [(j["scene"]["material"], j["render"]["samples"]) for j in jobs] == [
+        ("skin1", 32), ("skin1", 64), ("marble", 32), ("marble", 64)]
+    assert len({j["id"] for j in jobs}) == 4 and jobs == four_jobs()
+    assert jobs[0]["id"] == distributed.job_id(jobs[0]["scene"], dict(jobs[0]["render"]))
+    # A tuple is one value; numpy scalars name the same job as Python's.
+    (one,) = distributed.grid(scene=dict(eye=(0, 0, 25)), render=dict(samples=np.int64(64)))
+    assert one["id"] == distributed.job_id({"eye": [0, 0, 25]}, {"samples": 64})
+    with pytest.raises(ValueError, match="given twice"):
+        distributed.sweep(jobs + jobs[:1], "unused", backend="local")
+
+
+def check_sweep(out, jobs, summary):
+    assert summary["ok"] == 4 and summary["failed"] == 0 and summary["failed_ids"] == []
+    lines = index_of(out)
+    assert sorted(e["id"] for e in lines) == sorted(j["id"] for j in jobs)
+    for e in lines:
+        assert e["status"] == "ok" and e["error"] is None and e["attempts"] == 1
+        assert e["stats"]["method"] == "tsis" and e["stats"]["width"] == 24
+        assert e["seconds"] > 0 and ":" in e["worker"]
+        assert tsis.read_image(out / (e["id"] + ".png")).shape == (24, 24, 3)
+    # The image is the frame a Renderer here makes.
+    job = jobs[3]
+    here = tsis.Renderer().render(tsis.Scene(**job["scene"]), **job["render"]).image
+    assert np.array_equal(np.round(tsis.read_image(out / (job["id"] + ".png")) * 255), here)
+    # Run again: everything is done.
+    t = time.perf_counter()
+    again = distributed.sweep(jobs, out, workers=2, backend=summary["backend"])
+    assert again["skipped"] == 4 and again["ok"] == 0 and len(index_of(out)) == 4
+    assert time.perf_counter() - t < 2
+
+
+def test_local_sweep_writes_images_and_index_and_resumes(tmp_path):
+    jobs = four_jobs()
+    summary = distributed.sweep(jobs, tmp_path, workers=2, backend="local")
+    print(f"local sweep of 4 jobs on 2 workers: {summary['seconds']:.1f} s")
+    assert summary["backend"] == "local" and summary["total"] == 4
+    check_sweep(tmp_path, jobs, summary)
+
+
+def test_failures_are_retried_then_recorded_and_a_dead_worker_is_replaced(tmp_path,
+                                                                          monkeypatch):
+    marker = tmp_path / "died"
+    monkeypatch.setenv("TSIS_SWEEP_TEST_EXIT", f"dies:{marker}")
+    jobs = [{"id": "good", "scene": SCENE, "render": RENDER},
+            {"id": "bad", "scene": SCENE, "render": dict(RENDER, samples=0)},
+            {"id": "dies", "scene": dict(SCENE, material="marble"), "render": RENDER},
+            {"id": "not-scene", "scene": dict(SCENE, method="tsis"), "render": RENDER}]
+    summary = distributed.sweep(jobs, tmp_path, workers=2, backend="local", retries=1)
+    assert summary["ok"] == 2 and sorted(summary["failed_ids"]) == ["bad", "not-scene"]
+    assert marker.exists()  # the worker did die once
+    lines = {e["id"]: e for e in index_of(tmp_path)}
+    assert lines["bad"]["status"] == "failed" and lines["bad"]["attempts"] == 2
+    assert lines["bad"]["error"] == "--samples 0 is out of range [1, 4194304]"
+    assert "is not the scene's" in lines["not-scene"]["error"]
+    assert lines["dies"]["status"] == "ok" and lines["dies"]["attempts"] == 2
+    assert not (tmp_path / "bad.png").exists() and (tmp_path / "dies.png").exists()
+    # Run again: what failed is tried again, what is done is not.
+    again = distributed.sweep(jobs, tmp_path, workers=2, backend="local", retries=0)
+    assert again["skipped"] == 2 and sorted(again["failed_ids"]) == ["bad", "not-scene"]
+
+
+def test_a_job_past_its_timeout_fails_and_the_next_runs(tmp_path):
+    long = {k: v for k, v in RENDER.items() if k != "samples"}
+    jobs = [{"id": "long", "scene": SCENE, "render": dict(long, method="volumetric", time=60)},
+            {"id": "short", "scene": SCENE, "render": RENDER}]
+    summary = distributed.sweep(jobs, tmp_path, workers=1, backend="local", retries=0,
+                                timeout=3)
+    assert summary["ok"] == 1 and summary["failed_ids"] == ["long"]
+    (long,) = [e for e in index_of(tmp_path) if e["id"] == "long"]
+    assert long["error"] == "no result after 3 s"
+
+
+def test_ray_sweep(tmp_path, monkeypatch):
+    ray = pytest.importorskip("ray")
+    marker = tmp_path / "died"
+    monkeypatch.setenv("TSIS_SWEEP_TEST_EXIT", f"dies:{marker}")  # before the workers start
+    ray.init(num_cpus=2, include_dashboard=False)
+    try:
+        jobs = four_jobs()
+        summary = distributed.sweep(jobs, tmp_path, workers=2, backend="ray")
+        print(f"ray sweep of 4 jobs on 2 workers: {summary['seconds']:.1f} s")
+        assert summary["backend"] == "ray"
+        check_sweep(tmp_path, jobs, summary)
+        dies = [{"id": "dies", "scene": SCENE, "render": RENDER}]
+        summary = distributed.sweep(dies, tmp_path / "dies", workers=1, backend="ray")
+        assert summary["ok"] == 1 and marker.exists()
+        assert index_of(tmp_path / "dies")[0]["attempts"] == 2
+    finally:
+        ray.shutdown()
