@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "description/scene_params.h"
 #include "mesh/media.h"
 #include "render/method.h"
 #include "render/render_params.h"
@@ -136,54 +137,80 @@ bool drawsSamples(const std::string& method) {
     return findRenderParam("samples")->usedBy(method);
 }
 
+namespace {
+
+// The scene options the viewer changes (the mesh, lights and camera it has
+// its own controls for), parsed and checked by the scene's table.
+const std::vector<std::string> kSceneParameters = {
+    "material", "sigma-s", "sigma-a", "eta", "size-mm", "env", "env-intensity", "env-rotate"};
+// The viewer's own switches.
+const std::vector<std::string> kViewParameters = {"progressive", "frames", "auto-orbit"};
+
+// Scene option `name` set to `value` in `s`: its text through the table's row.
+void setSceneParameter(ViewState& s, const std::string& name, const std::string& value) {
+    SceneDescription d;
+    if (name == "env" && value == "none") {
+        s.env.map = nullptr;
+    } else {
+        findSceneParam(name)->set(d, value);
+    }
+    Material& m = s.material;
+    if (name == "material") {
+        m = presetMaterial(*d.material.preset);
+    } else if (name == "sigma-s" || name == "sigma-a" || name == "eta") {
+        if (d.material.sigmaSPrime) m.sigmaSPrime = *d.material.sigmaSPrime;
+        if (d.material.sigmaA) m.sigmaA = *d.material.sigmaA;
+        if (d.material.eta) m.eta = *d.material.eta;
+        m.name = "custom";
+        validateMaterial(m);
+    } else if (name == "size-mm") {
+        if (!d.mesh.sizeMm) fail("size-mm ", value, ": the viewer's size is a number (mm)");
+        resize(s, *d.mesh.sizeMm);
+    } else if (name == "env") {
+        if (d.env) s.env.map = loadEnvironment(d.env->path);
+        const int lights = static_cast<int>(s.lights.size()) + (s.env ? 1 : 0);
+        if (lights == 0) fail("env none: the scene would have no light");
+        if (lights > kMaxLights) fail("env: ", s.lights.size(), " lights and a sun are too many");
+    } else if (name == "env-intensity") {
+        s.env.intensity = *d.env->intensity;
+    } else if (name == "env-rotate") {
+        s.env.rotateDegrees = *d.env->rotateDegrees;
+    }
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
 const std::vector<std::string>& parameterNames() {
-    static const std::vector<std::string> names = {
-        "material",  "sigma-s",   "sigma-a",   "eta",           "size-mm",   "method",
-        "samples",   "atlas-res", "light-res", "progressive",   "frames",    "auto-orbit",
-        "roughness", "exposure",  "env",       "env-intensity", "env-rotate"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n = kSceneParameters;
+        n.push_back("method");
+        for (const RenderParam& p : renderParams()) n.push_back(p.name);
+        n.insert(n.end(), kViewParameters.begin(), kViewParameters.end());
+        return n;
+    }();
     return names;
 }
 
 void setParameter(ViewState& state, const std::string& name, const std::string& value) {
     ViewState s = state;
-    Material& m = s.material;
     RenderOptions& o = s.options;
-    if (name == "material") {
-        m = presetMaterial(value);
-    } else if (name == "sigma-s" || name == "sigma-a" || name == "eta") {
-        if (name == "sigma-s") m.sigmaSPrime = parseVec3(name, value);
-        if (name == "sigma-a") m.sigmaA = parseVec3(name, value);
-        if (name == "eta") m.eta = parseNumber(name, value);
-        m.name = "custom";
-        validateMaterial(m);
-    } else if (name == "size-mm") {
-        resize(s, parseNumber(name, value));
+    if (contains(kSceneParameters, name)) {
+        setSceneParameter(s, name, value);
     } else if (name == "method") {
         o.method = value;
         validateRenderOptions(o);
-    } else if (name == "samples" || name == "atlas-res" || name == "light-res" ||
-               name == "roughness" || name == "exposure") {
-        findRenderParam(name)->set(o, value);  // the ranges of the command line's options
+    } else if (const RenderParam* p = findRenderParam(name)) {
+        p->set(o, value);  // the ranges of the command line's options
     } else if (name == "progressive") {
         s.progressive = onOff(name, value);
     } else if (name == "frames") {
         s.maxFrames = integerIn(name, value, 1, 100000);
     } else if (name == "auto-orbit") {
         s.autoOrbit = onOff(name, value);
-    } else if (name == "env") {
-        s.env.map = value == "none" ? nullptr : loadEnvironment(value);
-        const int lights = static_cast<int>(s.lights.size()) + (s.env ? 1 : 0);
-        if (lights == 0) fail("env none: the scene would have no light");
-        if (lights > kMaxLights) fail("env: ", s.lights.size(), " lights and a sun are too many");
-    } else if (name == "env-intensity") {
-        const double v = parseNumber(name, value);
-        if (!(v >= 0 && v <= 1e12)) fail("env-intensity ", value, " is out of range [0, 1e12]");
-        s.env.intensity = v;
-    } else if (name == "env-rotate") {
-        const double v = parseNumber(name, value);
-        if (!(v >= -3600 && v <= 3600))
-            fail("env-rotate ", value, " is out of range [-3600, 3600]");
-        s.env.rotateDegrees = v;
     } else {
         std::string list;
         for (const std::string& n : parameterNames()) list += (list.empty() ? "" : ", ") + n;
@@ -202,9 +229,11 @@ bool sameScene(const ViewState& a, const ViewState& b) {
 
 bool sameFrame(const ViewState& a, const ViewState& b) {
     const RenderOptions &oa = a.options, &ob = b.options;
-    return sameScene(a, b) && oa.method == ob.method && oa.samples == ob.samples &&
-           oa.atlasResolution == ob.atlasResolution && oa.lightResolution == ob.lightResolution &&
-           oa.roughness == ob.roughness && oa.exposure == ob.exposure;
+    if (!sameScene(a, b) || oa.method != ob.method) return false;
+    // Every parameter that changes the pixels, by the table's text of it.
+    for (const RenderParam& p : renderParams())
+        if (p.effect != ParamEffect::None && p.text(oa) != p.text(ob)) return false;
+    return true;
 }
 
 }  // namespace tsis

@@ -69,12 +69,14 @@ Scene sceneOf(const ViewState& state, const std::shared_ptr<const Mesh>& mesh);
 // them converges): tsis, hybrid, mis, lss.
 bool drawsSamples(const std::string& method);
 
-// Sets a parameter by the name a script uses (`set NAME VALUE`): material,
-// sigma-s, sigma-a, eta, size-mm, method, samples, atlas-res, light-res,
-// progressive (on|off), frames, auto-orbit (on|off), roughness, exposure, env
-// (a map file; "none" removes it), env-intensity, env-rotate (degrees about
-// +y). Throws tsis::Error naming
-// the parameter when the name or the value is bad; the state is then unchanged.
+// Sets a parameter by the name a script uses (`set NAME VALUE`): the scene
+// options the viewer changes (material, sigma-s, sigma-a, eta, size-mm, env —
+// a map file, "none" removes it —, env-intensity, env-rotate), parsed and
+// checked by the scene's table (description/scene_params.h); method and every
+// render parameter by render/render_params.h's; and the viewer's own
+// progressive (on|off), frames and auto-orbit (on|off). Throws tsis::Error
+// naming the parameter when the name or the value is bad; the state is then
+// unchanged.
 void setParameter(ViewState& state, const std::string& name, const std::string& value);
 
 // The names setParameter takes, for messages.
@@ -83,8 +85,8 @@ const std::vector<std::string>& parameterNames();
 // Same mesh, size, material, lights, camera and image size: one reference
 // image holds for both.
 bool sameScene(const ViewState& a, const ViewState& b);
-// sameScene, and the same method, N, resolutions, roughness and exposure (what the viewer changes
-// of the options): the same frame, so a new one is not needed.
+// sameScene, and the same method and every render parameter that changes the
+// pixels (the table's): the same frame, so a new one is not needed.
 bool sameFrame(const ViewState& a, const ViewState& b);
 
 }  // namespace tsis

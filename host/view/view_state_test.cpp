@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "mesh/builtin.h"
+#include "render/render_params.h"
 #include "util/error.h"
 
 namespace tsis {
@@ -104,6 +105,27 @@ TEST(ViewState, SetParameterChangesOneThingOrNothing) {
         EXPECT_THROW(setParameter(s, name, value), Error) << name << " " << value;
         EXPECT_TRUE(sameFrame(before, s)) << name;
         EXPECT_EQ(before.material.name, s.material.name) << name;
+    }
+}
+
+// The viewer's parameters are the tables' rows: each render parameter sets
+// from its example and makes another frame exactly when it changes the
+// pixels; each scene parameter refuses what the command line refuses.
+TEST(ViewState, EveryRenderParameterSetsAndSameFrameFollowsItsEffect) {
+    for (const RenderParam& p : renderParams()) {
+        const ViewState a = twoLights();
+        ViewState b = a;
+        ASSERT_NO_THROW(setParameter(b, p.name, p.example)) << p.name;
+        EXPECT_EQ(sameFrame(a, b), p.effect == ParamEffect::None) << p.name << " " << p.example;
+    }
+    for (const auto& [name, value] :
+         std::vector<std::pair<std::string, std::string>>{{"env-intensity", "-1"},
+                                                          {"env-rotate", "4000"},
+                                                          {"size-mm", "file"},
+                                                          {"sigma-a", "-1,0,0"},
+                                                          {"env", "/nonexistent.hdr"}}) {
+        ViewState s = twoLights();
+        EXPECT_THROW(setParameter(s, name, value), Error) << name << " " << value;
     }
 }
 
