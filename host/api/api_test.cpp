@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "description/scene_params.h"
+#include "image/image_io.h"
 #include "render/renderer.h"
 #include "support/boxes.h"
 #include "support/error_of.h"
@@ -324,6 +325,42 @@ TEST(ApiRenderer, VolumetricBatchesMergeIntoTheWholeFrame) {
         o.set("spp", "6").set("spp-offset", "6");
         EXPECT_NE(r.render(s, o).radiance.pixels, whole.pixels);
     }
+}
+
+// An object's material with an albedo texture: the texture shows through
+// the object's own texture coordinates (left half red, right half blue).
+TEST(ApiScene, AnObjectsMaterialCarriesItsAlbedoTexture) {
+    const tsis::test::ScratchDir dir;
+    std::ofstream(dir.file("quad.obj"))
+        << "v -5 -5 0\nv 5 -5 0\nv 5 5 0\nv -5 5 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+           "f 1/1 2/2 3/3 4/4\n";
+    writeImage8(dir.file("halves.png"), 2, 1, 3, {220, 40, 40, 40, 40, 220});
+    Object quad;
+    quad.mesh = dir.file("quad.obj");
+    Material m;
+    m.albedo = Vec3{1, 1, 1};
+    m.mfpMm = Vec3{0.5f, 0.5f, 0.5f};
+    m.albedoTexture = dir.file("halves.png");
+    quad.material = m;
+    const Scene s = Scene::fromObjects(
+        {quad}, Options{{"size-mm", "file"}, {"light", "dir:0,0,-1:1,1,1"}, {"eye", "0,0,30"}});
+    const Frame f = Renderer().render(s, Options{{"width", "64"}, {"height", "64"}});
+    double red[2] = {0, 0}, blue[2] = {0, 0};
+    for (int k = 0; k < f.width * f.height; ++k) {
+        const float x = f.position.pixels[3 * k];
+        if (!(f.coverage.pixels[k] > 0.5f) || std::abs(x) < 1 || std::abs(x) > 4) continue;
+        red[x > 0] += f.radiance.pixels[3 * k];
+        blue[x > 0] += f.radiance.pixels[3 * k + 2];
+    }
+    EXPECT_GT(red[0], 2 * blue[0]);
+    EXPECT_GT(blue[1], 2 * red[1]);
+    quad.material->albedoTexture.clear();
+    quad.mesh.clear();
+    quad.vertices = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    quad.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    quad.material->albedoTexture = dir.file("halves.png");
+    EXPECT_EQ(errorOf([&] { Scene::fromObjects({quad}); }),
+              "object 0: an albedo texture needs texture coordinates (the mesh has none)");
 }
 
 // The facade adds nothing to a frame: the same bytes as the internal renderer

@@ -235,7 +235,10 @@ Scene Scene::fromObjects(const std::vector<Object>& objects, const Options& opti
         d.scale = o.transform.scale;
         d.rotateDegrees = glm::dvec3(toGlm(o.transform.rotateDegrees));
         d.translateMm = glm::dvec3(toGlm(o.transform.translateMm));
-        if (o.material) d.material = describe(*o.material);
+        if (o.material) {
+            d.material = describe(*o.material);
+            d.albedoTexture = o.material->albedoTexture;
+        }
         impl.description.objects.push_back(std::move(d));
     }
     impl.objects = objects;

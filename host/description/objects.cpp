@@ -67,8 +67,13 @@ Mesh combinedMesh(const std::vector<ObjectDescription>& objects, FileView& view)
         // Its material over all of it, else its file's, else the scene's.
         const auto first = static_cast<uint32_t>(view.materials.size());
         std::vector<uint32_t> ids(m.triangles.size(), kNoFileMaterial);
+        if (!o.albedoTexture.empty() && !o.material)
+            fail("object ", i, ": an albedo texture needs the object's material");
+        if (!o.albedoTexture.empty() && !m.hasTexcoords())
+            fail("object ", i, ": an albedo texture needs texture coordinates (the mesh has none)");
         if (o.material) {
             view.materials.push_back(fileMaterialOf(*o.material, "object " + std::to_string(i)));
+            view.materials.back().texturePath = o.albedoTexture;
             ids.assign(ids.size(), first);
         } else if (!m.materialIds.empty()) {
             view.materials.insert(view.materials.end(), own.materials.begin(), own.materials.end());

@@ -82,6 +82,9 @@ struct ObjectDescription {
     // Its material over all of its triangles; none: its file's materials,
     // where it has none the scene's.
     std::optional<MaterialDescription> material;
+    // An albedo texture over `material` (read through the object's own
+    // texture coordinates; the albedo, if given, scales it); empty: none.
+    std::string albedoTexture;
 };
 
 struct EnvironmentDescription {

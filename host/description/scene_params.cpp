@@ -269,7 +269,8 @@ const std::vector<OptionSpec>& sceneOptionSpecs() {
         std::string methods;
         for (const std::string& m : methodNames()) methods += (methods.empty() ? "" : ", ") + m;
         specs.push_back({"method", true, false,
-                         "NAME  " + methods + "; see docs/guide/methods.md" + byDefault(RenderOptions().method)});
+                         "NAME  " + methods + "; see docs/guide/methods.md" +
+                             byDefault(RenderOptions().method)});
         for (const RenderParam& p : renderParams())
             specs.push_back({p.name, !p.flag, false, p.usage()});
         return specs;
@@ -344,7 +345,8 @@ Scene sceneFromArgs(const Args& args) {
 RenderOptions renderOptionsFromArgs(const Args& args) {
     RenderOptions o;
     // The file's light units: radiance in W/(mm²·sr) exposed as Blender's
-    // exposure 0 shows W/(m²·sr) (docs/guide/scenes-and-materials.md "The file's units and light power").
+    // exposure 0 shows W/(m²·sr) (docs/guide/scenes-and-materials.md "The file's units and light
+    // power").
     if (args.value("light-units") == std::optional<std::string>("file"))
         o.exposure = kFileLightUnitsExposure;
     o.method = args.getString("method", o.method);

@@ -28,7 +28,9 @@ struct Material {
     Vec3 sigmaSPrime{}, sigmaA{};
     float eta = 1.3f;
     std::optional<Vec3> albedo, mfpMm;
-    // Textured surfaces (a file's) name their albedo texture; not settable.
+    // An albedo texture (an image file, sRGB when 8-bit), scaled by albedo
+    // when given: a file's material names its own; an object's material
+    // (Scene::fromObjects) applies it through the object's texture coordinates.
     std::string albedoTexture;
 
     // A preset of `tsis materials` ("skin1", "marble", …); throws tsis::Error.
