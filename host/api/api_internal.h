@@ -26,7 +26,8 @@ struct Scene::Impl {
     std::vector<float> vertices;
     std::vector<uint32_t> triangles;
     std::string arraysName;
-    std::vector<Object> objects;  // fromObjects: as given
+    std::vector<Object> objects;             // fromObjects: as given
+    std::optional<Environment> environment;  // setEnvironment's, as given
     std::vector<std::string> notes;
     // The scene with its materials inverted through `p`; nullopt when that is
     // `scene` (p is `profile`, or no material is given by a mean free path).

@@ -363,6 +363,26 @@ TEST(ApiScene, AnObjectsMaterialCarriesItsAlbedoTexture) {
               "object 0: an albedo texture needs texture coordinates (the mesh has none)");
 }
 
+// An environment given as pixels lights the scene as the same map read from
+// its file does, and reads back with its pixels.
+TEST(ApiScene, AnEnvironmentOfPixelsIsTheMapOfItsFile) {
+    const std::string sky = std::string(TSIS_SOURCE_DIR) + "/data/env/sky.hdr";
+    const Image map = readImage(sky);
+    ASSERT_EQ(map.channels, 3);
+    Scene file(Options{{"mesh", "builtin:sphere"}});
+    Scene pixels = file;
+    file.setEnvironment(Environment{sky, 2.0, 30.0, {}, 0, 0});
+    pixels.setEnvironment(Environment{"", 2.0, 30.0, map.pixels, map.width, map.height});
+    EXPECT_EQ(pixels.environment()->pixels.size(), map.pixels.size());
+    const Options frame{
+        {"width", "32"}, {"height", "32"}, {"atlas-res", "128"}, {"light-res", "256"}};
+    Renderer r;
+    EXPECT_EQ(r.render(file, frame).rgb8, r.render(pixels, frame).rgb8);
+    Environment bad{"", 1.0, 0.0, {1, 2, 3}, 2, 1};
+    EXPECT_EQ(errorOf([&] { pixels.setEnvironment(bad); }),
+              "Environment: 3 values for 2×1 RGB pixels");
+}
+
 // The facade adds nothing to a frame: the same bytes as the internal renderer
 // given the options `tsis render` would parse.
 TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {

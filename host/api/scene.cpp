@@ -318,7 +318,12 @@ void Scene::setLights(const std::vector<Light>& lights) {
 std::optional<Environment> Scene::environment() const {
     const auto& e = impl_->description.env;
     if (!e) return std::nullopt;
-    return Environment{e->path, e->intensity.value_or(1.0), e->rotateDegrees.value_or(0.0)};
+    if (impl_->environment) return impl_->environment;  // with its pixels
+    Environment out;
+    out.path = e->path;
+    out.intensity = e->intensity.value_or(1.0);
+    out.rotateDegrees = e->rotateDegrees.value_or(0.0);
+    return out;
 }
 
 void Scene::setEnvironment(const std::optional<Environment>& environment) {
@@ -327,16 +332,26 @@ void Scene::setEnvironment(const std::optional<Environment>& environment) {
     SceneDescription next = impl_->description;
     next.camera = pinned(*impl_, next).camera;
     next.env.reset();
-    if (environment) {
-        if (environment->path.empty()) fail("Environment: no file (path is empty)");
-        Options check;  // each value as the CLI checks --env-intensity and --env-rotate
-        check.set("env-intensity", environment->intensity)
-            .set("env-rotate", environment->rotateDegrees);
-        next.env = EnvironmentDescription{environment->path, environment->intensity,
-                                          environment->rotateDegrees};
-    }
     const NoteCapture notes;
+    if (environment) {
+        const Environment& e = *environment;
+        if (e.path.empty() && e.pixels.empty())
+            fail("Environment: no file and no pixels (path is empty)");
+        Options check;  // each value as the CLI checks --env-intensity and --env-rotate
+        check.set("env-intensity", e.intensity).set("env-rotate", e.rotateDegrees);
+        next.env = EnvironmentDescription{e.path.empty() ? "pixels" : e.path, e.intensity,
+                                          e.rotateDegrees, nullptr};
+        if (!e.pixels.empty()) {
+            if (e.width < 1 || e.height < 1 ||
+                e.pixels.size() != static_cast<size_t>(e.width) * e.height * 3)
+                fail("Environment: ", e.pixels.size(), " values for ", e.width, "×", e.height,
+                     " RGB pixels");
+            next.env->map = splitEnvironment(next.env->path, e.width, e.height, 3, e.pixels);
+        }
+    }
     replace(*impl_, next);
+    impl_->environment.reset();
+    if (environment && !environment->pixels.empty()) impl_->environment = environment;
     for (const std::string& n : notes.notes()) impl_->notes.push_back(n);
 }
 
@@ -369,6 +384,7 @@ Options Scene::options() const {
     }
     if (d.fileLightUnits && d.env)  // the map's scale as used (W/(m²·sr) → W/(mm²·sr))
         d.env->intensity = impl_->scene.env.intensity;
+    if (impl_->environment) d.env.reset();  // pixels: environment() has them
     d.fileLightUnits = false;
     Options o;
     const std::vector<std::string> args = descriptionArgs(d);

@@ -140,7 +140,7 @@ Scene placedScene(const SceneDescription& d, ProfileModel profile) {
         fail("too many lights: ", scene.lights.size(), " (at most ", kMaxLights, ")");
     if (d.env && d.env->path.empty()) fail("--env-intensity and --env-rotate need --env FILE");
     if (d.env) {
-        scene.env.map = loadEnvironment(d.env->path);
+        scene.env.map = d.env->map ? d.env->map : loadEnvironment(d.env->path);
         scene.env.intensity = d.env->intensity.value_or(1.0);
         // The file's light units: the map in W/(m²·sr), as Blender and Cycles read it.
         if (d.fileLightUnits) scene.env.intensity *= kPerM2ToPerMm2;

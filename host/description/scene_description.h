@@ -90,6 +90,8 @@ struct ObjectDescription {
 struct EnvironmentDescription {
     std::string path;  // a lat-long radiance map (.exr, .hdr); empty: not given (an error)
     std::optional<double> intensity, rotateDegrees;
+    // The map given as pixels (the library's Environment): `path` only names it.
+    std::shared_ptr<const EnvironmentMap> map;
 };
 
 struct CameraDescription {

@@ -49,9 +49,13 @@ struct Light {
 // A lat-long radiance map (.exr, .hdr) in W/(mm²·sr) lighting the scene,
 // scaled by intensity and turned by rotateDegrees about the up axis (+y).
 struct Environment {
-    std::string path;
+    std::string path;  // the map's file; with pixels, only its name
     double intensity = 1;
     double rotateDegrees = 0;
+    // The map as pixels: width × height RGB floats (2:1, row 0 = the top,
+    // the zenith), in place of reading `path`.
+    std::vector<float> pixels;
+    int width = 0, height = 0;
 };
 
 struct Camera {
@@ -129,7 +133,8 @@ class Scene {
 
     // The scene options that make this scene again (Scene(options()); from
     // arrays: fromArrays with them). Lights and camera as set, the material
-    // as given (none: the file's).
+    // as given (none: the file's); an environment given as pixels is not
+    // among them (environment() has it), nor are objects (objects()).
     Options options() const;
     // The notes loading the scene made (what `tsis render` prints as
     // "tsis: note: …"), in order.
