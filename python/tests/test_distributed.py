@@ -2,7 +2,6 @@
 on Ray when it is installed): images and index lines, a rerun that skips what
 is done, failures retried then recorded, a worker that dies replaced."""
 import json
-import os
 import time
 
 import numpy as np
@@ -116,3 +115,23 @@ def test_ray_sweep(tmp_path, monkeypatch):
         assert index_of(tmp_path / "dies")[0]["attempts"] == 2
     finally:
         ray.shutdown()
+
+
+def test_render_split_gives_the_whole_frames_radiance():
+    scene = tsis.Scene(**SCENE)
+    opts = dict(width=24, height=24, atlas_res=64, light_res=256, aa=1)
+    whole = tsis.Renderer().render(scene, method="volumetric", spp=5, **opts)
+    split = distributed.render_split(scene, 5, 2, workers=2, backend="local", **opts)
+    assert [b["volumetric_spp"] for b in split.stats["batches"]] == [3, 2]
+    assert split.stats["volumetric_spp"] == 5 and split.image is None
+    np.testing.assert_allclose(split.radiance, whole.radiance, rtol=1e-5, atol=1e-7)
+    np.testing.assert_allclose(split.radiosity, whole.radiosity, rtol=1e-5, atol=1e-7)
+    assert np.array_equal(split.coverage, whole.coverage)
+    assert split.lavg == pytest.approx(whole.lavg, rel=1e-5)
+    with pytest.raises(ValueError, match="volumetric only"):
+        distributed.render_split(scene, 4, 2, method="tsis")
+    with pytest.raises(ValueError, match="spp_offset is render_split's"):
+        distributed.render_split(scene, 4, 2, spp_offset=3)
+    with pytest.raises(tsis.Error, match="--width 0 is out of range"):
+        distributed.render_split(scene, 4, 2, workers=1, backend="local", retries=0,
+                                 **dict(opts, width=0))

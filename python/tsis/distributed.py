@@ -13,9 +13,11 @@ them. Each worker is a process with one long-lived tsis.Renderer: a Ray actor
 out_dir/<id>.png and one line of out_dir/index.jsonl; a job that fails (an
 error, or its worker dying) is tried again, on another worker when there is
 one, up to `retries` times, then recorded as failed. A sweep run again skips
-the jobs the index already has as "ok".
+the jobs the index already has as "ok". render_split renders one volumetric
+frame as batches of its paths on the workers.
 """
 import collections
+import copy
 import hashlib
 import importlib.util
 import itertools
@@ -27,7 +29,7 @@ import socket
 import tempfile
 import time
 
-__all__ = ["grid", "job_id", "sweep"]
+__all__ = ["grid", "job_id", "render_split", "sweep"]
 
 INDEX = "index.jsonl"
 
@@ -120,6 +122,10 @@ class _Worker:
             self.error = f"this worker cannot render: {e}"
         self._scene_key, self._scene = None, None
 
+    def ping(self):
+        """This worker's name, once its Renderer is made (or failed)."""
+        return self.name
+
     def run(self, job):
         """The job's result: status, error, stats, notes, seconds, worker and
         the frame as PNG bytes (the caller writes it where it belongs)."""
@@ -143,9 +149,27 @@ class _Worker:
                     result["png"] = f.read()
             result.update(status="ok", stats=frame.stats, notes=list(self._scene.notes))
         except Exception as e:  # recorded, and tried again by the caller
-            result["error"] = str(e) if isinstance(e, tsis.Error) else f"{type(e).__name__}: {e}"
+            result["error"] = _error_text(e)
         result["seconds"] = round(time.perf_counter() - start, 3)
         return result
+
+    def frame(self, scene, options):
+        """{"status", "error", "frame"}: a tsis.Frame of `scene` (pickled as its
+        options), or the error."""
+        try:
+            if self.error:
+                raise RuntimeError(self.error)
+            frame = self.renderer.render(scene, **options)
+            return {"status": "ok", "error": None, "frame": frame, "worker": self.name}
+        except Exception as e:
+            return {"status": "failed", "error": _error_text(e), "frame": None,
+                    "worker": self.name}
+
+
+def _error_text(e):
+    """A tsis.Error's one line as it is; another exception with its type."""
+    import tsis
+    return str(e) if isinstance(e, tsis.Error) else f"{type(e).__name__}: {e}"
 
 
 def _test_exit(job):
@@ -158,11 +182,13 @@ def _test_exit(job):
 
 
 def _local_worker(conn):
-    """A local worker process: jobs in, results out, until None or the pipe closes."""
+    """A local worker process: calls of _Worker's methods in, their results
+    out, until None or the pipe closes."""
     worker = _Worker()
     try:
-        while (job := conn.recv()) is not None:
-            conn.send(worker.run(job))
+        while (call := conn.recv()) is not None:
+            method, args = call
+            conn.send(getattr(worker, method)(*args))
     except (EOFError, KeyboardInterrupt):
         pass
 
@@ -175,9 +201,11 @@ class _LocalPool:
 
     def __init__(self, workers):
         self._ctx = multiprocessing.get_context("spawn")
-        self._slots = [self._start() for _ in range(workers)]
+        self._slots = [self._spawn() for _ in range(workers)]
+        for k in range(workers):  # all starting at once
+            self._ready(k)
 
-    def _start(self):
+    def _spawn(self):
         conn, child = self._ctx.Pipe()
         process = self._ctx.Process(target=_local_worker, args=(child,), daemon=True,
                                     name="tsis-sweep-worker")
@@ -185,12 +213,23 @@ class _LocalPool:
         child.close()
         return process, conn
 
-    def submit(self, k, job):
+    def _ready(self, k):
+        """Waits for slot k's worker to make its Renderer (a job's time counts
+        from then)."""
+        process, conn = self._slots[k]
         try:
-            self._slots[k][1].send(job)
-        except OSError:  # died while idle: a new one takes the job
+            conn.send(("ping", ()))
+            conn.recv()
+        except (EOFError, OSError):
+            process.join(5)
+            raise RuntimeError(f"a worker process did not start (exit code {process.exitcode})")
+
+    def submit(self, k, method, args):
+        try:
+            self._slots[k][1].send((method, args))
+        except OSError:  # died while idle: a new one takes the call
             self.restart(k)
-            self._slots[k][1].send(job)
+            self._slots[k][1].send((method, args))
 
     def wait(self, busy, timeout):
         """[(slot, result)] of the busy slots that finished within timeout s."""
@@ -210,7 +249,8 @@ class _LocalPool:
         process.kill()
         process.join()
         conn.close()
-        self._slots[k] = self._start()
+        self._slots[k] = self._spawn()
+        self._ready(k)
         return _failure(why or f"the worker died (exit code {process.exitcode})",
                         f"{socket.gethostname()}:{process.pid}")
 
@@ -239,10 +279,11 @@ class _RayPool:
             ray.init(address=address)
         self._actor = ray.remote(_Worker)
         self._slots = [self._actor.remote() for _ in range(workers)]
+        ray.get([a.ping.remote() for a in self._slots])  # a job's time counts from then
         self._refs = {}  # the running job's result → slot
 
-    def submit(self, k, job):
-        self._refs[self._slots[k].run.remote(job)] = k
+    def submit(self, k, method, args):
+        self._refs[getattr(self._slots[k], method).remote(*args)] = k
 
     def wait(self, busy, timeout):
         if not self._refs:
@@ -262,6 +303,7 @@ class _RayPool:
         self._refs = {r: s for r, s in self._refs.items() if s != k}
         self._ray.kill(self._slots[k], no_restart=True)
         self._slots[k] = self._actor.remote()
+        self._ray.get(self._slots[k].ping.remote())
         return _failure(why or "the worker died", f"ray worker {k}")
 
     def close(self):
@@ -288,12 +330,7 @@ def sweep(jobs, out_dir, *, workers=2, backend="auto", retries=2, address=None, 
     A job that fails, its worker dying included, or runs past `timeout`
     seconds, is tried again up to `retries` times. Returns {"total", "ok",
     "failed", "skipped", "failed_ids", "seconds", "backend"}."""
-    if backend == "auto":
-        backend = "ray" if importlib.util.find_spec("ray") else "local"
-    if backend not in ("ray", "local"):
-        raise ValueError(f"backend {backend!r}: 'auto', 'ray' or 'local'")
-    if workers < 1 or retries < 0:
-        raise ValueError("workers must be at least 1 and retries at least 0")
+    backend = _backend(backend, workers, retries)
     jobs = _normalised(jobs)
     os.makedirs(out_dir, exist_ok=True)
     done = _done_ids(out_dir)
@@ -302,44 +339,60 @@ def sweep(jobs, out_dir, *, workers=2, backend="auto", retries=2, address=None, 
                "failed_ids": [], "backend": backend}
     start = time.perf_counter()
     if todo:
-        slots = min(workers, len(todo))
-        pool = _RayPool(slots, address) if backend == "ray" else _LocalPool(slots)
-        try:
-            _run(pool, slots, todo, retries, timeout, out_dir, summary)
-        finally:
-            pool.close()
+        with open(os.path.join(out_dir, INDEX), "a") as index:
+            _schedule(backend, workers, address, [(j["id"], "run", (j,)) for j in todo],
+                      retries, timeout,
+                      lambda task, result, attempts: _record(index, out_dir, task[2][0], result,
+                                                             attempts, summary))
     summary["seconds"] = round(time.perf_counter() - start, 3)
     return summary
 
 
-def _run(pool, slots, todo, retries, timeout, out_dir, summary):
+def _backend(backend, workers, retries):
+    if backend == "auto":
+        backend = "ray" if importlib.util.find_spec("ray") else "local"
+    if backend not in ("ray", "local"):
+        raise ValueError(f"backend {backend!r}: 'auto', 'ray' or 'local'")
+    if workers < 1 or retries < 0:
+        raise ValueError("workers must be at least 1 and retries at least 0")
+    return backend
+
+
+def _schedule(backend, workers, address, tasks, retries, timeout, done):
+    """Runs tasks (key, method of _Worker, args) on a pool of at most `workers`:
+    a failed one again (on another worker when one is free) up to `retries`
+    times; done(task, result, attempts) gets each task's last result."""
+    slots = min(workers, len(tasks))
+    pool = _RayPool(slots, address) if backend == "ray" else _LocalPool(slots)
+    todo = collections.deque(tasks)
     attempts = collections.Counter()
-    last_worker = {}  # job id → the slot that last tried it
-    running = {}  # slot → (job, when it started)
-    with open(os.path.join(out_dir, INDEX), "a") as index:
+    last_worker = {}  # key → the slot that last tried it
+    running = {}  # slot → (task, when it started)
+    try:
         while todo or running:
             for k in set(range(slots)) - set(running):
                 if not todo:
                     break
-                # A job tried before goes to another worker when one is free.
-                job = next((j for j in todo if last_worker.get(j["id"]) != k), todo[0])
-                todo.remove(job)
-                pool.submit(k, job)
-                running[k] = (job, time.monotonic())
+                task = next((t for t in todo if last_worker.get(t[0]) != k), todo[0])
+                todo.remove(task)
+                pool.submit(k, task[1], task[2])
+                running[k] = (task, time.monotonic())
             finished = pool.wait(list(running), 1.0 if timeout else None)
-            if timeout:  # past its time: the worker is ended, the job fails
+            if timeout:  # past its time: the worker is ended, the task fails
                 now = time.monotonic()
                 finished += [(k, pool.restart(k, f"no result after {timeout} s"))
                              for k, (_, t) in running.items() if now - t > timeout
                              and k not in {f[0] for f in finished}]
             for k, result in finished:
-                job, _ = running.pop(k)
-                attempts[job["id"]] += 1
-                last_worker[job["id"]] = k
-                if result["status"] != "ok" and attempts[job["id"]] <= retries:
-                    todo.append(job)
-                    continue
-                _record(index, out_dir, job, result, attempts[job["id"]], summary)
+                task, _ = running.pop(k)
+                attempts[task[0]] += 1
+                last_worker[task[0]] = k
+                if result["status"] != "ok" and attempts[task[0]] <= retries:
+                    todo.append(task)
+                else:
+                    done(task, result, attempts[task[0]])
+    finally:
+        pool.close()
 
 
 def _record(index, out_dir, job, result, attempts, summary):
@@ -358,3 +411,56 @@ def _record(index, out_dir, job, result, attempts, summary):
                  notes=result["notes"])
     index.write(json.dumps(entry) + "\n")
     index.flush()
+
+
+# --- one frame in batches --------------------------------------------------
+
+
+def render_split(scene, spp, batches, workers=2, *, backend="auto", retries=2, address=None,
+                 **render_options):
+    """The volumetric frame of `scene` with `spp` paths per pixel, rendered as
+    `batches` batches (--spp-offset 0, n, 2n, …) on `workers` workers and
+    combined: radiance and radiosity are the batches' spp-weighted means (the
+    whole frame's, to float rounding); position, normal, coverage and
+    flux_atlas the first batch's; lavg recomputed from the radiance (over the
+    pixels: the renderer's own with aa=1, not over --aa's samples); stats the
+    first batch's with the whole spp and each batch's under "batches". image
+    is None: the tone curve runs on the GPU over the frame's samples, and a
+    mean of tone-mapped batches is not the frame's. A batch that fails is
+    tried again up to `retries` times, then its tsis.Error is raised."""
+    import numpy as np
+    import tsis
+    if render_options.get("method", "volumetric") != "volumetric":
+        raise ValueError("render_split renders method volumetric only")
+    for name in ("spp_offset", "time"):
+        if name in render_options:
+            raise ValueError(f"render_split: {name} is render_split's to set")
+    if not 1 <= batches <= spp:
+        raise ValueError(f"batches {batches}: between 1 and spp ({spp})")
+    backend = _backend(backend, workers, retries)
+    sizes = [spp // batches + (i < spp % batches) for i in range(batches)]
+    tasks = [(i, "frame", (scene, dict(render_options, method="volumetric", spp=n,
+                                       spp_offset=sum(sizes[:i]))))
+             for i, n in enumerate(sizes)]
+    results = {}
+    _schedule(backend, workers, address, tasks, retries, None,
+              lambda task, result, attempts: results.__setitem__(task[0], result))
+    failed = [r["error"] for r in results.values() if r["status"] != "ok"]
+    if failed:
+        raise tsis.Error(failed[0])
+    frames = [results[i]["frame"] for i in range(batches)]
+    out = copy.copy(frames[0])
+    weights = np.asarray(sizes, np.float64) / spp
+    for name in ("radiance", "radiosity"):
+        mean = sum(w * getattr(f, name).astype(np.float64) for w, f in zip(weights, frames))
+        setattr(out, name, mean.astype(np.float32))
+    # Reinhard's log-average over the covered pixels (Rec. 709 luminance), as
+    # the renderer's own.
+    covered = out.coverage[..., 0] > 0
+    y = out.radiance[covered].astype(np.float64) @ np.array([0.2126, 0.7152, 0.0722])
+    out.lavg = float(np.exp(np.log(1e-12 + np.maximum(y, 0)).mean())) if y.size else 1.0
+    out.image = None
+    out.stats = dict(frames[0].stats, volumetric_spp=spp,
+                     batches=[dict(f.stats, worker=results[i]["worker"])
+                              for i, f in enumerate(frames)])
+    return out
