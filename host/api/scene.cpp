@@ -49,15 +49,6 @@ Mesh meshOfArrays(const std::vector<float>& vertices, const std::vector<uint32_t
     return mesh;
 }
 
-tsis::Material toInternal(const Material& m) {
-    tsis::Material t;
-    t.name = m.name;
-    t.sigmaSPrime = glm::dvec3(toGlm(m.sigmaSPrime));
-    t.sigmaA = glm::dvec3(toGlm(m.sigmaA));
-    t.eta = m.eta;
-    return t;
-}
-
 Material fromInternal(const tsis::Material& m) {
     Material out;
     out.name = m.name;
