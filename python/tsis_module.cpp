@@ -408,6 +408,29 @@ std::string pathOf(const py::object& p) {
     return py::str(py::module_::import("os").attr("fspath")(p)).cast<std::string>();
 }
 
+// An environment's pixels as numpy (H×W×3 float32), None when it has none.
+py::object pixelsOf(const Environment& e) {
+    if (e.pixels.empty()) return py::none();
+    return py::array_t<float>({e.height, e.width, 3}, e.pixels.data());
+}
+
+// Sets them from an H×W×3 array of real numbers (None: none); the scene
+// checks the rest (2:1) when the environment is set.
+void setPixels(Environment& e, const py::object& pixels) {
+    e.pixels.clear();
+    e.width = e.height = 0;
+    if (pixels.is_none()) return;
+    const py::array a = arrayOf(pixels, "Environment: pixels");
+    if (a.ndim() != 3 || a.shape(2) != 3 ||
+        (kindOf(a) != 'f' && kindOf(a) != 'i' && kindOf(a) != 'u'))
+        throw tsis::Error("Environment: pixels: expected an H×W×3 array of real numbers, got " +
+                          py::str(a.dtype()).cast<std::string>() + " of shape " + shapeOf(a));
+    const auto f = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(a);
+    e.pixels.assign(f.data(), f.data() + f.size());
+    e.height = static_cast<int>(a.shape(0));
+    e.width = static_cast<int>(a.shape(1));
+}
+
 // A sequence `t` of exactly n items for __setstate__.
 py::tuple state(const py::tuple& t, size_t n, const char* what) {
     if (t.size() != n) throw std::runtime_error(std::string(what) + ": invalid pickled state");
@@ -528,36 +551,48 @@ PYBIND11_MODULE(_tsis, m) {
                         }));
 
     py::class_<Environment>(m, "Environment")
-        .def(py::init([](const py::object& path, double rotateDeg, double intensity) {
-                 return Environment{pathOf(path), intensity, rotateDeg};
+        .def(py::init([](const py::object& path, const py::object& pixels, double rotateDeg,
+                         double intensity) {
+                 if (path.is_none() && pixels.is_none())
+                     throw tsis::Error("Environment: give a path or pixels");
+                 Environment e{path.is_none() ? "" : pathOf(path), intensity, rotateDeg};
+                 setPixels(e, pixels);
+                 return e;
              }),
-             py::arg("path"), py::kw_only(), py::arg("rotate_deg") = 0.0,
-             py::arg("intensity") = 1.0,
-             "a lat-long radiance map (.exr, .hdr) in W/(mm²·sr), scaled by intensity and "
-             "turned by rotate_deg about +y; checked when set as Scene.environment")
+             py::arg("path") = py::none(), py::kw_only(), py::arg("pixels") = py::none(),
+             py::arg("rotate_deg") = 0.0, py::arg("intensity") = 1.0,
+             "a lat-long radiance map in W/(mm²·sr): a file (.exr, .hdr) or pixels (H×W×3, "
+             "2:1, row 0 the zenith; path then names it), scaled by intensity and turned by "
+             "rotate_deg about +y; checked when set as Scene.environment")
         .def_readwrite("path", &Environment::path)
+        .def_property("pixels", &pixelsOf, &setPixels, "H×W×3 float32, or None (a file's)")
         .def_readwrite("rotate_deg", &Environment::rotateDegrees)
         .def_readwrite("intensity", &Environment::intensity)
         .def("__repr__",
              [](const Environment& e) {
-                 return "Environment(" + quoted(e.path) + ", rotate_deg=" + num(e.rotateDegrees) +
-                        ", intensity=" + num(e.intensity) + ")";
+                 const std::string rest =
+                     "rotate_deg=" + num(e.rotateDegrees) + ", intensity=" + num(e.intensity);
+                 if (e.pixels.empty()) return "Environment(" + quoted(e.path) + ", " + rest + ")";
+                 return "<tsis.Environment " + quoted(e.path) + ": " + std::to_string(e.width) +
+                        "×" + std::to_string(e.height) + " pixels, " + rest + ">";
              })
         .def(
             "__eq__",
             [](const Environment& a, const Environment& b) {
                 return a.path == b.path && a.rotateDegrees == b.rotateDegrees &&
-                       a.intensity == b.intensity;
+                       a.intensity == b.intensity && a.width == b.width && a.height == b.height &&
+                       a.pixels == b.pixels;
             },
             py::is_operator())
         .def(py::pickle(
             [](const Environment& e) {
-                return py::make_tuple(e.path, e.rotateDegrees, e.intensity);
+                return py::make_tuple(e.path, e.rotateDegrees, e.intensity, pixelsOf(e));
             },
             [](const py::tuple& t0) {
-                const py::tuple t = state(t0, 3, "Environment");
-                return Environment{t[0].cast<std::string>(), t[2].cast<double>(),
-                                   t[1].cast<double>()};
+                const py::tuple t = state(t0, 4, "Environment");
+                Environment e{t[0].cast<std::string>(), t[2].cast<double>(), t[1].cast<double>()};
+                setPixels(e, t[3]);
+                return e;
             }));
 
     py::class_<Camera>(m, "Camera")
@@ -636,7 +671,8 @@ PYBIND11_MODULE(_tsis, m) {
                         (s.environment() ? ", environment " + quoted(s.environment()->path) : "") +
                         ">";
              })
-        // Pickled as its options (and its arrays), made again on unpickling.
+        // Pickled as its options (and its arrays and an environment of pixels),
+        // made again on unpickling.
         .def(py::pickle(
             [](const PyScene& s) {
                 py::object v = py::none(), t = py::none();
@@ -647,11 +683,17 @@ PYBIND11_MODULE(_tsis, m) {
                     t = py::array_t<uint32_t>({py::ssize_t(a.triangles.size() / 3), py::ssize_t(3)},
                                               a.triangles.data());
                 }
-                return py::make_tuple(keywordsOf(s.options()), v, t);
+                // An environment of pixels is not among the options.
+                const auto env = s.environment();
+                const py::object pixelEnv =
+                    env && !env->pixels.empty() ? py::cast(*env) : py::object(py::none());
+                return py::make_tuple(keywordsOf(s.options()), v, t, pixelEnv);
             },
             [](const py::tuple& t0) {
-                const py::tuple t = state(t0, 3, "Scene");
-                return makeScene(t[0].cast<py::dict>(), t[1], t[2]);
+                const py::tuple t = state(t0, 4, "Scene");
+                PyScene s = makeScene(t[0].cast<py::dict>(), t[1], t[2]);
+                if (!t[3].is_none()) s.setEnvironment(t[3].cast<Environment>());
+                return s;
             }));
 
     py::class_<PyFrame>(m, "Frame", "what Renderer.render gives")

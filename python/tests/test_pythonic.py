@@ -116,6 +116,27 @@ def test_scene_environment_materials_and_repr():
     assert s.environment is None and len(s.lights) == 2  # the defaults again
 
 
+def test_an_environment_of_pixels_pickles_with_its_scene():
+    sky = np.zeros((16, 32, 3), np.float32)
+    sky[:8] = (0.02, 0.03, 0.05)  # the upper half lit
+    env = tsis.Environment("sky", pixels=sky, rotate_deg=30)
+    assert np.array_equal(env.pixels, sky) and env.pixels.dtype == np.float32
+    assert roundtrip(env) == env and repr(env).startswith("<tsis.Environment 'sky': 32×16 pixels")
+    assert env != tsis.Environment("sky", pixels=sky * 2, rotate_deg=30)
+    assert tsis.Environment(SKY).pixels is None
+    s = tsis.Scene(mesh="builtin:sphere")
+    s.environment = env
+    again = roundtrip(s)
+    assert again.environment == env and s.environment == env
+    r = tsis.Renderer()
+    assert np.array_equal(r.render(again, **SMALL).image, r.render(s, **SMALL).image)
+    with pytest.raises(tsis.Error, match="give a path or pixels"):
+        tsis.Environment()
+    with pytest.raises(tsis.Error, match=r"H×W×3 array of real numbers, got float64 of shape "
+                                         r"\(16, 32\)"):
+        tsis.Environment(pixels=np.zeros((16, 32)))
+
+
 def test_notes_are_warnings_unless_quiet():
     open_mesh = dict(vertices=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], triangles=[[0, 1, 2]])
     with pytest.warns(tsis.NoteWarning, match="not closed") as said:

@@ -47,10 +47,12 @@ class Light:
                  rgb: Vec3 = (1, 1, 1)) -> None: ...
 
 class Environment:
-    path: str
+    path: str  # the file; with pixels, only the map's name
+    pixels: npt.NDArray[np.float32] | None  # H×W×3 (2:1, row 0 the zenith), None: a file's
     rotate_deg: float
     intensity: float
-    def __init__(self, path: str | PathLike[str], *, rotate_deg: float = 0.0,
+    def __init__(self, path: str | PathLike[str] | None = None, *,
+                 pixels: npt.ArrayLike | None = None, rotate_deg: float = 0.0,
                  intensity: float = 1.0) -> None: ...
 
 class Camera:
