@@ -119,7 +119,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     };
     int done = 0;
     while (done < spp) {
-        const auto s = static_cast<uint64_t>(o.sppOffset + done);
+        const uint64_t s = static_cast<uint64_t>(o.sppOffset) + static_cast<uint64_t>(done);
         if (photons)
             lightPass(s);
         else

@@ -28,7 +28,7 @@ TEST(Args, ValuesFlagsAliasesAndRepeats) {
 }
 
 TEST(Args, ErrorsAreClear) {
-    auto message = [](std::vector<std::string> argv) {
+    auto message = [](const std::vector<std::string>& argv) {
         try {
             Args a("render", kSpecs, argv);
             a.getInt("samples", 900, 1, 1000);
