@@ -437,6 +437,74 @@ py::tuple state(const py::tuple& t, size_t n, const char* what) {
     return t;
 }
 
+
+// --- objects of a scene of several ----------------------------------------
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.name == b.name && a.sigmaSPrime == b.sigmaSPrime && a.sigmaA == b.sigmaA &&
+           a.eta == b.eta && a.albedo == b.albedo && a.mfpMm == b.mfpMm &&
+           a.albedoTexture == b.albedoTexture;
+}
+
+bool sameTransform(const Transform& a, const Transform& b) {
+    return a.scale == b.scale && a.rotateDegrees == b.rotateDegrees &&
+           a.translateMm == b.translateMm;
+}
+
+std::string transformRepr(const Transform& t) {
+    return "Transform(scale=" + num(t.scale) + ", rotate_deg=" + vec(t.rotateDegrees) +
+           ", translate_mm=" + vec(t.translateMm) + ")";
+}
+
+// An object's arrays as numpy (N×3 float32, M×3 uint32), None when it has none.
+py::object verticesOf(const Object& o) {
+    if (o.vertices.empty()) return py::none();
+    return py::array_t<float>({py::ssize_t(o.vertices.size() / 3), py::ssize_t(3)},
+                              o.vertices.data());
+}
+
+py::object trianglesOf(const Object& o) {
+    if (o.triangles.empty()) return py::none();
+    return py::array_t<uint32_t>({py::ssize_t(o.triangles.size() / 3), py::ssize_t(3)},
+                                 o.triangles.data());
+}
+
+// Set from arrays checked as Scene.from_arrays checks them (None: none).
+void setVertices(Object& o, const py::object& v) {
+    o.vertices = v.is_none() ? std::vector<float>{} : vertexRows(v);
+}
+
+void setTriangles(Object& o, const py::object& t) {
+    o.triangles = t.is_none() ? std::vector<uint32_t>{} : triangleRows(t);
+}
+
+Object makeObject(const py::object& mesh, const py::object& vertices, const py::object& triangles,
+                  const std::optional<Transform>& transform,
+                  const std::optional<Material>& material) {
+    Object o;
+    if (!mesh.is_none()) o.mesh = pathOf(mesh);
+    setVertices(o, vertices);
+    setTriangles(o, triangles);
+    o.transform = transform.value_or(Transform{});
+    o.material = material;
+    return o;
+}
+
+// A sequence of tsis.Object, each checked to be one.
+std::vector<Object> objectsOf(const py::handle& objects) {
+    if (!py::isinstance<py::iterable>(objects) || py::isinstance<py::str>(objects))
+        throw tsis::Error("Scene.from_objects: objects: expected a sequence of tsis.Object, not " +
+                          typeName(objects));
+    std::vector<Object> out;
+    for (const py::handle item : objects) {
+        if (!py::isinstance<Object>(item))
+            throw tsis::Error("Scene.from_objects: object " + std::to_string(out.size()) +
+                              " is a " + typeName(item) + ", not a tsis.Object");
+        out.push_back(item.cast<Object>());
+    }
+    return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_tsis, m) {
@@ -459,10 +527,23 @@ PYBIND11_MODULE(_tsis, m) {
         "the previous setting");
 
     py::class_<Material>(m, "Material")
-        .def(py::init(&makeMaterial), py::arg("name") = "custom", py::kw_only(),
-             py::arg("sigma_s") = py::none(), py::arg("sigma_a") = py::none(),
-             py::arg("albedo") = py::none(), py::arg("mfp_mm") = py::none(), py::arg("eta") = 1.3f,
-             "Material(sigma_s=…, sigma_a=…, eta=1.3) or Material(albedo=…, mfp_mm=…, eta=1.3)")
+        .def(py::init([](const std::string& name, const std::optional<Vec3>& sigmaS,
+                         const std::optional<Vec3>& sigmaA, const std::optional<Vec3>& albedo,
+                         const std::optional<Vec3>& mfpMm, float eta,
+                         const py::object& albedoTexture) {
+                 Material x = makeMaterial(name, sigmaS, sigmaA, albedo, mfpMm, eta);
+                 if (!albedoTexture.is_none()) x.albedoTexture = pathOf(albedoTexture);
+                 return x;
+             }),
+             py::arg("name") = "custom", py::kw_only(), py::arg("sigma_s") = py::none(),
+             py::arg("sigma_a") = py::none(), py::arg("albedo") = py::none(),
+             py::arg("mfp_mm") = py::none(), py::arg("eta") = 1.3f,
+             py::arg("albedo_texture") = py::none(),
+             "Material(sigma_s=…, sigma_a=…, eta=1.3) or Material(albedo=…, mfp_mm=…, eta=1.3): "
+             "a medium by its scattering and absorption (1/mm, RGB), or by its diffuse "
+             "reflectance and mean free path (mm), inverted by the renderer's --profile; "
+             "albedo_texture an image file scaling the albedo through the object's texture "
+             "coordinates")
         .def_static("preset", &Material::preset, py::arg("name"),
                     "a preset of tsis.preset_materials()")
         .def_readwrite("name", &Material::name)
@@ -485,7 +566,12 @@ PYBIND11_MODULE(_tsis, m) {
         .def_readonly("albedo", &Material::albedo,
                       "diffuse reflectance (RGB) when given, else None")
         .def_readonly("mfp_mm", &Material::mfpMm, "mean free path (mm, RGB) when given, else None")
-        .def_readonly("albedo_texture", &Material::albedoTexture, "a file material's texture")
+        .def_property(
+            "albedo_texture", [](const Material& x) { return x.albedoTexture; },
+            [](Material& x, const py::object& path) { x.albedoTexture = pathOf(path); },
+            "an albedo texture (an image file, sRGB when 8-bit; '' none): a file material's "
+            "own, or set on an object's material (tsis.Object) to apply through its texture "
+            "coordinates")
         .def("__repr__",
              [](const Material& x) {
                  std::string s = "Material(" + (x.name == "custom" ? "" : quoted(x.name) + ", ");
@@ -493,15 +579,13 @@ PYBIND11_MODULE(_tsis, m) {
                      s += "albedo=" + vec(*x.albedo) + ", mfp_mm=" + vec(*x.mfpMm);
                  else
                      s += "sigma_s=" + vec(x.sigmaSPrime) + ", sigma_a=" + vec(x.sigmaA);
-                 return s + ", eta=" + num(x.eta) + ")";
+                 s += ", eta=" + num(x.eta);
+                 if (!x.albedoTexture.empty()) s += ", albedo_texture=" + quoted(x.albedoTexture);
+                 return s + ")";
              })
         .def(
             "__eq__",
-            [](const Material& a, const Material& b) {
-                return a.name == b.name && a.sigmaSPrime == b.sigmaSPrime && a.sigmaA == b.sigmaA &&
-                       a.eta == b.eta && a.albedo == b.albedo && a.mfpMm == b.mfpMm &&
-                       a.albedoTexture == b.albedoTexture;
-            },
+            [](const Material& a, const Material& b) { return sameMaterial(a, b); },
             py::is_operator())
         .def(py::pickle(
             [](const Material& x) {
@@ -625,6 +709,96 @@ PYBIND11_MODULE(_tsis, m) {
                               t[3].cast<float>()};
             }));
 
+
+    py::class_<Transform>(m, "Transform",
+                          "where an object stands in its scene: scaled, then turned (degrees "
+                          "about x, then y, then z), then moved (mm)")
+        .def(py::init([](float scale, Vec3 rotate, Vec3 translate) {
+                 return Transform{scale, rotate, translate};
+             }),
+             py::kw_only(), py::arg("scale") = 1.0f, py::arg("rotate_deg") = Vec3{0, 0, 0},
+             py::arg("translate_mm") = Vec3{0, 0, 0},
+             "Transform(scale=1, rotate_deg=(0, 0, 0), translate_mm=(0, 0, 0)); checked when "
+             "the scene is made (Scene.from_objects)")
+        .def_readwrite("scale", &Transform::scale, "the object's size × scale (> 0)")
+        .def_readwrite("rotate_deg", &Transform::rotateDegrees,
+                       "degrees about x, then y, then z")
+        .def_readwrite("translate_mm", &Transform::translateMm, "the move (mm), last")
+        .def("__repr__", &transformRepr)
+        .def(
+            "__eq__", [](const Transform& a, const Transform& b) { return sameTransform(a, b); },
+            py::is_operator())
+        .def(py::pickle(
+            [](const Transform& t) {
+                return py::make_tuple(t.scale, t.rotateDegrees, t.translateMm);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 3, "Transform");
+                return Transform{t[0].cast<float>(), t[1].cast<Vec3>(), t[2].cast<Vec3>()};
+            }));
+
+    py::class_<Object>(m, "Object",
+                       "one object of a scene of several (Scene.from_objects): a mesh file or "
+                       "builtin:NAME, or arrays (mm), placed by its transform, scattering in its "
+                       "material")
+        .def(py::init(&makeObject), py::kw_only(), py::arg("mesh") = py::none(),
+             py::arg("vertices") = py::none(), py::arg("triangles") = py::none(),
+             py::arg("transform") = py::none(), py::arg("material") = py::none(),
+             "Object(mesh=None, vertices=None, triangles=None, transform=None, material=None): "
+             "a mesh (a file: glTF in metres, others in mm; or builtin:NAME) or vertices N×3 "
+             "(mm) and triangles M×3 (counter-clockwise from outside), checked as "
+             "Scene.from_arrays checks them; material None: the file's own, else the scene's")
+        .def_property(
+            "mesh",
+            [](const Object& o) -> py::object {
+                return o.mesh.empty() ? py::object(py::none()) : py::str(o.mesh);
+            },
+            [](Object& o, const py::object& mesh) { o.mesh = mesh.is_none() ? "" : pathOf(mesh); },
+            "the mesh file or builtin:NAME, or None (arrays)")
+        .def_property("vertices", &verticesOf, &setVertices,
+                      "N×3 float32 (mm), or None (a mesh file's)")
+        .def_property("triangles", &trianglesOf, &setTriangles,
+                      "M×3 uint32 vertex indices, or None (a mesh file's)")
+        .def_readwrite("transform", &Object::transform, "where it stands (tsis.Transform)")
+        .def_readwrite("material", &Object::material,
+                       "what all of it scatters in, or None (the file's, else the scene's)")
+        .def("__repr__",
+             [](const Object& o) {
+                 std::string rest = "transform=" + transformRepr(o.transform);
+                 if (o.material)
+                     rest += ", material=" + py::repr(py::cast(*o.material)).cast<std::string>();
+                 if (o.vertices.empty() && o.triangles.empty())
+                     return "Object(mesh=" + (o.mesh.empty() ? "None" : quoted(o.mesh)) + ", " +
+                            rest + ")";
+                 return "<tsis.Object" + (o.mesh.empty() ? "" : " " + quoted(o.mesh)) + ": " +
+                        std::to_string(o.vertices.size() / 3) + " vertices, " +
+                        std::to_string(o.triangles.size() / 3) + " triangles, " + rest + ">";
+             })
+        .def(
+            "__eq__",
+            [](const Object& a, const Object& b) {
+                return a.mesh == b.mesh && a.vertices == b.vertices &&
+                       a.triangles == b.triangles && sameTransform(a.transform, b.transform) &&
+                       a.material.has_value() == b.material.has_value() &&
+                       (!a.material || sameMaterial(*a.material, *b.material));
+            },
+            py::is_operator())
+        .def(py::pickle(
+            [](const Object& o) {
+                return py::make_tuple(o.mesh, verticesOf(o), trianglesOf(o), o.transform,
+                                      o.material);
+            },
+            [](const py::tuple& t0) {
+                const py::tuple t = state(t0, 5, "Object");
+                Object o;
+                o.mesh = t[0].cast<std::string>();
+                setVertices(o, t[1]);
+                setTriangles(o, t[2]);
+                o.transform = t[3].cast<Transform>();
+                o.material = t[4].cast<std::optional<Material>>();
+                return o;
+            }));
+
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::kwargs& kw) {
                  PyScene s = makeScene(kw);
@@ -642,6 +816,21 @@ PYBIND11_MODULE(_tsis, m) {
             },
             py::arg("vertices"), py::arg("triangles"),
             "vertices N×3 and triangles M×3 (counter-clockwise from outside); options as Scene()")
+        .def_static(
+            "from_objects",
+            [](const py::object& objects, const py::kwargs& kw) {
+                PyScene s(Scene::fromObjects(objectsOf(objects), optionsOf(kw)));
+                warnNotes(s.notes());
+                return s;
+            },
+            py::arg("objects"),
+            "several tsis.Object as one scene, each placed by its transform and scattering in "
+            "its material (a medium each, shadows between them); the whole scaled to size_mm "
+            "(size_mm='file': each at its own size in mm); options as Scene() (no mesh); errors "
+            "name the object (\"object 1 (builtin:sphere): scale -1 must be positive\")")
+        .def_property_readonly(
+            "objects", [](const PyScene& s) { return s.objects(); },
+            "the objects as given to Scene.from_objects (copies; [] for any other scene)")
         .def_property("material", &Scene::material, sceneSetter(&Scene::setMaterial, "material"),
                       "the material of every triangle; None when the mesh file's own apply")
         .def_property_readonly("materials", &Scene::materials,
@@ -664,14 +853,16 @@ PYBIND11_MODULE(_tsis, m) {
         .def("__repr__",
              [](const PyScene& s) {
                  const auto mat = s.material();
+                 const size_t objects = s.objects().size();
                  return "<tsis.Scene " + quoted(s.meshName()) + ": " +
+                        (objects ? std::to_string(objects) + " objects, " : "") +
                         std::to_string(s.triangleCount()) + " triangles, material " +
-                        (mat ? mat->name : "from the file") + ", " +
+                        (mat ? mat->name : objects ? "of each object" : "from the file") + ", " +
                         std::to_string(s.lights().size()) + " lights" +
                         (s.environment() ? ", environment " + quoted(s.environment()->path) : "") +
                         ">";
              })
-        // Pickled as its options (and its arrays and an environment of pixels),
+        // Pickled as its options (and its arrays or objects and an environment of pixels),
         // made again on unpickling.
         .def(py::pickle(
             [](const PyScene& s) {
@@ -687,11 +878,14 @@ PYBIND11_MODULE(_tsis, m) {
                 const auto env = s.environment();
                 const py::object pixelEnv =
                     env && !env->pixels.empty() ? py::cast(*env) : py::object(py::none());
-                return py::make_tuple(keywordsOf(s.options()), v, t, pixelEnv);
+                return py::make_tuple(keywordsOf(s.options()), v, t, pixelEnv, s.objects());
             },
             [](const py::tuple& t0) {
-                const py::tuple t = state(t0, 4, "Scene");
-                PyScene s = makeScene(t[0].cast<py::dict>(), t[1], t[2]);
+                const py::tuple t = state(t0, 5, "Scene");
+                const auto objects = t[4].cast<std::vector<Object>>();
+                PyScene s = objects.empty()
+                                ? makeScene(t[0].cast<py::dict>(), t[1], t[2])
+                                : PyScene(Scene::fromObjects(objects, optionsOf(t[0].cast<py::dict>())));
                 if (!t[3].is_none()) s.setEnvironment(t[3].cast<Environment>());
                 return s;
             }));

@@ -276,3 +276,112 @@ def test_the_package_reexports_the_extension_and_writes_images(tmp_path):
     assert np.array_equal(tsis.read_image(tmp_path / "f.exr"), f.radiance)
     with pytest.raises(tsis.Error, match=r"H×W×3 uint8 array, got shape \(32, 40\)"):
         tsis.write_image(tmp_path / "g.png", f.image[..., 0])
+
+
+# --- scenes of several objects --------------------------------------------
+
+OBJECT_SCENE = dict(size_mm="file", light=["dir:0,0,-1:1,1,1"], eye=(0, 0, 12))
+OBJECT_FRAME = dict(width=64, height=32, atlas_res=256, light_res=256)
+
+
+def two_spheres(right="skin1"):
+    return [tsis.Object(mesh="builtin:sphere", transform=tsis.Transform(translate_mm=(-3, 0, 0)),
+                        material=tsis.Material.preset("marble")),
+            tsis.Object(mesh="builtin:sphere",
+                        transform=tsis.Transform(scale=1.5, rotate_deg=(0, 90, 0),
+                                                 translate_mm=(3, 0, 0)),
+                        material=tsis.Material.preset(right))]
+
+
+def side_mean(f, x, sign):
+    """The mean red radiance of the covered pixels on one side of x (mm)."""
+    on = (f.coverage[..., 0] > 0.5) & (sign * (f.position[..., 0] - x) > 0)
+    return float(f.radiance[..., 0][on].mean()), int(on.sum())
+
+
+def test_objects_and_transforms_are_values():
+    t = tsis.Transform(scale=1.5, rotate_deg=(0, 90, 0), translate_mm=(3, 0, 0))
+    assert t.scale == 1.5 and t.rotate_deg == [0, 90, 0] and t.translate_mm == [3, 0, 0]
+    assert tsis.Transform() == tsis.Transform(scale=1, rotate_deg=(0, 0, 0),
+                                              translate_mm=(0, 0, 0))
+    o = two_spheres()[1]
+    assert o.mesh == "builtin:sphere" and o.vertices is None and o.triangles is None
+    assert o.transform == t and o.material == tsis.Material.preset("skin1")
+    textured = tsis.Material(albedo=(0.9, 0.9, 0.9), mfp_mm=(0.5, 0.5, 0.5),
+                             albedo_texture=pathlib.Path("halves.png"))
+    assert textured.albedo_texture == "halves.png"
+    for x in (t, o, tsis.Object(mesh="builtin:cube"), textured):
+        again = eval(repr(x), vars(tsis))
+        assert again == x and roundtrip(x) == x and copy.deepcopy(x) == x
+        with pytest.raises(TypeError):
+            hash(x)
+    assert o != tsis.Object(mesh="builtin:sphere", transform=t)  # no material
+    textured.albedo_texture = ""
+    assert textured == tsis.Material(albedo=(0.9, 0.9, 0.9), mfp_mm=(0.5, 0.5, 0.5))
+
+
+def test_an_object_of_numpy_arrays_is_checked_as_from_arrays_checks():
+    v, t = tetrahedron()
+    o = tsis.Object(vertices=v, triangles=t.astype(np.uint16))
+    assert o.mesh is None and o.vertices.dtype == np.float32 and o.triangles.dtype == np.uint32
+    assert np.array_equal(o.vertices, v) and np.array_equal(o.triangles, t)
+    assert o == tsis.Object(vertices=v.tolist(), triangles=t.tolist()) and roundtrip(o) == o
+    assert repr(o).startswith("<tsis.Object: 4 vertices, 4 triangles, transform=Transform(")
+    with pytest.raises(tsis.Error, match=r"vertices: expected an N×3 array, got shape \(4, 2\)"):
+        tsis.Object(vertices=v[:, :2], triangles=t)
+    with pytest.raises(tsis.Error, match="triangles: triangle 0 has index -2, outside"):
+        tsis.Object(vertices=v, triangles=-t)
+    with pytest.raises(tsis.Error, match=r"vertex 1 has nan"):
+        o.vertices = np.where(np.arange(12).reshape(4, 3) == 4, np.nan, v)
+    s = tsis.Scene.from_objects([o], material="marble")
+    assert s.triangle_count == 4 and s.objects == [o]
+    assert np.array_equal(tsis.render(s, **SMALL).image,
+                          tsis.render(tsis.Scene.from_arrays(v, t, material="marble"),
+                                      **SMALL).image)
+
+
+def test_two_objects_scatter_in_their_own_materials():
+    same = tsis.Scene.from_objects(two_spheres("marble"), **OBJECT_SCENE)
+    other = tsis.Scene.from_objects(two_spheres("ketchup"), **OBJECT_SCENE)
+    assert len(other.objects) == 2 and other.objects[1].material.name == "ketchup"
+    assert len(other.materials) == 2 and "2 objects" in repr(other)
+    r = tsis.Renderer()
+    a, b = (r.render(s, **OBJECT_FRAME) for s in (same, other))
+    (left_a, n_left), (left_b, n_left_b) = side_mean(a, -1.5, -1), side_mean(b, -1.5, -1)
+    (right_a, n_right), (right_b, n_right_b) = side_mean(a, 1.0, 1), side_mean(b, 1.0, 1)
+    print(f"left {left_a:.5f} / {left_b:.5f} ({n_left} px), "
+          f"right {right_a:.5f} / {right_b:.5f} ({n_right} px)")
+    assert n_left > 20 and n_right > 2 * n_left  # 1.5× the radius
+    assert (n_left_b, n_right_b) == (n_left, n_right)
+    assert left_b == pytest.approx(left_a, rel=0.03)  # the left one's pixels unchanged
+    assert abs(right_b / right_a - 1) > 0.1
+
+
+def test_object_errors_name_the_object():
+    bad = two_spheres()
+    bad[1].transform.scale = -1
+    with pytest.raises(tsis.Error, match=r"^object 1 \(builtin:sphere\): scale -1 must be "
+                                         r"positive$"):
+        tsis.Scene.from_objects(bad)
+    v, t = tetrahedron()
+    bad[1] = tsis.Object(mesh="builtin:sphere", vertices=v, triangles=t)
+    with pytest.raises(tsis.Error, match="^object 1: a mesh file and arrays: give one$"):
+        tsis.Scene.from_objects(bad)
+    with pytest.raises(tsis.Error, match="at least one object"):
+        tsis.Scene.from_objects([])
+    with pytest.raises(tsis.Error, match="object 1 is a str, not a tsis.Object"):
+        tsis.Scene.from_objects([two_spheres()[0], "builtin:sphere"])
+    with pytest.raises(tsis.Error, match="--mesh: the objects are the mesh"):
+        tsis.Scene.from_objects(two_spheres(), mesh="builtin:cube")
+
+
+def test_a_scene_of_objects_pickles_with_its_objects_and_renders_the_same_bytes():
+    s = tsis.Scene.from_objects(two_spheres(), **OBJECT_SCENE)
+    s.camera = tsis.Camera(eye=(0, 1, 14), fov=33)
+    again = roundtrip(s)
+    assert again.objects == s.objects and again.options() == s.options()
+    assert tsis.Scene(mesh="builtin:sphere").objects == []
+    r = tsis.Renderer()
+    a, b, c = (r.render(x, **OBJECT_FRAME) for x in (s, again, copy.copy(s)))
+    assert np.array_equal(a.image, b.image) and np.array_equal(a.radiance, b.radiance)
+    assert np.array_equal(a.image, c.image)
