@@ -511,6 +511,8 @@ PYBIND11_MODULE(_tsis, m) {
     m.doc() =
         "tsis: translucent materials rendered with the dipole BSSRDF (README, docs/design.md)";
     py::register_exception<tsis::Error>(m, "Error", PyExc_RuntimeError);
+    m.attr("Error").attr("__doc__") =
+        "what tsis refuses or fails at, with the one-line text `tsis` prints (a RuntimeError)";
     noteWarning = PyErr_NewExceptionWithDoc(
         "tsis.NoteWarning", "what loading a scene noted (`tsis render`'s \"tsis: note: …\")",
         PyExc_UserWarning, nullptr);
@@ -526,7 +528,8 @@ PYBIND11_MODULE(_tsis, m) {
         "quiet: scenes made from Python no longer warn their notes (tsis.NoteWarning); returns "
         "the previous setting");
 
-    py::class_<Material>(m, "Material")
+    py::class_<Material>(m, "Material",
+                        "a translucent medium (docs/design.md §2)")
         .def(py::init([](const std::string& name, const std::optional<Vec3>& sigmaS,
                          const std::optional<Vec3>& sigmaA, const std::optional<Vec3>& albedo,
                          const std::optional<Vec3>& mfpMm, float eta,
@@ -537,7 +540,7 @@ PYBIND11_MODULE(_tsis, m) {
              }),
              py::arg("name") = "custom", py::kw_only(), py::arg("sigma_s") = py::none(),
              py::arg("sigma_a") = py::none(), py::arg("albedo") = py::none(),
-             py::arg("mfp_mm") = py::none(), py::arg("eta") = 1.3f,
+             py::arg("mfp_mm") = py::none(), py::arg("eta") = 1.3,
              py::arg("albedo_texture") = py::none(),
              "Material(sigma_s=…, sigma_a=…, eta=1.3) or Material(albedo=…, mfp_mm=…, eta=1.3): "
              "a medium by its scattering and absorption (1/mm, RGB), or by its diffuse "
@@ -546,7 +549,7 @@ PYBIND11_MODULE(_tsis, m) {
              "coordinates")
         .def_static("preset", &Material::preset, py::arg("name"),
                     "a preset of tsis.preset_materials()")
-        .def_readwrite("name", &Material::name)
+        .def_readwrite("name", &Material::name, "a preset's name, else 'custom'")
         // σ given: the material is no longer the albedo's (albedo, mfp_mm None).
         .def_property(
             "sigma_s", [](const Material& x) { return x.sigmaSPrime; },
@@ -562,7 +565,7 @@ PYBIND11_MODULE(_tsis, m) {
                 x.albedo = x.mfpMm = std::nullopt;
             },
             "absorption σa (1/mm, RGB)")
-        .def_readwrite("eta", &Material::eta)
+        .def_readwrite("eta", &Material::eta, "the relative index of refraction η")
         .def_readonly("albedo", &Material::albedo,
                       "diffuse reflectance (RGB) when given, else None")
         .def_readonly("mfp_mm", &Material::mfpMm, "mean free path (mm, RGB) when given, else None")
@@ -603,9 +606,10 @@ PYBIND11_MODULE(_tsis, m) {
                                 t[6].cast<std::string>()};
             }));
     m.def("preset_material", &presetMaterial, py::arg("name"), "Material.preset");
-    m.def("preset_materials", &presetMaterialNames);
+    m.def("preset_materials", &presetMaterialNames,
+          "the names of the presets (`tsis materials`): skin1, marble, …");
 
-    py::class_<Light>(m, "Light")
+    py::class_<Light>(m, "Light", "a point or directional light")
         .def(py::init([](std::optional<Vec3> position, std::optional<Vec3> direction, Vec3 rgb) {
                  if (position.has_value() == direction.has_value())
                      throw tsis::Error("Light: give position (a point light) or direction");
@@ -613,8 +617,10 @@ PYBIND11_MODULE(_tsis, m) {
                               rgb};
              }),
              py::kw_only(), py::arg("position") = py::none(), py::arg("direction") = py::none(),
-             py::arg("rgb") = Vec3{1, 1, 1})
-        .def_readwrite("directional", &Light::directional)
+             py::arg("rgb") = Vec3{1, 1, 1},
+             "Light(position=…) a point light at position (mm), rgb its intensity (W/sr); "
+             "Light(direction=…) a directional light, rgb its irradiance (W/mm²)")
+        .def_readwrite("directional", &Light::directional, "False: a point light")
         .def_readwrite("vec", &Light::vec, "point: position (mm); directional: direction")
         .def_readwrite("rgb", &Light::rgb, "point: intensity (W/sr); directional: W/mm²")
         .def("__repr__",
@@ -634,7 +640,8 @@ PYBIND11_MODULE(_tsis, m) {
                             return Light{t[0].cast<bool>(), t[1].cast<Vec3>(), t[2].cast<Vec3>()};
                         }));
 
-    py::class_<Environment>(m, "Environment")
+    py::class_<Environment>(m, "Environment",
+                           "a lat-long radiance map lighting the scene")
         .def(py::init([](const py::object& path, const py::object& pixels, double rotateDeg,
                          double intensity) {
                  if (path.is_none() && pixels.is_none())
@@ -648,10 +655,11 @@ PYBIND11_MODULE(_tsis, m) {
              "a lat-long radiance map in W/(mm²·sr): a file (.exr, .hdr) or pixels (H×W×3, "
              "2:1, row 0 the zenith; path then names it), scaled by intensity and turned by "
              "rotate_deg about +y; checked when set as Scene.environment")
-        .def_readwrite("path", &Environment::path)
+        .def_readwrite("path", &Environment::path, "the map's file; with pixels, only its name")
         .def_property("pixels", &pixelsOf, &setPixels, "H×W×3 float32, or None (a file's)")
-        .def_readwrite("rotate_deg", &Environment::rotateDegrees)
-        .def_readwrite("intensity", &Environment::intensity)
+        .def_readwrite("rotate_deg", &Environment::rotateDegrees,
+                       "the map turned about the up axis (+y), degrees")
+        .def_readwrite("intensity", &Environment::intensity, "the map's radiance scaled by it")
         .def("__repr__",
              [](const Environment& e) {
                  const std::string rest =
@@ -679,15 +687,17 @@ PYBIND11_MODULE(_tsis, m) {
                 return e;
             }));
 
-    py::class_<Camera>(m, "Camera")
+    py::class_<Camera>(m, "Camera", "a pinhole camera looking from eye at target")
         .def(py::init([](Vec3 eye, Vec3 target, Vec3 up, float fov) {
                  return Camera{eye, target, up, fov};
              }),
              py::arg("eye"), py::arg("target") = Vec3{0, 0, 0}, py::arg("up") = Vec3{0, 1, 0},
-             py::arg("fov") = 35.0f)
-        .def_readwrite("eye", &Camera::eye)
-        .def_readwrite("target", &Camera::target)
-        .def_readwrite("up", &Camera::up)
+             py::arg("fov") = 35.0f,
+             "Camera(eye, target=(0, 0, 0), up=(0, 1, 0), fov=35): positions in mm, fov the "
+             "vertical field of view in degrees; checked when set as Scene.camera")
+        .def_readwrite("eye", &Camera::eye, "where it looks from (mm)")
+        .def_readwrite("target", &Camera::target, "what it looks at (mm)")
+        .def_readwrite("up", &Camera::up, "the direction shown upwards")
         .def_readwrite("fov", &Camera::fovYDegrees, "vertical field of view (degrees)")
         .def("__repr__",
              [](const Camera& c) {
@@ -799,7 +809,9 @@ PYBIND11_MODULE(_tsis, m) {
                 return o;
             }));
 
-    py::class_<PyScene>(m, "Scene")
+    py::class_<PyScene>(m, "Scene",
+                         "what a frame shows: the mesh with its materials, lights, environment "
+                         "and camera")
         .def(py::init([](const py::kwargs& kw) {
                  PyScene s = makeScene(kw);
                  warnNotes(s.notes());
@@ -835,19 +847,22 @@ PYBIND11_MODULE(_tsis, m) {
                       "the material of every triangle; None when the mesh file's own apply")
         .def_property_readonly("materials", &Scene::materials,
                                "what each part scatters in (the file's, or the one material)")
-        .def_property("lights", &Scene::lights, sceneSetter(&Scene::setLights, "lights"))
+        .def_property("lights", &Scene::lights, sceneSetter(&Scene::setLights, "lights"),
+                      "the lights (tsis.Light); [] with an environment and none given")
         .def_property("environment", &Scene::environment,
                       sceneSetter(&Scene::setEnvironment, "environment"),
                       "the Environment lighting the scene, or None")
-        .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"))
+        .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"),
+                      "the camera (tsis.Camera)")
         .def_property_readonly("notes", &Scene::notes, "what loading the scene noted")
         .def(
             "options", [](const PyScene& s) { return keywordsOf(s.options()); },
             "the scene options as keywords that make this scene again (tsis.Scene(**options); "
             "from arrays: Scene.from_arrays(vertices, triangles, **options))")
-        .def_property_readonly("mesh_name", &Scene::meshName)
-        .def_property_readonly("vertex_count", &Scene::vertexCount)
-        .def_property_readonly("triangle_count", &Scene::triangleCount)
+        .def_property_readonly("mesh_name", &Scene::meshName,
+                               "the mesh's name ('arrays', 'objects', a file's or builtin:NAME)")
+        .def_property_readonly("vertex_count", &Scene::vertexCount, "the mesh's vertices")
+        .def_property_readonly("triangle_count", &Scene::triangleCount, "the mesh's triangles")
         .def("__copy__", [](const PyScene& s) { return PyScene(s); })
         .def("__deepcopy__", [](const PyScene& s, const py::dict&) { return PyScene(s); })
         .def("__repr__",
@@ -929,9 +944,13 @@ PYBIND11_MODULE(_tsis, m) {
                                t[8].cast<py::dict>()};
             }));
 
-    py::class_<PyRenderer>(m, "Renderer")
+    py::class_<PyRenderer>(m, "Renderer",
+                            "renders frames, keeping its GL context, programs and light maps "
+                            "from one to the next")
         .def(py::init<const std::string&, const std::string&>(), py::arg("cl_device") = "",
-             py::arg("gl") = "")
+             py::arg("gl") = "",
+             "cl_device: the OpenCL device (`tsis render --cl-device`; '' $TSIS_CL_DEVICE, else PoCL); "
+             "gl: egl, osmesa or auto (`--gl`; '' $TSIS_GL, else auto)")
         .def(
             "render",
             [](PyRenderer& r, const PyScene& s, const py::kwargs& kw) {
@@ -990,5 +1009,6 @@ PYBIND11_MODULE(_tsis, m) {
     m.def(
         "read_image", [](const py::object& path) { return toNumpy(readImage(pathOf(path))); },
         py::arg("path"), "an image file as linear float32, H×W×C");
-    m.def("option_help", &Options::help);
+    m.def("option_help", &Options::help,
+          "the options of `tsis render`, scene's and render's, with what each does");
 }
