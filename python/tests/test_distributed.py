@@ -135,3 +135,110 @@ def test_render_split_gives_the_whole_frames_radiance():
     with pytest.raises(tsis.Error, match="--width 0 is out of range"):
         distributed.render_split(scene, 4, 2, workers=1, backend="local", retries=0,
                                  **dict(opts, width=0))
+
+
+def reread_ray_token():
+    """This process's next ray.init reads its token again (Ray keeps the one it
+    read first)."""
+    try:
+        from ray._raylet import AuthenticationTokenLoader
+        AuthenticationTokenLoader.instance().reset_cache()
+    except (ImportError, AttributeError):
+        pass
+
+
+# After test_ray_sweep (pytest runs a file's tests in order): that one's local
+# Ray is shut down before this cluster starts, and this one's is ended before
+# any later test.
+@pytest.fixture
+def two_node_ray_cluster(tmp_path, monkeypatch):
+    """A Ray cluster of two nodes of one CPU each on this machine (`ray start
+    --head`, then `ray start --address=…`), its own temp dir and a fresh auth
+    token; yields its address. Its processes (each `ray start` in a session of
+    its own, which its daemons and workers keep) are ended at the end, and
+    only they: `ray stop` would end every Ray of the machine."""
+    import os
+    import secrets
+    import shutil
+    import signal
+    import socket
+    import subprocess
+    import sys
+    import tempfile
+    pytest.importorskip("ray")
+    ray_exe = os.path.join(os.path.dirname(sys.executable), "ray")
+    temp_dir = tempfile.mkdtemp(prefix="tsisray")  # short: Ray's socket paths go under it
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    # Ray 2.60 clusters check a token (RAY_AUTH_MODE=token): the nodes and this
+    # process (the driver) get the same one, not ~/.ray's.
+    token = secrets.token_hex(32)
+    monkeypatch.setenv("RAY_AUTH_MODE", "token")
+    monkeypatch.setenv("RAY_AUTH_TOKEN", token)
+    reread_ray_token()
+    env = dict(os.environ)  # PYTHONPATH too: the workers import tsis
+    address = f"127.0.0.1:{port}"
+    common = ["--num-cpus=1", f"--temp-dir={temp_dir}", "--disable-usage-stats"]
+    sessions = []
+
+    def start(*args):
+        p = subprocess.Popen([ray_exe, "start", *args, *common], env=env, text=True,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             start_new_session=True)
+        sessions.append(p.pid)
+        out, _ = p.communicate(timeout=60)
+        assert p.returncode == 0, out[-2000:]
+
+    def ours():
+        pids = []
+        for name in os.listdir("/proc"):
+            if not name.isdigit() or int(name) == os.getpid():
+                continue
+            try:
+                with open(f"/proc/{name}/cmdline", "rb") as f:
+                    cmdline = f.read()
+                if os.getsid(int(name)) in sessions or temp_dir.encode() in cmdline:
+                    pids.append(int(name))
+            except OSError:
+                pass
+        return pids
+
+    try:
+        start("--head", f"--port={port}", "--include-dashboard=false")
+        start(f"--address={address}")
+        yield address
+    finally:
+        for sig in (signal.SIGTERM, signal.SIGKILL):
+            for pid in ours():
+                try:
+                    os.kill(pid, sig)
+                except OSError:
+                    pass
+            deadline = time.monotonic() + (2 if sig == signal.SIGTERM else 5)
+            while ours() and time.monotonic() < deadline:
+                time.sleep(0.2)
+        left = ours()
+        reread_ray_token()
+        if not left:
+            shutil.rmtree(temp_dir, ignore_errors=True)
+        assert not left, f"processes of the test's Ray cluster left: {left}"
+
+
+def test_ray_sweep_on_a_two_node_cluster(tmp_path, two_node_ray_cluster):
+    import ray
+    assert not ray.is_initialized()
+    ray.init(address=two_node_ray_cluster)
+    try:
+        nodes = [n for n in ray.nodes() if n["Alive"]]
+        assert len(nodes) == 2 and all(n["Resources"].get("CPU") == 1 for n in nodes)
+    finally:
+        ray.shutdown()
+    jobs = four_jobs()
+    summary = distributed.sweep(jobs, tmp_path, workers=2, backend="ray",
+                                address=two_node_ray_cluster)
+    print(f"ray sweep of 4 jobs on a two-node cluster: {summary['seconds']:.1f} s")
+    assert summary["backend"] == "ray" and not ray.is_initialized()
+    check_sweep(tmp_path, jobs, summary)
+    # Both workers took jobs (each is given one at the start).
+    assert len({e["worker"] for e in index_of(tmp_path)}) == 2
