@@ -1,6 +1,6 @@
 """tsis.distributed: sweeps of tiny frames on two local worker processes (and
 on Ray when it is installed): images and index lines, a rerun that skips what
-is done, failures retried then recorded, a worker that dies replaced."""
+is done, failures retried then recorded, a worker that dies replaced; a sweep on a two-node Ray cluster of this machine."""
 import json
 import time
 
@@ -138,10 +138,11 @@ def test_render_split_gives_the_whole_frames_radiance():
 
 
 def reread_ray_token():
-    """This process's next ray.init reads its token again (Ray keeps the one it
-    read first)."""
+    """This process's next ray.init reads RAY_AUTH_MODE and its token again (Ray
+    keeps what it read first)."""
     try:
-        from ray._raylet import AuthenticationTokenLoader
+        from ray._raylet import AuthenticationTokenLoader, Config
+        Config.initialize("")
         AuthenticationTokenLoader.instance().reset_cache()
     except (ImportError, AttributeError):
         pass
