@@ -28,6 +28,8 @@ OTHER_PROGRAMS = {
     "cmake, ctest": {"build", "target", "output-on-failure", "preset", "install", "prefix"},
     "clang-format": {"dry-run", "Werror"},
     "duplicates": {"change", "base"},
+    "ray start (docs/guide/distributed.md)": {"head", "address", "port", "num-cpus",
+                                               "temp-dir"},
 }
 # Top-level folders a path may start with; build outputs are not in the tree.
 TREE_DIRS = ("host/", "kernels/", "tests/", "bench/", "docs/", "data/", "gl/", "cmake/",

@@ -1,6 +1,7 @@
 """tsis.distributed: sweeps of tiny frames on two local worker processes (and
 on Ray when it is installed): images and index lines, a rerun that skips what
-is done, failures retried then recorded, a worker that dies replaced; a sweep on a two-node Ray cluster of this machine."""
+is done, failures retried then recorded, a worker that dies replaced; a sweep on a two-node Ray cluster of this
+machine."""
 import json
 import time
 
