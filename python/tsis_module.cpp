@@ -437,7 +437,6 @@ py::tuple state(const py::tuple& t, size_t n, const char* what) {
     return t;
 }
 
-
 // --- objects of a scene of several ----------------------------------------
 
 bool sameMaterial(const Material& a, const Material& b) {
@@ -528,8 +527,7 @@ PYBIND11_MODULE(_tsis, m) {
         "quiet: scenes made from Python no longer warn their notes (tsis.NoteWarning); returns "
         "the previous setting");
 
-    py::class_<Material>(m, "Material",
-                        "a translucent medium (docs/design.md §2)")
+    py::class_<Material>(m, "Material", "a translucent medium (docs/design.md §2)")
         .def(py::init([](const std::string& name, const std::optional<Vec3>& sigmaS,
                          const std::optional<Vec3>& sigmaA, const std::optional<Vec3>& albedo,
                          const std::optional<Vec3>& mfpMm, float eta,
@@ -587,8 +585,7 @@ PYBIND11_MODULE(_tsis, m) {
                  return s + ")";
              })
         .def(
-            "__eq__",
-            [](const Material& a, const Material& b) { return sameMaterial(a, b); },
+            "__eq__", [](const Material& a, const Material& b) { return sameMaterial(a, b); },
             py::is_operator())
         .def(py::pickle(
             [](const Material& x) {
@@ -640,8 +637,7 @@ PYBIND11_MODULE(_tsis, m) {
                             return Light{t[0].cast<bool>(), t[1].cast<Vec3>(), t[2].cast<Vec3>()};
                         }));
 
-    py::class_<Environment>(m, "Environment",
-                           "a lat-long radiance map lighting the scene")
+    py::class_<Environment>(m, "Environment", "a lat-long radiance map lighting the scene")
         .def(py::init([](const py::object& path, const py::object& pixels, double rotateDeg,
                          double intensity) {
                  if (path.is_none() && pixels.is_none())
@@ -719,7 +715,6 @@ PYBIND11_MODULE(_tsis, m) {
                               t[3].cast<float>()};
             }));
 
-
     py::class_<Transform>(m, "Transform",
                           "where an object stands in its scene: scaled, then turned (degrees "
                           "about x, then y, then z), then moved (mm)")
@@ -731,8 +726,7 @@ PYBIND11_MODULE(_tsis, m) {
              "Transform(scale=1, rotate_deg=(0, 0, 0), translate_mm=(0, 0, 0)); checked when "
              "the scene is made (Scene.from_objects)")
         .def_readwrite("scale", &Transform::scale, "the object's size × scale (> 0)")
-        .def_readwrite("rotate_deg", &Transform::rotateDegrees,
-                       "degrees about x, then y, then z")
+        .def_readwrite("rotate_deg", &Transform::rotateDegrees, "degrees about x, then y, then z")
         .def_readwrite("translate_mm", &Transform::translateMm, "the move (mm), last")
         .def("__repr__", &transformRepr)
         .def(
@@ -787,8 +781,8 @@ PYBIND11_MODULE(_tsis, m) {
         .def(
             "__eq__",
             [](const Object& a, const Object& b) {
-                return a.mesh == b.mesh && a.vertices == b.vertices &&
-                       a.triangles == b.triangles && sameTransform(a.transform, b.transform) &&
+                return a.mesh == b.mesh && a.vertices == b.vertices && a.triangles == b.triangles &&
+                       sameTransform(a.transform, b.transform) &&
                        a.material.has_value() == b.material.has_value() &&
                        (!a.material || sameMaterial(*a.material, *b.material));
             },
@@ -810,8 +804,8 @@ PYBIND11_MODULE(_tsis, m) {
             }));
 
     py::class_<PyScene>(m, "Scene",
-                         "what a frame shows: the mesh with its materials, lights, environment "
-                         "and camera")
+                        "what a frame shows: the mesh with its materials, lights, environment "
+                        "and camera")
         .def(py::init([](const py::kwargs& kw) {
                  PyScene s = makeScene(kw);
                  warnNotes(s.notes());
@@ -872,8 +866,10 @@ PYBIND11_MODULE(_tsis, m) {
                  return "<tsis.Scene " + quoted(s.meshName()) + ": " +
                         (objects ? std::to_string(objects) + " objects, " : "") +
                         std::to_string(s.triangleCount()) + " triangles, material " +
-                        (mat ? mat->name : objects ? "of each object" : "from the file") + ", " +
-                        std::to_string(s.lights().size()) + " lights" +
+                        (mat       ? mat->name
+                         : objects ? "of each object"
+                                   : "from the file") +
+                        ", " + std::to_string(s.lights().size()) + " lights" +
                         (s.environment() ? ", environment " + quoted(s.environment()->path) : "") +
                         ">";
              })
@@ -898,9 +894,10 @@ PYBIND11_MODULE(_tsis, m) {
             [](const py::tuple& t0) {
                 const py::tuple t = state(t0, 5, "Scene");
                 const auto objects = t[4].cast<std::vector<Object>>();
-                PyScene s = objects.empty()
-                                ? makeScene(t[0].cast<py::dict>(), t[1], t[2])
-                                : PyScene(Scene::fromObjects(objects, optionsOf(t[0].cast<py::dict>())));
+                PyScene s =
+                    objects.empty()
+                        ? makeScene(t[0].cast<py::dict>(), t[1], t[2])
+                        : PyScene(Scene::fromObjects(objects, optionsOf(t[0].cast<py::dict>())));
                 if (!t[3].is_none()) s.setEnvironment(t[3].cast<Environment>());
                 return s;
             }));
@@ -945,11 +942,12 @@ PYBIND11_MODULE(_tsis, m) {
             }));
 
     py::class_<PyRenderer>(m, "Renderer",
-                            "renders frames, keeping its GL context, programs and light maps "
-                            "from one to the next")
+                           "renders frames, keeping its GL context, programs and light maps "
+                           "from one to the next")
         .def(py::init<const std::string&, const std::string&>(), py::arg("cl_device") = "",
              py::arg("gl") = "",
-             "cl_device: the OpenCL device (`tsis render --cl-device`; '' $TSIS_CL_DEVICE, else PoCL); "
+             "cl_device: the OpenCL device (`tsis render --cl-device`; '' $TSIS_CL_DEVICE, else "
+             "PoCL); "
              "gl: egl, osmesa or auto (`--gl`; '' $TSIS_GL, else auto)")
         .def(
             "render",

@@ -134,11 +134,10 @@ std::string boxGltf(const std::string& extraNodes = "", const std::string& extra
            extraTop + "}";
 }
 
-// The same camera and lights as options, by the rules of docs/guide/scenes-and-materials.md: positions
-// through the mesh's normalisation (−centre, ×6/3), the target on the view
-// ray nearest the centre (at least 3 mm ahead), candela and lux to W/sr and
-// W/mm² (683 lm/W; a point light × (mm per file metre / 1000)²), then all
-// scaled so that the strongest gives 1 W/mm² at the centre.
+// The same camera and lights as options, by the rules of docs/guide/scenes-and-materials.md:
+// positions through the mesh's normalisation (−centre, ×6/3), the target on the view ray nearest
+// the centre (at least 3 mm ahead), candela and lux to W/sr and W/mm² (683 lm/W; a point light ×
+// (mm per file metre / 1000)²), then all scaled so that the strongest gives 1 W/mm² at the centre.
 // At `size` mm; `relevel` false (--light-units file): the lights at their
 // own power, no common factor.
 std::string equivalentOptions(double size = 6.0, bool relevel = true) {

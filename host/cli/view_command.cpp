@@ -23,8 +23,9 @@ namespace {
 
 std::vector<OptionSpec> viewSpecs() {
     std::vector<OptionSpec> specs = sceneOptionSpecs();
-    specs.push_back({"script", true, false,
-                     "FILE  play these UI events instead of the mouse and keys (docs/guide/commands.md)"});
+    specs.push_back(
+        {"script", true, false,
+         "FILE  play these UI events instead of the mouse and keys (docs/guide/commands.md)"});
     specs.push_back({"stats", true, false,
                      "FILE.json  on closing: frames, fps, UI updates/s, the last frame's stats"});
     specs.push_back(

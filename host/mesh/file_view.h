@@ -65,8 +65,8 @@ struct FileMaterial {
     // absorption alone.
     std::optional<glm::dvec3> multiscatterColor;
     double scatterAnisotropy = 0.0;
-    // tsis' own parameters (glTF extras {"tsis": {...}}, docs/guide/scenes-and-materials.md "Scenes and
-    // materials"): a preset name, σs′/σa (1/mm), or albedo + mean free path (mm).
+    // tsis' own parameters (glTF extras {"tsis": {...}}, docs/guide/scenes-and-materials.md "Scenes
+    // and materials"): a preset name, σs′/σa (1/mm), or albedo + mean free path (mm).
     std::string preset;
     std::optional<glm::dvec3> sigmaS, sigmaA, mfp;
 };

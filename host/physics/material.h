@@ -22,10 +22,10 @@ const std::vector<Material>& presetMaterials();
 // The preset with this name; throws Error listing the valid names.
 const Material& presetMaterial(std::string_view name);
 
-// The physical range of the coefficients (docs/guide/scenes-and-materials.md "Scenes and materials"):
-// σs′ and σa each in [0, kMaxSigma] mm⁻¹ and σt′ = σs′ + σa at least
-// kMinSigmaT (a mean free path of at most 10 m): values past them are input
-// mistakes, and in the kernels' floats they become infinities and NaNs.
+// The physical range of the coefficients (docs/guide/scenes-and-materials.md "Scenes and
+// materials"): σs′ and σa each in [0, kMaxSigma] mm⁻¹ and σt′ = σs′ + σa at least kMinSigmaT (a
+// mean free path of at most 10 m): values past them are input mistakes, and in the kernels' floats
+// they become infinities and NaNs.
 inline constexpr double kMaxSigma = 1e4;
 inline constexpr double kMinSigmaT = 1e-4;
 

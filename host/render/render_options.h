@@ -99,8 +99,8 @@ struct RenderOptions {
     int samples = 900;  // N, the shared importance samples (tsis, hybrid global part)
     uint32_t seed = 1;
     // The display (docs/design.md "The composite"): radiance × 2^exposure before the tone
-    // curve, a fixed exposure (docs/guide/rendering.md "Exposure, reflection and antialiasing"), or with
-    // autoExposure each frame's key/L_avg (Reinhard's key, the log-average luminance).
+    // curve, a fixed exposure (docs/guide/rendering.md "Exposure, reflection and antialiasing"), or
+    // with autoExposure each frame's key/L_avg (Reinhard's key, the log-average luminance).
     float exposure = 3.3f;
     bool autoExposure = false;
     float key = 0.18f;

@@ -1,6 +1,7 @@
 // A scene's camera and lights from those its mesh file places
 // (mesh/file_view.h, already normalised with the mesh), where the command
-// line does not give its own. docs/guide/scenes-and-materials.md "Cameras and lights from the file".
+// line does not give its own. docs/guide/scenes-and-materials.md "Cameras and lights from the
+// file".
 #pragma once
 
 #include <optional>
