@@ -18,6 +18,7 @@
 
 #include "description/scene_params.h"
 #include "image/image_io.h"
+#include "render/render_params.h"
 #include "render/renderer.h"
 #include "support/boxes.h"
 #include "support/error_of.h"
@@ -417,6 +418,87 @@ TEST(ApiRenderer, FrameEqualsTheInternalRenderersAndComparesToItself) {
     const Metrics withNan = compare(nan, f.radiance, &f.coverage);
     EXPECT_EQ(withNan.nonfiniteImage, 1);
     EXPECT_EQ(withNan.pixels, same.pixels - 1);
+}
+
+// Typed settings are the options by name: every parameter's example value
+// set on RenderSettings comes back through Options::of and renderSettings()
+// (the table's text of each field equal), and a frame from settings is the
+// frame from the same options.
+TEST(ApiRenderSettings, EveryParameterIsTheOptionOfItsName) {
+    for (const RenderParam& p : renderParams()) {
+        RenderSettings s;
+        s.method = p.methods.empty() ? "pyramid" : p.methods.front();
+        p.set(s, p.flag ? "1" : p.example);
+        ASSERT_FALSE(p.isDefault(s)) << p.name;
+        const Options o = Options::of(s);
+        EXPECT_EQ(o.get(p.name).has_value(), true) << p.name;
+        const RenderSettings back = o.renderSettings();
+        EXPECT_EQ(back.method, s.method) << p.name;
+        for (const RenderParam& q : renderParams())
+            EXPECT_EQ(q.text(back), q.text(s)) << p.name << " changed " << q.name;
+    }
+    EXPECT_EQ(Options::of(RenderSettings{}).args(),
+              (std::vector<std::string>{"--method", "pyramid"}));
+
+    const Options o{{"mesh", "builtin:sphere"}, {"width", "40"},      {"height", "32"},
+                    {"atlas-res", "128"},       {"light-res", "256"}, {"method", "tsis"},
+                    {"samples", "64"},          {"exposure", "2.5"}};
+    const Scene scene(o.sceneOptions());
+    RenderSettings typed;
+    typed.method = "tsis";
+    typed.width = 40;
+    typed.height = 32;
+    typed.atlasResolution = 128;
+    typed.lightResolution = 256;
+    typed.samples = 64;
+    typed.exposure = 2.5f;
+    Renderer renderer;
+    EXPECT_EQ(renderer.render(scene, typed).rgb8, renderer.render(scene, o.renderOptions()).rgb8);
+}
+
+// What the command line refuses, typed settings refuse with its message: a
+// value out of range, a field the method does not read, an unknown method.
+TEST(ApiRenderSettings, RefusesWhatTheCommandLineRefuses) {
+    const Scene scene(Options{{"mesh", "builtin:sphere"}});
+    Renderer renderer;
+    RenderSettings s;
+    s.misDistanceSamples = 4;
+    EXPECT_EQ(errorOf([&] { renderer.render(scene, s); }),
+              "--mis-distance is a parameter of mis, not of pyramid");
+    EXPECT_EQ(errorOf([&] { Options::of(s); }),
+              "--mis-distance is a parameter of mis, not of pyramid");
+    s = {};
+    s.width = -3;
+    EXPECT_NE(errorOf([&] { renderer.render(scene, s); }).find("--width"), std::string::npos);
+    s = {};
+    s.method = "nope";
+    EXPECT_NE(errorOf([&] { renderer.render(scene, s); }).find("unknown method 'nope'"),
+              std::string::npos);
+    s = {};
+    s.samples = 64;  // read by tsis and hybrid only
+    EXPECT_NE(errorOf([&] { renderer.render(scene, s); }).find("--samples is a parameter of"),
+              std::string::npos);
+}
+
+// A scene in its file's light units starts from the exposure that shows it as
+// Blender does, through options and through its renderSettings() alike.
+TEST(ApiRenderSettings, AScenesDefaultsCarryItsLightUnits) {
+    const std::string sky = std::string(TSIS_SOURCE_DIR) + "/data/env/sky.hdr";
+    const Scene file(Options{{"mesh", "builtin:sphere"}, {"env", sky}, {"light-units", "file"}});
+    const Scene own(Options{{"mesh", "builtin:sphere"}, {"env", sky}});
+    EXPECT_EQ(own.renderSettings().exposure, RenderSettings{}.exposure);
+    EXPECT_GT(file.renderSettings().exposure, 19.0f);
+    const Options frame{
+        {"width", "32"}, {"height", "32"}, {"atlas-res", "128"}, {"light-res", "256"}};
+    RenderSettings s = file.renderSettings();
+    s.width = s.height = 32;
+    s.atlasResolution = 128;
+    s.lightResolution = 256;
+    Renderer renderer;
+    EXPECT_EQ(renderer.render(file, frame).rgb8, renderer.render(file, s).rgb8);
+    Options exposed = frame;
+    exposed.set("exposure", "3.3");
+    EXPECT_NE(renderer.render(file, exposed).rgb8, renderer.render(file, s).rgb8);
 }
 
 // Threads: one Renderer from two threads (either GL platform) renders every

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "description/scene_params.h"
+#include "render/render_params.h"
 #include "util/args.h"
 #include "util/error.h"
 
@@ -74,6 +75,24 @@ Options Options::renderOptions() const {
     o.args_ = kept(args_, [](const std::string& n) {
         return findSceneParam(n) == nullptr && !renderersOwn(n);
     });
+    return o;
+}
+
+RenderSettings Options::renderSettings() const {
+    return renderOptionsFromArgs(Args("render", sceneOptionSpecs(), renderOptions().args_));
+}
+
+Options Options::of(const RenderSettings& settings) {
+    validateRenderOptions(settings);
+    checkParamsRead(settings);
+    Options o;
+    const std::vector<std::string> argv = renderOptionArgs(settings);
+    for (size_t i = 0; i < argv.size();) {
+        const std::string name = argv[i].substr(2);
+        const bool takesValue = specOf(name) && specOf(name)->takesValue;
+        o.set(name, takesValue ? argv[i + 1] : "true");
+        i += takesValue ? 2 : 1;
+    }
     return o;
 }
 

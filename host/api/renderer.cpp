@@ -7,6 +7,7 @@
 #include "api/api_internal.h"
 #include "description/scene_params.h"
 #include "image/image_io.h"
+#include "render/render_params.h"
 #include "render/renderer.h"
 #include "util/args.h"
 #include "util/fork_guard.h"
@@ -60,7 +61,18 @@ Frame Renderer::render(const Scene& scene, const Options& options,
     for (const char* own : {"cl-device", "gl"})
         if (args.has(own))
             fail("Renderer::render: option --", own, " is the Renderer's: give it when making one");
-    RenderOptions ro = renderOptionsFromArgs(args);
+    RenderSettings settings = guarded([&] { return renderOptionsFromArgs(args); });
+    if (!args.has("exposure")) settings.exposure = scene.renderSettings().exposure;
+    return render(scene, settings, cancel);
+}
+
+Frame Renderer::render(const Scene& scene, const RenderSettings& settings,
+                       const std::function<bool()>& cancel) {
+    RenderOptions ro = settings;
+    guarded([&] {
+        validateRenderOptions(ro);
+        checkParamsRead(ro);
+    });
     ro.keepAovs = true;
     const std::optional<tsis::Scene> inverted = scene.impl_->withProfile(ro.profile);
     const tsis::Scene& s = inverted ? *inverted : scene.impl_->scene;

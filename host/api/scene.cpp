@@ -392,6 +392,12 @@ const std::vector<std::string>& Scene::notes() const {
     return impl_->notes;
 }
 
+RenderSettings Scene::renderSettings() const {
+    RenderSettings settings;
+    if (impl_->description.fileLightUnits) settings.exposure = kFileLightUnitsExposure;
+    return settings;
+}
+
 std::string Scene::meshName() const {
     return impl_->scene.mesh.name;
 }

@@ -329,4 +329,11 @@ std::string foreignParamMessage(const RenderParam& p, const std::string& method)
     return "--" + p.name + " is a parameter of " + owners + ", not of " + method;
 }
 
+void checkParamsRead(const RenderOptions& o) {
+    for (const RenderParam& p : renderParams())
+        if (!p.isDefault(o))
+            if (const std::string foreign = foreignParamMessage(p, o.method); !foreign.empty())
+                fail(foreign);
+}
+
 }  // namespace tsis

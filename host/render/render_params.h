@@ -53,5 +53,9 @@ const RenderParam* findRenderParam(const std::string& name);
 // "--mis-distance is a parameter of mis, not of pyramid" when `method` does
 // not read p (empty when it does).
 std::string foreignParamMessage(const RenderParam& p, const std::string& method);
+// Throws tsis::Error (foreignParamMessage's) for the first parameter off its
+// default that o.method does not read: it would change nothing (the typed
+// API's check of what the command line refuses as it parses).
+void checkParamsRead(const RenderOptions& o);
 
 }  // namespace tsis

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "tsis/render_settings.h"
+
 namespace tsis::api {
 
 class Options {
@@ -35,6 +37,16 @@ class Options {
     // mesh's atlas and the frame's), cl-device and gl neither (Renderer's).
     Options sceneOptions() const;
     Options renderOptions() const;
+
+    // The render options typed: the defaults where unset (a scene's own
+    // defaults: Scene::renderSettings()). Throws tsis::Error for what
+    // Renderer::render would refuse of them.
+    RenderSettings renderSettings() const;
+    // The settings as options: method and every field off its default that
+    // the method reads (`tsis render`'s command line, as --stats prints it).
+    // Throws tsis::Error for a value out of range or a field the method does
+    // not read.
+    static Options of(const RenderSettings& settings);
 
     // As on the command line: {"--method", "tsis", "--samples", "1024", ...}.
     const std::vector<std::string>& args() const { return args_; }

@@ -1,6 +1,6 @@
-// Renders frames of a Scene with the render options (method, samples, width,
-// height, …: Options). One Renderer keeps its GL context, OpenCL programs and
-// light maps across frames: make it once, render many.
+// Renders frames of a Scene with typed RenderSettings, or with the render
+// options by name (method, samples, width, height, …: Options). One Renderer keeps its GL context,
+// OpenCL programs and light maps across frames: make it once, render many.
 //
 // Threads: a Renderer may be used from any thread; its frames run one at a
 // time (a second thread's render() waits for the first's), its GL context
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tsis/options.h"
+#include "tsis/render_settings.h"
 #include "tsis/scene.h"
 
 namespace tsis::api {
@@ -55,6 +56,12 @@ class Renderer {
     // tsis::Cancelled, and the Renderer stays usable. It is asked while
     // render() waits for another thread's frame too.
     Frame render(const Scene& scene, const Options& options = {},
+                 const std::function<bool()>& cancel = {});
+    // The same frame from typed settings (Options::renderSettings() gives the
+    // settings of options; Scene::renderSettings() a scene's defaults). Throws
+    // tsis::Error for a value out of its range or a field off its default
+    // that settings.method does not read.
+    Frame render(const Scene& scene, const RenderSettings& settings,
                  const std::function<bool()>& cancel = {});
 
   private:

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tsis/options.h"
+#include "tsis/render_settings.h"
 
 namespace tsis::api {
 
@@ -139,6 +140,11 @@ class Scene {
     // The notes loading the scene made (what `tsis render` prints as
     // "tsis: note: …"), in order.
     const std::vector<std::string>& notes() const;
+    // The render settings this scene's frames start from: RenderSettings'
+    // defaults, with the exposure that shows a scene in its file's light
+    // units (light-units file) as Blender does. Renderer::render(scene,
+    // options) fills what options leave unset from these.
+    RenderSettings renderSettings() const;
 
     std::string meshName() const;
     size_t vertexCount() const;
