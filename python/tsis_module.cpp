@@ -40,16 +40,27 @@ std::string typeName(const py::handle& v) {
 // One keyword argument: str as typed, bool for a flag, a number (numpy's
 // scalars too; an integer written exactly), or a sequence (x,y,z for a
 // vector; each item for the repeatable light).
+// A scalar as typed: a bool "true"/"false", an integer exactly (numpy's
+// too), a float the shortest text that reads back the same, a str as it is;
+// nullopt for anything else.
+std::optional<std::string> scalarText(const py::handle& v) {
+    if (py::isinstance<py::bool_>(v) || isNumpy(v, "bool_"))
+        return std::string(v.cast<bool>() ? "true" : "false");
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if (PyIndex_Check(v.ptr()))  // int, numpy.int64, …
+        return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr())))
+            .cast<std::string>();
+    if (py::isinstance<py::float_>(v) || isNumpy(v, "floating")) {
+        char buf[64];
+        const auto r = std::to_chars(buf, buf + sizeof buf, PyFloat_AsDouble(v.ptr()));
+        return std::string(buf, r.ptr);
+    }
+    return std::nullopt;
+}
+
 void setOption(Options& o, const std::string& name, const py::handle& v) {
-    if (py::isinstance<py::bool_>(v) || isNumpy(v, "bool_")) {
-        o.set(name, v.cast<bool>() ? "true" : "false");
-    } else if (py::isinstance<py::str>(v)) {
-        o.set(name, v.cast<std::string>());
-    } else if (PyIndex_Check(v.ptr())) {  // int, numpy.int64, …
-        o.set(name, py::str(py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr())))
-                        .cast<std::string>());
-    } else if (py::isinstance<py::float_>(v) || isNumpy(v, "floating")) {
-        o.set(name, PyFloat_AsDouble(v.ptr()));
+    if (const std::optional<std::string> text = scalarText(v)) {
+        o.set(name, *text);
     } else if (!py::isinstance<py::iterable>(v) || isNumpy(v, "generic")) {
         throw tsis::Error("option --" + name + ": expected a str, number, bool or sequence, not " +
                           typeName(v));
@@ -58,10 +69,68 @@ void setOption(Options& o, const std::string& name, const py::handle& v) {
         for (const py::handle item : v) o.set(name, py::str(item).cast<std::string>());
     } else {
         std::string joined;
-        for (const py::handle item : v)
-            joined += (joined.empty() ? "" : ",") + py::str(item).cast<std::string>();
+        for (const py::handle item : v) {
+            if (!joined.empty()) joined += ',';
+            joined += py::str(item).cast<std::string>();
+        }
         o.set(name, joined);
     }
+}
+
+// RenderSettings' field of option `name` from a Python value (the option's
+// keyword of render()); tsis.Error as the option's.
+void setSetting(RenderSettings& s, const std::string& name, const py::handle& v) {
+    const std::optional<std::string> text = scalarText(v);
+    if (!text)
+        throw tsis::Error("option --" + name + ": expected a str, number or bool, not " +
+                          typeName(v));
+    s.set(name, *text);
+}
+
+// The field as Python has it: bool, int, float, or str (a choice; "file").
+py::object settingValue(const RenderSettings& s, const RenderParameter& p) {
+    const std::string t = s.get(p.name);
+    switch (p.kind) {
+        case RenderParameter::Kind::Flag:
+            return py::bool_(t == "true");
+        case RenderParameter::Kind::Integer:
+            return py::int_(std::stoll(t));
+        case RenderParameter::Kind::Real:
+            return py::float_(std::stod(t));
+        case RenderParameter::Kind::RealOrFile:
+            return t == "file" ? py::object(py::str(t)) : py::object(py::float_(std::stod(t)));
+        case RenderParameter::Kind::Choice:
+            break;
+    }
+    return py::str(t);
+}
+
+std::string keywordName(std::string option) {
+    std::replace(option.begin(), option.end(), '-', '_');
+    return option;
+}
+
+// Settings with the render() keywords on top; a keyword that is no render
+// setting is refused as Renderer::render refuses the option (`where` says
+// who refuses).
+RenderSettings settingsWith(RenderSettings s, const py::kwargs& kw,
+                            const std::string& where = "Renderer::render") {
+    for (const auto& [k, v] : kw) {
+        const std::string name = optionName(k.cast<std::string>());
+        const auto& rows = RenderSettings::parameters();
+        if (name == "method" ||
+            std::any_of(rows.begin(), rows.end(), [&](const auto& p) { return p.name == name; })) {
+            setSetting(s, name, v);
+            continue;
+        }
+        Options checked;
+        setOption(checked, name, v);  // an unknown name or a bad value: the CLI's error
+        throw tsis::Error(where + ": option --" + name +
+                          (name == "cl-device" || name == "gl"
+                               ? " is the Renderer's: give it when making one"
+                               : " is the scene's: set it on the Scene"));
+    }
+    return s;
 }
 
 Options optionsOf(const py::dict& kwargs) {
@@ -352,8 +421,17 @@ bool onMainThread() {
 // A frame with the GIL released. On the main thread Python's signal
 // handlers run while it renders (Ctrl-C: the frame stops, KeyboardInterrupt
 // is raised and the renderer stays usable); other threads cannot take signals.
-PyFrame renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
-    const Options o = optionsOf(kw);
+// With settings (a tsis.RenderSettings or None) the keywords go on top of
+// them; without, they are the options by name, as `tsis render` takes them.
+PyFrame renderFrame(Renderer& r, const Scene& s, const py::object& settings, const py::kwargs& kw) {
+    std::optional<RenderSettings> typed;
+    if (!settings.is_none()) {
+        if (!py::isinstance<RenderSettings>(settings))
+            throw tsis::Error("render: settings must be a tsis.RenderSettings, not " +
+                              typeName(settings));
+        typed = settingsWith(settings.cast<RenderSettings>(), kw);
+    }
+    const Options o = typed ? Options() : optionsOf(kw);
     std::optional<py::error_already_set> raised;  // by a signal handler
     std::function<bool()> signals;
     if (onMainThread())
@@ -367,7 +445,7 @@ PyFrame renderFrame(Renderer& r, const Scene& s, const py::kwargs& kw) {
     const SceneInFrame reading(s);
     try {
         const py::gil_scoped_release release;
-        f = r.render(s, o, signals);
+        f = typed ? r.render(s, *typed, signals) : r.render(s, o, signals);
     } catch (const tsis::Cancelled&) {
         if (raised) throw std::move(*raised);
         throw;
@@ -849,6 +927,9 @@ PYBIND11_MODULE(_tsis, m) {
         .def_property("camera", &Scene::camera, sceneSetter(&Scene::setCamera, "camera"),
                       "the camera (tsis.Camera)")
         .def_property_readonly("notes", &Scene::notes, "what loading the scene noted")
+        .def_property_readonly(
+            "render_settings", &Scene::renderSettings,
+            "the tsis.RenderSettings its frames start from (the file's light units' exposure)")
         .def(
             "options", [](const PyScene& s) { return keywordsOf(s.options()); },
             "the scene options as keywords that make this scene again (tsis.Scene(**options); "
@@ -902,6 +983,60 @@ PYBIND11_MODULE(_tsis, m) {
                 return s;
             }));
 
+    // One property per render option, made from the options' table
+    // (RenderSettings::parameters()): a new option is one here too.
+    py::class_<RenderSettings> settings(
+        m, "RenderSettings",
+        "how a frame is rendered, typed: a property per render option of `tsis render` "
+        "(its keyword of render(): no_specular=True, tone='aces', roughness='file'), checked as "
+        "the option is");
+    settings
+        .def(py::init([](const py::kwargs& kw) {
+                 return settingsWith(RenderSettings(), kw, "RenderSettings");
+             }),
+             "RenderSettings(method='tsis', samples=512, …): the defaults, the keywords on top")
+        .def_property(
+            "method", [](const RenderSettings& s) { return s.method; },
+            [](RenderSettings& s, const std::string& m) { s.set("method", m); },
+            "the method (`tsis render --method`): pyramid, tsis, hybrid, mis, ltsm, tsm, lss, "
+            "hierarchical, reference or volumetric");
+    for (const RenderParameter& p : RenderSettings::parameters())
+        settings.def_property(
+            keywordName(p.name).c_str(),
+            [p](const RenderSettings& s) { return settingValue(s, p); },
+            [p](RenderSettings& s, const py::handle& v) { setSetting(s, p.name, v); },
+            p.help.c_str());
+    settings
+        .def("__eq__",
+             [](const RenderSettings& a, const RenderSettings& b) {
+                 const auto& rows = RenderSettings::parameters();
+                 return a.method == b.method &&
+                        std::all_of(rows.begin(), rows.end(), [&](const RenderParameter& p) {
+                            return a.get(p.name) == b.get(p.name);
+                        });
+             })
+        .def("__repr__",
+             [](const RenderSettings& s) {
+                 std::string r = "tsis.RenderSettings(method=" + quoted(s.method);
+                 const RenderSettings defaults;
+                 for (const RenderParameter& p : RenderSettings::parameters())
+                     if (s.get(p.name) != defaults.get(p.name))
+                         r += ", " + keywordName(p.name) + "=" +
+                              py::repr(settingValue(s, p)).cast<std::string>();
+                 return r + ")";
+             })
+        .def(py::pickle(
+            [](const RenderSettings& s) {
+                py::dict d;
+                d["method"] = s.method;
+                const RenderSettings defaults;
+                for (const RenderParameter& p : RenderSettings::parameters())
+                    if (s.get(p.name) != defaults.get(p.name))
+                        d[keywordName(p.name).c_str()] = settingValue(s, p);
+                return d;
+            },
+            [](const py::dict& d) { return settingsWith(RenderSettings(), py::kwargs(d)); }));
+
     py::class_<PyFrame>(m, "Frame", "what Renderer.render gives")
         .def_readwrite("image", &PyFrame::image, "tone-mapped sRGB, H×W×3 uint8, row 0 = top")
         .def_readwrite("radiance", &PyFrame::radiance, "H×W×3 float32")
@@ -951,19 +1086,23 @@ PYBIND11_MODULE(_tsis, m) {
              "gl: egl, osmesa or auto (`--gl`; '' $TSIS_GL, else auto)")
         .def(
             "render",
-            [](PyRenderer& r, const PyScene& s, const py::kwargs& kw) {
-                return renderFrame(r, s, kw);
+            [](PyRenderer& r, const PyScene& s, const py::object& settings, const py::kwargs& kw) {
+                return renderFrame(r, s, settings, kw);
             },
-            py::arg("scene"),
+            py::arg("scene"), py::arg("settings") = py::none(),
             "a Frame: image (H×W×3 uint8), radiance, radiosity, position, normal, coverage, "
-            "flux_atlas (float32, row 0 = top), lavg, stats (dict); options as `tsis render`")
+            "flux_atlas (float32, row 0 = top), lavg, stats (dict); settings a tsis.RenderSettings "
+            "(the keywords on top of it), or the options of `tsis render` as keywords")
         .def("__repr__", [](const PyRenderer& r) {
             return "tsis.Renderer(cl_device=" + quoted(r.clDevice) + ", gl=" + quoted(r.gl) + ")";
         });
     m.def(
         "render",
-        [](const PyScene& s, const py::kwargs& kw) { return renderFrame(sharedRenderer(), s, kw); },
-        py::arg("scene"), "Renderer.render with one renderer kept for every call");
+        [](const PyScene& s, const py::object& settings, const py::kwargs& kw) {
+            return renderFrame(sharedRenderer(), s, settings, kw);
+        },
+        py::arg("scene"), py::arg("settings") = py::none(),
+        "Renderer.render with one renderer kept for every call");
     m.def(
         "compare",
         [](const py::object& a, const py::object& b, const py::object& mask) {

@@ -456,6 +456,42 @@ TEST(ApiRenderSettings, EveryParameterIsTheOptionOfItsName) {
     EXPECT_EQ(renderer.render(scene, typed).rgb8, renderer.render(scene, o.renderOptions()).rgb8);
 }
 
+// Each field by its option's name: set as typed, read back as typed, checked
+// as the command line checks it; the rows are the table's.
+TEST(ApiRenderSettings, FieldsByTheirOptionsName) {
+    ASSERT_EQ(RenderSettings::parameters().size(), renderParams().size());
+    for (const RenderParameter& p : RenderSettings::parameters()) {
+        const RenderParam& row = *findRenderParam(p.name);
+        RenderSettings s;
+        const std::string value = row.flag ? "true" : row.example;
+        s.set(p.name, value);
+        EXPECT_EQ(s.get(p.name), value) << p.name;
+        EXPECT_FALSE(row.isDefault(s)) << p.name;
+        EXPECT_EQ(p.kind == RenderParameter::Kind::Flag, row.flag) << p.name;
+        EXPECT_EQ(p.help.find("  "), std::string::npos) << p.name;  // no metavar
+    }
+    RenderSettings s;
+    s.set("no-specular", "true");
+    EXPECT_FALSE(s.specular);
+    s.set("no-specular", "false");
+    EXPECT_TRUE(s.specular);
+    s.set("tone", "aces");
+    EXPECT_EQ(s.tone, ToneCurve::Aces);
+    s.set("roughness", "file");
+    EXPECT_EQ(s.get("roughness"), "file");
+    s.set("method", "mis");
+    EXPECT_EQ(s.get("method"), "mis");
+    EXPECT_EQ(errorOf([&] { s.set("method", "nope"); }).substr(0, 22), "unknown method 'nope';");
+    EXPECT_EQ(errorOf([&] { s.set("width", "-3"); }), "--width -3 is out of range [1, 8192]");
+    EXPECT_EQ(errorOf([&] { s.set("no-specular", "yes"); }),
+              "option --no-specular is a flag: true or false, not 'yes'");
+    EXPECT_EQ(errorOf([&] { s.set("mesh", "x.obj"); }),
+              "RenderSettings: no render option --mesh (see tsis render --help)");
+    EXPECT_EQ(s.method, "mis");
+    EXPECT_EQ(s.width, 512);
+    EXPECT_EQ(s.tone, ToneCurve::Aces);
+}
+
 // What the command line refuses, typed settings refuse with its message: a
 // value out of range, a field the method does not read, an unknown method.
 TEST(ApiRenderSettings, RefusesWhatTheCommandLineRefuses) {
@@ -475,7 +511,7 @@ TEST(ApiRenderSettings, RefusesWhatTheCommandLineRefuses) {
     EXPECT_NE(errorOf([&] { renderer.render(scene, s); }).find("unknown method 'nope'"),
               std::string::npos);
     s = {};
-    s.samples = 64;  // read by tsis and hybrid only
+    s.samples = 64;  // not read by pyramid
     EXPECT_NE(errorOf([&] { renderer.render(scene, s); }).find("--samples is a parameter of"),
               std::string::npos);
 }

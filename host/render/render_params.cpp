@@ -21,6 +21,8 @@ struct Range {
 
 template <typename T>
 RenderParam number(RenderParam p, T RenderOptions::*field, Range r) {
+    p.kind = std::is_integral_v<T> ? api::RenderParameter::Kind::Integer
+                                   : api::RenderParameter::Kind::Real;
     p.text = [field](const RenderOptions& o) { return exactText(o.*field); };
     p.set = [field, r, what = "--" + p.name](RenderOptions& o, const std::string& value) {
         double v;
@@ -59,6 +61,7 @@ RenderParam choice(RenderParam p, E RenderOptions::*field, E (*parse)(const std:
 template <typename T>
 RenderParam fileOrNumber(RenderParam p, T RenderOptions::*field, Range r) {
     RenderParam n = number(std::move(p), field, r);
+    n.kind = api::RenderParameter::Kind::RealOrFile;
     n.text = [field, text = n.text](const RenderOptions& o) {
         return o.*field < 0 ? std::string("file") : text(o);
     };
@@ -75,6 +78,7 @@ RenderParam fileOrNumber(RenderParam p, T RenderOptions::*field, Range r) {
 // turns the highlight off, "--force" turns the cost bounds' override on).
 RenderParam flag(RenderParam p, bool RenderOptions::*field, bool whenGiven) {
     p.flag = true;
+    p.kind = api::RenderParameter::Kind::Flag;
     p.showDefault = false;
     p.text = [field, whenGiven](const RenderOptions& o) {
         return std::string(o.*field == whenGiven ? "1" : "0");

@@ -39,6 +39,9 @@ struct RenderParam {
     std::function<void(RenderOptions&, const std::string& value)> set;
     // A valid value other than the default, as typed (tests go through every row).
     std::string example;
+    // What its value is (the typed API's: include/tsis/render_settings.h);
+    // set by the row's maker (number, choice, flag, …).
+    api::RenderParameter::Kind kind = api::RenderParameter::Kind::Choice;
 
     bool usedBy(const std::string& method) const;
     // The help line: "M  mis: distance-driven ... (default 16)".

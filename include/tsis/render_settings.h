@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace tsis::api {
 
@@ -39,6 +40,21 @@ enum class ToneCurve { Reinhard = 0, Aces = 1, None = 2 };
 // background: where the object is not: the dark gradient (color), nothing
 // (transparent: alpha 0), or the scene's environment map (env).
 enum class Background { Color = 0, Transparent = 1, Env = 2 };
+
+// One render option as RenderSettings::set and get take it.
+struct RenderParameter {
+    enum class Kind {
+        Integer,
+        Real,
+        RealOrFile,  // a number or "file" (the scene file's own, per object)
+        Choice,      // a name: "aces", "camera", …
+        Flag,        // "true" or "false"; given on the command line it is "true"
+    };
+    std::string name;                  // the option: "mis-distance"
+    std::string help;                  // its line of `tsis render --help`
+    std::vector<std::string> methods;  // the methods that read it; empty: every method
+    Kind kind = Kind::Choice;
+};
 
 struct RenderSettings {
     // method: pyramid, tsis, hybrid, mis, ltsm, tsm, lss, hierarchical,
@@ -111,6 +127,17 @@ struct RenderSettings {
     // no-reuse-lighting clears it: keep the light maps and the flux atlas from
     // the frame before while the mesh, lights, η and resolutions are unchanged.
     bool reuseLighting = true;
+
+    // The field of option `name` ("method" or one of parameters()) set from
+    // its value as typed ("2.5", "aces", "file"; a flag "true" or "false"),
+    // checked as the command line checks it: throws tsis::Error and keeps
+    // the field.
+    void set(const std::string& name, const std::string& value);
+    // The field of option `name` as typed (a flag: "true" when its option
+    // is given, "no-specular" so when specular is false).
+    std::string get(const std::string& name) const;
+    // The render options, one row each, in `tsis render --help`'s order.
+    static const std::vector<RenderParameter>& parameters();
 };
 
 }  // namespace tsis::api

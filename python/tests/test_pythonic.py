@@ -385,3 +385,76 @@ def test_a_scene_of_objects_pickles_with_its_objects_and_renders_the_same_bytes(
     a, b, c = (r.render(x, **OBJECT_FRAME) for x in (s, again, copy.copy(s)))
     assert np.array_equal(a.image, b.image) and np.array_equal(a.radiance, b.radiance)
     assert np.array_equal(a.image, c.image)
+
+
+# --- typed render settings -------------------------------------------------
+
+
+def stub_annotations(cls_name):
+    stub = pathlib.Path(__file__).resolve().parents[1] / "tsis" / "__init__.pyi"
+    for node in ast.parse(stub.read_text()).body:
+        if isinstance(node, ast.ClassDef) and node.name == cls_name:
+            return {n.target.id: ast.unparse(n.annotation) for n in node.body
+                    if isinstance(n, ast.AnnAssign)}
+    raise AssertionError(cls_name + " not in the stub")
+
+
+def test_render_settings_have_a_typed_property_per_option():
+    typed = stub_annotations("RenderSettings")
+    s = tsis.RenderSettings()
+    names = {n for n in vars(tsis.RenderSettings) if not n.startswith("_")}
+    assert names == set(typed)  # every option of the table, no other
+    for name in names:
+        value = getattr(s, name)
+        assert type(value).__name__ in typed[name], (name, value, typed[name])
+        assert getattr(tsis.RenderSettings, name).__doc__, name
+    # Each option's help names what it does and its default.
+    assert "default 16" in tsis.RenderSettings.mis_distance.__doc__
+
+
+def test_render_settings_set_read_back_and_refuse_as_the_options_do():
+    s = tsis.RenderSettings(method="mis", mis_distance=np.int64(8), exposure=np.float32(2.5),
+                            tone="aces", no_specular=True, roughness="file")
+    assert (s.method, s.mis_distance, s.exposure, s.tone, s.no_specular, s.roughness) == (
+        "mis", 8, 2.5, "aces", True, "file")
+    s.roughness = 0.5
+    assert s.roughness == 0.5
+    assert pickle.loads(pickle.dumps(s)) == s and copy.copy(s) == s
+    assert eval(repr(s), {"tsis": tsis}) == s
+    assert s != tsis.RenderSettings(method="mis")
+    for bad, message in [(dict(width=-3), r"--width -3 is out of range \[1, 8192\]"),
+                         (dict(no_specular=1), "is a flag: true or false, not '1'"),
+                         (dict(tone="agx"), "agx"),
+                         (dict(method="nope"), "unknown method 'nope'"),
+                         (dict(mesh="builtin:plane"),
+                          "RenderSettings: option --mesh is the scene's: set it on the Scene"),
+                         (dict(wdth=3), "unknown option '--wdth'"),
+                         (dict(width=[1, 2]), "expected a str, number or bool, not list")]:
+        with pytest.raises(tsis.Error, match=message):
+            tsis.RenderSettings(**bad)
+    before = copy.copy(s)
+    with pytest.raises(tsis.Error):
+        s.width = 0
+    assert s == before  # an error keeps the field
+
+
+def test_a_frame_from_settings_is_the_frame_from_the_same_keywords():
+    scene = tsis.Scene(mesh="builtin:sphere")
+    kw = dict(method="tsis", samples=64, width=40, height=32, atlas_res=128, light_res=256,
+              tone="aces", exposure=2.5)
+    s = tsis.RenderSettings(**kw)
+    r = tsis.Renderer()
+    by_settings, by_keywords = r.render(scene, s), r.render(scene, **kw)
+    assert np.array_equal(by_settings.image, by_keywords.image)
+    assert np.array_equal(by_settings.radiance, by_keywords.radiance)
+    # Keywords go on top of the settings, the settings unchanged.
+    darker = r.render(scene, s, exposure=0)
+    assert darker.image.mean() < by_settings.image.mean() and s.exposure == 2.5
+    with pytest.raises(tsis.Error, match="option --mesh is the scene's"):
+        r.render(scene, s, mesh="builtin:plane")
+    s.method = "pyramid"  # samples is not pyramid's: there it would do nothing
+    with pytest.raises(tsis.Error, match="--samples is a parameter of .*, not of pyramid"):
+        r.render(scene, s)
+    with pytest.raises(tsis.Error, match="settings must be a tsis.RenderSettings, not dict"):
+        r.render(scene, kw)
+    assert scene.render_settings == tsis.RenderSettings()

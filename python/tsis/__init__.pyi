@@ -102,6 +102,8 @@ class Scene:
     @property
     def notes(self) -> list[str]: ...
     @property
+    def render_settings(self) -> RenderSettings: ...  # its frames' defaults
+    @property
     def mesh_name(self) -> str: ...
     @property
     def vertex_count(self) -> int: ...
@@ -130,11 +132,59 @@ class Frame:
     lavg: float
     stats: dict[str, Any]
 
+class RenderSettings:
+    # One property per render option of `tsis render` (its keyword of
+    # render()); set as typed, checked as the option is.
+    method: str
+    width: int
+    height: int
+    samples: int
+    seed: int
+    spacing: float
+    epsilon: float
+    pyramid_epsilon: float
+    pyramid_stride: int
+    pyramid_cache: str
+    rp_bound: float
+    rp_k: float
+    rd_part: str
+    model: str
+    profile: str
+    energy: str
+    transport: str
+    exit: str
+    single_scatter: bool
+    ltsm_rings: int
+    ltsm_per_ring: int
+    mis_distance: int
+    tsm_radius: float
+    spp: int
+    spp_offset: int
+    estimator: str
+    time: float
+    atlas_res: int
+    light_res: int
+    light_lod: int
+    exposure: float
+    auto_exposure: bool
+    key: float
+    tone: str
+    background: str
+    roughness: float | str  # "file": each object's own
+    no_specular: bool
+    aa: int
+    force: bool
+    no_reuse_lighting: bool
+    def __init__(self, **settings: OptionValue) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+
 class Renderer:
     def __init__(self, cl_device: str = "", gl: str = "") -> None: ...
-    def render(self, scene: Scene, **options: OptionValue) -> Frame: ...
+    def render(self, scene: Scene, settings: RenderSettings | None = None,
+               **options: OptionValue) -> Frame: ...
 
-def render(scene: Scene, **options: OptionValue) -> Frame: ...
+def render(scene: Scene, settings: RenderSettings | None = None,
+           **options: OptionValue) -> Frame: ...
 def compare(image: npt.ArrayLike, reference: npt.ArrayLike,
             mask: npt.ArrayLike | None = None) -> dict[str, float | int]: ...
 def write_image(path: str | PathLike[str], image: npt.ArrayLike) -> None: ...
