@@ -36,6 +36,11 @@ def test_grid_is_the_product_with_stable_ids():
     assert one["id"] == distributed.job_id({"eye": [0, 0, 25]}, {"samples": 64})
     with pytest.raises(ValueError, match="given twice"):
         distributed.sweep(jobs + jobs[:1], "unused", backend="local")
+    # Typed settings name the job their options name.
+    assert distributed.job_id(SCENE, tsis.RenderSettings(**RENDER)) == distributed.job_id(
+        SCENE, RENDER)
+    assert distributed.job_id(SCENE, tsis.RenderSettings()) == distributed.job_id(
+        SCENE, {"method": "pyramid"})
 
 
 def check_sweep(out, jobs, summary):
@@ -64,6 +69,15 @@ def test_local_sweep_writes_images_and_index_and_resumes(tmp_path):
     print(f"local sweep of 4 jobs on 2 workers: {summary['seconds']:.1f} s")
     assert summary["backend"] == "local" and summary["total"] == 4
     check_sweep(tmp_path, jobs, summary)
+    # A job's render as tsis.RenderSettings: its options in the index, the same frame.
+    typed = dict(jobs[3], render=tsis.RenderSettings(**jobs[3]["render"]))
+    del typed["id"]
+    out = tmp_path / "typed"
+    assert distributed.sweep([typed], out, workers=1, backend="local")["ok"] == 1
+    (entry,) = index_of(out)
+    assert entry["id"] == jobs[3]["id"] and entry["render"] == jobs[3]["render"]
+    assert np.array_equal(tsis.read_image(out / (entry["id"] + ".png")),
+                          tsis.read_image(tmp_path / (jobs[3]["id"] + ".png")))
 
 
 def test_failures_are_retried_then_recorded_and_a_dead_worker_is_replaced(tmp_path,

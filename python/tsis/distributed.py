@@ -6,8 +6,9 @@
     summary = distributed.sweep(jobs, "out", workers=4)
 
 A job is a dict {"id": str (optional), "scene": {scene options}, "render":
-{render options}}, the options as tsis.Scene and tsis.Renderer.render take
-them. Each worker is a process with one long-lived tsis.Renderer: a Ray actor
+{render options} or a tsis.RenderSettings}, the options as tsis.Scene and
+tsis.Renderer.render take them (settings are written to the index as the
+options that differ from the defaults). Each worker is a process with one long-lived tsis.Renderer: a Ray actor
 (backend "ray") or a process of this machine started by spawning (backend
 "local"; never forked: README "Threads, fork and Ctrl-C"). Each job writes
 out_dir/<id>.png and one line of out_dir/index.jsonl; a job that fails (an
@@ -29,6 +30,8 @@ import socket
 import tempfile
 import time
 
+from ._tsis import RenderSettings
+
 __all__ = ["grid", "job_id", "render_split", "sweep"]
 
 INDEX = "index.jsonl"
@@ -46,10 +49,19 @@ def _plain(value):
     return value
 
 
+def _render_options(render):
+    """A job's render options as a dict: a tsis.RenderSettings as its method
+    and the settings off their defaults (what it pickles as)."""
+    if isinstance(render, RenderSettings):
+        return render.__getstate__()
+    return render or {}
+
+
 def job_id(scene=None, render=None):
-    """A stable name for the job of these options: the first 12 hex digits of
-    the SHA-256 of their JSON (keys sorted), the same in every process and run."""
-    text = json.dumps({"scene": _plain(scene or {}), "render": _plain(render or {})},
+    """A stable name for the job of these options (render: a dict or a
+    tsis.RenderSettings): the first 12 hex digits of the SHA-256 of their JSON
+    (keys sorted), the same in every process and run."""
+    text = json.dumps({"scene": _plain(scene or {}), "render": _plain(_render_options(render))},
                       sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()[:12]
 
@@ -73,7 +85,8 @@ def _normalised(jobs):
         extra = set(job) - {"id", "scene", "render"}
         if extra:
             raise ValueError(f"a job has keys id, scene and render, not {sorted(extra)}")
-        scene, render = _plain(job.get("scene") or {}), _plain(job.get("render") or {})
+        scene = _plain(job.get("scene") or {})
+        render = _plain(_render_options(job.get("render")))
         jid = str(job.get("id") or job_id(scene, render))
         if not jid or jid.startswith(".") or any(c in jid for c in "/\\\0"):
             raise ValueError(f"job id {jid!r}: not a file name")
