@@ -148,6 +148,18 @@ std::vector<float> EnvTransfer::irradiance(const Environment& env) const {
     return out;
 }
 
+std::array<std::vector<float>, 4> EnvTransfer::planes() const {
+    static_assert(kEnvShCount == 16, "four RGBA planes");
+    std::array<std::vector<float>, 4> out;
+    for (std::vector<float>& p : out)
+        p.assign(static_cast<size_t>(resolution_) * resolution_ * 4, 0.0f);
+    for (size_t t = 0; t < texels_.size(); ++t)
+        for (int k = 0; k < kEnvShCount; ++k)
+            out[static_cast<size_t>(k / 4)][static_cast<size_t>(texels_[t]) * 4 + k % 4] =
+                transfer_[t * kEnvShCount + static_cast<size_t>(k)];
+    return out;
+}
+
 void addEnvironmentIrradiance(std::vector<SurfacePoint>& points, const Scene& scene,
                               double offset) {
     if (!scene.env) return;
