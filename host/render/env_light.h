@@ -42,12 +42,9 @@ class EnvTransfer {
     // normal w = area). Returns true when it rebuilt.
     bool update(uint64_t key, const Mesh& mesh, int resolution, double eta,
                 const std::vector<float>& positions, const std::vector<float>& normals);
-    // E of the residual per texel (RGBA, GL order, resolution²), ≥ 0: the
-    // host's sum, which the shaders' (common.glsl envIrradiance) equals.
-    std::vector<float> irradiance(const Environment& env) const;
-    // The transfer as the shaders read it: four RGBA planes (GL order,
-    // resolution² each), coefficient k in plane k / 4, channel k % 4; 0 on
-    // texels no chart covers.
+    // The transfer as the shaders read it (common.glsl envIrradiance: E =
+    // max(0, Σ T_k·L_k)): four RGBA planes (GL order, resolution² each),
+    // coefficient k in plane k / 4, channel k % 4; 0 on texels no chart covers.
     std::array<std::vector<float>, 4> planes() const;
     uint64_t key() const { return key_; }
     size_t texels() const { return texels_.size(); }
