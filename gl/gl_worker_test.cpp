@@ -123,8 +123,8 @@ TEST_F(GlWorkerScene, GBufferDrawnOnItIsTheOneDrawnHere) {
     there.setWorker(&worker, 0);
     ASSERT_TRUE(there.onWorker(gpu, true));
     for (int size : {96, 128}) {
-        here.run(gpu, views, lights.shadows(), tables, viewProj, size, size, 0, {}, true);
-        there.start(gpu, views, lights.shadows(), tables, viewProj, size, size, false, {}, true);
+        here.run(gpu, views, lights.shadows(), tables, viewProj, size, size, 0, 0, true);
+        there.start(gpu, views, lights.shadows(), tables, viewProj, size, size, false, 0, true);
         there.finish();
         for (int i = 0; i < 2; ++i) {
             const std::vector<float> a = here.target().readRGBA(i), b = there.target().readRGBA(i);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include "gl/gl_context.h"
 #include "util/error.h"
@@ -18,7 +17,6 @@ constexpr int kShadowUnit = 4;
 constexpr int kMediaUnit = 6;
 constexpr int kShadingNormalUnit = 11;
 constexpr int kBackgroundUnit = 12;
-constexpr int kEnvTransferUnit = 13;  // 13 to 16
 // The supersampled pixels' slots a row (CompositePass::edgePixels_).
 constexpr int kEdgeColumns = 64;
 
@@ -26,17 +24,6 @@ void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex)
     p.set(name, unit);
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     glBindTexture(GL_TEXTURE_2D, tex);
-}
-
-// The environment's residual (common.glsl envIrradiance): its transfer
-// textures and harmonics, where the program has them.
-void bindEnvIrradiance(const ShaderProgram& p, const EnvIrradiance& env) {
-    static const char* const kNames[4] = {"u_envTransfer0", "u_envTransfer1", "u_envTransfer2",
-                                          "u_envTransfer3"};
-    for (int t = 0; t < 4; ++t) bindTexture(p, kNames[t], kEnvTransferUnit + t, env.transfer[t]);
-    static_assert(kEnvShCount == 16, "common.glsl's u_envSh holds 16");
-    for (int k = 0; k < kEnvShCount; ++k)
-        p.set(("u_envSh[" + std::to_string(k) + "]").c_str(), env.sh[static_cast<size_t>(k)]);
 }
 
 // (Re)creates a target when missing or of another size.
@@ -189,16 +176,17 @@ FluxAtlasPass::FluxAtlasPass()
 
 void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightView>& lights,
                         const ShadowMapArray& shadows, const MaterialTables& media,
-                        const EnvIrradiance& env) {
+                        GLuint envIrradiance) {
     ensureTarget(target_, geometry.width(), geometry.height(), {GL_RGBA32F}, false);
     target_->bind();  // every texel drawn (0 where uncovered): no clear
-    const ShaderProgram& program = programs_.get((env ? 1u : 0u) | (media.textured() ? 2u : 0u));
+    const ShaderProgram& program =
+        programs_.get((envIrradiance != 0 ? 1u : 0u) | (media.textured() ? 2u : 0u));
     program.use();
     bindLights(program, lights, kShadowUnit, shadows);
     media.bind(program, kMediaUnit, kShadingNormalUnit);
     bindTexture(program, "u_position", 0, geometry.color(0));
     bindTexture(program, "u_normal", 1, geometry.color(1));
-    if (env) bindEnvIrradiance(program, env);
+    bindTexture(program, "u_envIrradiance", 2, envIrradiance);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(emptyVao_);
     // Full-screen: a depth test against the covered texels (as the composite
@@ -210,7 +198,7 @@ void FluxAtlasPass::run(const RenderTarget& geometry, const std::vector<LightVie
 void GBufferPass::start(const GpuMesh& mesh, const std::vector<LightView>& lights,
                         const ShadowMapArray& shadows, const MaterialTables& media,
                         const glm::mat4& viewProj, int width, int height, unsigned outputs,
-                        const EnvIrradiance& env, bool cull) {
+                        GLuint envIrradiance, bool cull) {
     TSIS_CHECK_LT(outputs, 4u);
     finish();
     current_ = static_cast<int>(outputs);
@@ -219,7 +207,7 @@ void GBufferPass::start(const GpuMesh& mesh, const std::vector<LightView>& light
     if (outputs & kIrradiance) formats.push_back(GL_RGBA32F);
     if (outputs & kUv) formats.push_back(GL_RG32F);
     ensureTarget(targets_[current_], width, height, formats, true);
-    const Draw d{&mesh, &lights, &shadows, &media, viewProj, outputs, env, cull, eye_};
+    const Draw d{&mesh, &lights, &shadows, &media, viewProj, outputs, envIrradiance, cull, eye_};
     GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(cull));
     if (!worker) {
         draw(d, programs_.get(outputs), 0, 0);
@@ -249,8 +237,8 @@ void GBufferPass::draw(const Draw& d, const ShaderProgram& program, GLuint frame
     program.set("u_viewProj", d.viewProj);
     program.set("u_eye", d.eye);
     if (d.outputs & kIrradiance) {
-        if (d.env) bindEnvIrradiance(program, d.env);
-        program.set("u_hasEnv", d.env ? 1 : 0);
+        bindTexture(program, "u_envIrradiance", 0, d.envIrradiance);
+        program.set("u_hasEnv", d.envIrradiance != 0 ? 1 : 0);
     }
     drawDepthTested(*d.mesh, d.cull, vertexArray);
     checkGl("GBufferPass");

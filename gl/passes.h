@@ -4,7 +4,6 @@
 // schedules it (host/render/renderer.cpp).
 #pragma once
 
-#include <array>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -72,25 +71,14 @@ class GeometryAtlasPass {
     std::unique_ptr<RenderTarget> target_;
 };
 
-// The environment's residual on the surface (render/env_light.h), as the
-// shaders evaluate it (common.glsl envIrradiance): per atlas texel its 16
-// transfer coefficients (four RGBA float textures, made once per mesh) and
-// the turned map's harmonics (set each lighting). Empty (no textures): none.
-struct EnvIrradiance {
-    std::array<GLuint, 4> transfer{};
-    std::array<glm::vec3, kEnvShCount> sh{};
-    explicit operator bool() const { return transfer[0] != 0; }
-};
-
 // Pass A, part 2 (every frame): the flux atlas, flux per texel (attachment 0),
-// shaded over the geometry atlas; `env` (empty: none) adds the environment's
-// residual E per texel to the lights'.
+// shaded over the geometry atlas; `envIrradiance` (0: none) is a texture of
+// the environment's residual E per texel (render/env_light.h), added to the lights'.
 class FluxAtlasPass {
   public:
     FluxAtlasPass();
     void run(const RenderTarget& geometry, const std::vector<LightView>& lights,
-             const ShadowMapArray& shadows, const MaterialTables& media,
-             const EnvIrradiance& env = {});
+             const ShadowMapArray& shadows, const MaterialTables& media, GLuint envIrradiance = 0);
     const RenderTarget& target() const { return *target_; }
 
   private:
@@ -101,10 +89,11 @@ class FluxAtlasPass {
 
 // Pass C: camera G-buffer: position (w = coverage), normal and, by
 // `outputs`: kIrradiance (for the camera-view methods), E at each pixel's
-// surface point (attachment 2), to which `env` (empty: none; FluxAtlasPass's)
-// adds the environment's residual at each pixel's atlas texel; kUv, the atlas coordinates (RG, the
-// attachment after). Each variant is compiled on first use. `cull`: back faces culled (the caller
-// knows the mesh is closed and outward and the eye outside it).
+// surface point (attachment 2), to which `envIrradiance` (0: none;
+// FluxAtlasPass's) adds the environment's residual at each pixel's atlas
+// texel; kUv, the atlas coordinates (RG, the attachment after). Each variant
+// is compiled on first use. `cull`: back faces culled (the caller knows the
+// mesh is closed and outward and the eye outside it).
 class GBufferPass {
   public:
     // clearColor false: only depth is cleared, and a reader takes coverage
@@ -122,9 +111,8 @@ class GBufferPass {
     }
     void run(const GpuMesh& mesh, const std::vector<LightView>& lights,
              const ShadowMapArray& shadows, const MaterialTables& media, const glm::mat4& viewProj,
-             int width, int height, unsigned outputs, const EnvIrradiance& env = {},
-             bool cull = false) {
-        start(mesh, lights, shadows, media, viewProj, width, height, outputs, env, cull);
+             int width, int height, unsigned outputs, GLuint envIrradiance = 0, bool cull = false) {
+        start(mesh, lights, shadows, media, viewProj, width, height, outputs, envIrradiance, cull);
         finish();
     }
     // The eye, for the normal maps' shading normals (kept where the eye
@@ -134,7 +122,7 @@ class GBufferPass {
     void start(const GpuMesh& mesh, const std::vector<LightView>& lights,
                const ShadowMapArray& shadows, const MaterialTables& media,
                const glm::mat4& viewProj, int width, int height, unsigned outputs,
-               const EnvIrradiance& env = {}, bool cull = false);
+               GLuint envIrradiance = 0, bool cull = false);
     void finish();
     const RenderTarget& target() const { return *targets_[current_]; }
 
@@ -146,7 +134,7 @@ class GBufferPass {
         const MaterialTables* media;
         glm::mat4 viewProj;
         unsigned outputs;
-        EnvIrradiance env;
+        GLuint envIrradiance;
         bool cull;
         glm::vec3 eye;
     };

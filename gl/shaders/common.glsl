@@ -60,27 +60,6 @@ vec3 shadingNormal(vec3 n, vec2 atlasUv) {
     return dot(m, m) > 0.0 ? m : n;
 }
 
-// The environment's residual E at an atlas texel (render/env_light.h): the
-// texel's 16 transfer coefficients T_k (four RGBA textures, k = 4·t + channel)
-// dotted with the turned map's harmonics L_k, clamped at 0. Turning the map
-// changes only u_envSh: no per-texel work on the host, no upload.
-uniform sampler2D u_envTransfer0, u_envTransfer1, u_envTransfer2, u_envTransfer3;
-uniform vec3 u_envSh[16];
-vec3 envIrradiance(ivec2 texel) {
-    vec4 t0 = texelFetch(u_envTransfer0, texel, 0), t1 = texelFetch(u_envTransfer1, texel, 0);
-    vec4 t2 = texelFetch(u_envTransfer2, texel, 0), t3 = texelFetch(u_envTransfer3, texel, 0);
-    vec3 e = t0.x * u_envSh[0] + t0.y * u_envSh[1] + t0.z * u_envSh[2] + t0.w * u_envSh[3];
-    e += t1.x * u_envSh[4] + t1.y * u_envSh[5] + t1.z * u_envSh[6] + t1.w * u_envSh[7];
-    e += t2.x * u_envSh[8] + t2.y * u_envSh[9] + t2.z * u_envSh[10] + t2.w * u_envSh[11];
-    e += t3.x * u_envSh[12] + t3.y * u_envSh[13] + t3.z * u_envSh[14] + t3.w * u_envSh[15];
-    return max(e, vec3(0.0));
-}
-// At atlas coordinates uv (the G-buffer's pixels), the nearest texel's.
-vec3 envIrradianceAt(vec2 uv) {
-    ivec2 size = textureSize(u_envTransfer0, 0);
-    return envIrradiance(min(ivec2(uv * vec2(size)), size - 1));
-}
-
 // Unit vector from p towards light i, and the 1/d² falloff of a point light.
 vec3 toLight(int i, vec3 p, out float falloff) {
     if (u_lightType[i] == 0) {

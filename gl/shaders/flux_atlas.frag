@@ -3,6 +3,8 @@
 // so a moving light re-shades texels without re-rasterising the mesh.
 uniform sampler2D u_position;
 uniform sampler2D u_normal;
+// With TSIS_ENV, the environment's residual E per texel (render/env_light.h).
+uniform sampler2D u_envIrradiance;
 layout(location = 0) out vec4 o_flux;
 
 void main() {
@@ -18,7 +20,7 @@ void main() {
     vec3 e = irradiance(p.xyz, shadingNormal(n.xyz, (vec2(px) + 0.5) / vec2(textureSize(u_normal, 0))),
                         mediumOf(p.w).r);
 #if TSIS_ENV
-    e += envIrradiance(px);  // the environment's residual
+    e += texelFetch(u_envIrradiance, px, 0).rgb;
 #endif
     o_flux = vec4(e * n.w, 1.0);
 #if TSIS_TEXTURED

@@ -13,8 +13,9 @@ layout(location = 0) out vec4 o_position;
 layout(location = 1) out vec4 o_normal;
 #if TSIS_GBUFFER_IRRADIANCE
 layout(location = 2) out vec4 o_irradiance;
-// With u_hasEnv, the environment's residual E at the pixel's atlas texel, as
-// the flux atlas has it (common.glsl envIrradiance).
+// The environment's residual E per atlas texel (render/env_light.h), when
+// u_hasEnv: the flux atlas's, read at the pixel's atlas texel.
+uniform sampler2D u_envIrradiance;
 uniform int u_hasEnv;
 #endif
 #if TSIS_GBUFFER_UV && TSIS_GBUFFER_IRRADIANCE
@@ -42,7 +43,10 @@ void main() {
     o_normal = vec4(n, u_textured ? 1.0 + texel.y * float(textureSize(u_albedo, 0).x) + texel.x : 1.0);
 #if TSIS_GBUFFER_IRRADIANCE
     vec3 e = irradiance(v_position, n, mediumOf(v_medium).r);
-    if (u_hasEnv != 0) e += envIrradianceAt(v_uv);
+    if (u_hasEnv != 0) {
+        ivec2 size = textureSize(u_envIrradiance, 0);
+        e += texelFetch(u_envIrradiance, min(ivec2(v_uv * vec2(size)), size - 1), 0).rgb;
+    }
     o_irradiance = vec4(e * albedoFactor(v_uv), 1.0);
 #endif
 #if TSIS_GBUFFER_UV

@@ -129,15 +129,22 @@ bool EnvTransfer::update(uint64_t key, const Mesh& mesh, int resolution, double 
     return true;
 }
 
-std::array<std::vector<float>, 4> EnvTransfer::planes() const {
-    static_assert(kEnvShCount == 16, "four RGBA planes");
-    std::array<std::vector<float>, 4> out;
-    for (std::vector<float>& p : out)
-        p.assign(static_cast<size_t>(resolution_) * resolution_ * 4, 0.0f);
-    for (size_t t = 0; t < texels_.size(); ++t)
-        for (int k = 0; k < kEnvShCount; ++k)
-            out[static_cast<size_t>(k / 4)][static_cast<size_t>(texels_[t]) * 4 + k % 4] =
-                transfer_[t * kEnvShCount + static_cast<size_t>(k)];
+std::vector<float> EnvTransfer::irradiance(const Environment& env) const {
+    const std::array<glm::dvec3, kEnvShCount> l = env.worldSh();
+    std::array<glm::vec3, kEnvShCount> lf;
+    for (int k = 0; k < kEnvShCount; ++k) lf[k] = glm::vec3(l[k]);
+    std::vector<float> out(static_cast<size_t>(resolution_) * resolution_ * 4, 0.0f);
+    parallelFor(texels_.size(), 4096, [&](size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t) {
+            glm::vec3 e(0.0f);
+            const float* c = &transfer_[t * kEnvShCount];
+            for (int k = 0; k < kEnvShCount; ++k) e += c[k] * lf[k];
+            float* o = &out[static_cast<size_t>(texels_[t]) * 4];
+            o[0] = std::max(0.0f, e.x);
+            o[1] = std::max(0.0f, e.y);
+            o[2] = std::max(0.0f, e.z);
+        }
+    });
     return out;
 }
 

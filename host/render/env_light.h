@@ -4,15 +4,13 @@
 //    resolution and η, the transfer T_k = ∫ V·Ft(η, n·ω)·max(0, n·ω)·Y_k(ω) dω
 //    on 16 spherical harmonics (bands 0…3); each frame E = Σ_k T_k·L_k with L_k
 //    the turned, scaled residual's coefficients — turning the map costs one
-//    projection on the host and a dot product per texel in the shaders that
-//    read E (gl/shaders/common.glsl envIrradiance), no ray (Sloan et al. 2002).
+//    projection and one dot product per texel, no ray (Sloan et al. 2002).
 //  * addEnvironmentIrradiance, for reference and hierarchical: E at each
 //    surface point by Monte Carlo over the residual itself (no harmonics).
 // Both draw stratified cosine-weighted directions (visibleDirections).
 // docs/design.md §12.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -42,10 +40,8 @@ class EnvTransfer {
     // normal w = area). Returns true when it rebuilt.
     bool update(uint64_t key, const Mesh& mesh, int resolution, double eta,
                 const std::vector<float>& positions, const std::vector<float>& normals);
-    // The transfer as the shaders read it (common.glsl envIrradiance: E =
-    // max(0, Σ T_k·L_k)): four RGBA planes (GL order, resolution² each),
-    // coefficient k in plane k / 4, channel k % 4; 0 on texels no chart covers.
-    std::array<std::vector<float>, 4> planes() const;
+    // E of the residual per texel (RGBA, GL order, resolution²), ≥ 0.
+    std::vector<float> irradiance(const Environment& env) const;
     uint64_t key() const { return key_; }
     size_t texels() const { return texels_.size(); }
     size_t tracedTexels() const { return traced_; }  // texels whose own rays were cast

@@ -95,7 +95,7 @@ void RasterPasses::startSamples(const FrameContext& ctx, const GpuMesh& mesh,
     const int aa = ctx.options->aa;
     sampleGbufferPass_.setEye(ctx.eye);
     sampleGbufferPass_.start(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
-                             ctx.width * aa, ctx.height * aa, 0, {}, cullsBackFaces(ctx, mesh));
+                             ctx.width * aa, ctx.height * aa, 0, 0, cullsBackFaces(ctx, mesh));
 }
 
 void RasterPasses::uploadMesh(const Mesh& mesh, uint64_t hash) {
@@ -238,7 +238,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     const GlLights& lights = res.read(h.lights);
                     const RenderTarget& geometry = *res.read(h.geometryAtlas).target;
                     pass.run(geometry, withLights ? *lights.views : none, *lights.shadows,
-                             materials_, environmentIrradiance(ctx, geometry, res.stats()));
+                             materials_, environmentTexture(ctx, geometry, res.stats()));
                     glFinish();
                     key = lighting;
                     ++version;
@@ -283,10 +283,10 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 samplesStarted_ = samples;
             }
             if (key.digest() != gbufferKey_) {
-                const EnvIrradiance env =
+                const GLuint env =
                     irradiance && ctx.scene->env
-                        ? environmentIrradiance(ctx, *res.read(h.geometryAtlas).target, res.stats())
-                        : EnvIrradiance{};
+                        ? environmentTexture(ctx, *res.read(h.geometryAtlas).target, res.stats())
+                        : 0;
                 gbufferPass_.setEye(ctx.eye);
                 gbufferPass_.run(mesh, *lights.views, *lights.shadows, materials_, ctx.viewProj,
                                  ctx.width, ctx.height, outputs, env, cullsBackFaces(ctx, mesh));
@@ -330,46 +330,35 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
     return h;
 }
 
-EnvIrradiance RasterPasses::environmentIrradiance(const FrameContext& ctx,
-                                                  const RenderTarget& geometry, FrameStats& stats) {
+GLuint RasterPasses::environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
+                                        FrameStats& stats) {
     const Scene& scene = *ctx.scene;
-    if (!scene.env) return {};
-    // The transfer: once per mesh, atlas resolution and η (rays per texel),
-    // uploaded as the shaders read it.
+    if (!scene.env) return 0;
+    // The transfer: once per mesh, atlas resolution and η (rays per texel).
     const uint64_t key =
         Hasher(geometryKey_.first).add(geometryKey_.second).add(scene.material.eta).digest();
     Timer t;
     if (key != envTransfer_.key())
         envTransfer_.update(key, scene.mesh, geometry.width(), scene.material.eta,
                             geometry.readRGBA(0), geometry.readRGBA(1));
-    if (key != envTransferKey_) {
-        const std::array<std::vector<float>, 4> planes = envTransfer_.planes();
-        for (size_t p = 0; p < planes.size(); ++p) {
-            std::unique_ptr<FloatTexture>& tex = envTransferTextures_[p];
-            if (!tex || tex->width() != geometry.width())
-                tex = std::make_unique<FloatTexture>(geometry.width(), geometry.height());
-            tex->upload(planes[p].data());
-            envIrradiance_.transfer[p] = tex->id();
-        }
-        envTransferKey_ = key;
-    }
     stats.set("env_transfer_ms", t.ms());
     stats.set("env_transfer_texels", static_cast<double>(envTransfer_.tracedTexels()));
-    // Each frame whose lighting changed: the turned map's harmonics (the
-    // shaders take the dot product per texel).
+    // Each frame whose lighting changed: the turned map's harmonics, one dot
+    // a texel (once a lighting, though the flux atlas and the G-buffer read it).
     const uint64_t lighting = Hasher(key)
                                   .add(scene.env.map->hash)
                                   .add(scene.env.intensity)
                                   .add(scene.env.rotateDegrees)
                                   .digest();
-    if (lighting != envShKey_) {
-        Timer e;
-        const std::array<glm::dvec3, kEnvShCount> sh = scene.env.worldSh();
-        for (size_t k = 0; k < sh.size(); ++k) envIrradiance_.sh[k] = glm::vec3(sh[k]);
-        envShKey_ = lighting;
-        stats.set("env_irradiance_ms", e.ms());
-    }
-    return envIrradiance_;
+    if (envTexture_ && lighting == envTextureKey_) return envTexture_->id();
+    envTextureKey_ = lighting;
+    Timer e;
+    const std::vector<float> irradiance = envTransfer_.irradiance(scene.env);
+    if (!envTexture_ || envTexture_->width() != geometry.width())
+        envTexture_ = std::make_unique<FloatTexture>(geometry.width(), geometry.height());
+    envTexture_->upload(irradiance.data());
+    stats.set("env_irradiance_ms", e.ms());
+    return envTexture_->id();
 }
 
 EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ctx,

@@ -84,7 +84,7 @@ class RasterPasses {
     bool lightingCurrent(uint64_t lightingKey) const { return lightViewKey_ == lightingKey; }
     // Forget every lighting result (--no-reuse-lighting).
     void invalidateLighting() {
-        lightViewKey_ = fluxKey_ = residualKey_ = envTransferKey_ = envShKey_ = 0;
+        lightViewKey_ = fluxKey_ = residualKey_ = envTextureKey_ = 0;
         viewKeys_.clear();
     }
 
@@ -98,11 +98,9 @@ class RasterPasses {
     // mesh over 2 × `budget` triangles, made once per mesh and budget; null
     // for the mesh itself.
     const GpuMesh* depthMesh(const Mesh& mesh, int budget, FrameStats& stats);
-    // The environment's residual as the shaders evaluate it per atlas texel
-    // (empty without --env): the transfer's textures, uploaded once per
-    // mesh, atlas resolution and η, and the turned map's harmonics.
-    EnvIrradiance environmentIrradiance(const FrameContext& ctx, const RenderTarget& geometry,
-                                        FrameStats& stats);
+    // The environment residual's E per atlas texel as a texture (0 without --env).
+    GLuint environmentTexture(const FrameContext& ctx, const RenderTarget& geometry,
+                              FrameStats& stats);
     // The environment's reflection (render/env_reflection.h) for the
     // composite: none without --env or with --no-specular; re-filtered only
     // when the map or the roughness changed, the albedo table when an η did.
@@ -122,10 +120,8 @@ class RasterPasses {
     MaterialTables
         materials_;  // η and exit scale per medium (updated each frame, uploaded on change)
     EnvTransfer envTransfer_;
-    std::array<std::unique_ptr<FloatTexture>, 4> envTransferTextures_;
-    EnvIrradiance envIrradiance_;
-    uint64_t envTransferKey_ = 0;  // the transfer the textures hold
-    uint64_t envShKey_ = 0;        // transfer and lighting envIrradiance_.sh is for
+    std::unique_ptr<FloatTexture> envTexture_;
+    uint64_t envTextureKey_ = 0;  // transfer and lighting the texture holds
     std::unique_ptr<FloatTexture> envPrefiltered_, envAlbedo_;
     uint64_t envPrefilteredKey_ = 0, envAlbedoKey_ = 0;
     std::unique_ptr<FloatTexture> envBackground_;
