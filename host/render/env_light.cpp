@@ -119,11 +119,10 @@ bool EnvTransfer::update(uint64_t key, const Mesh& mesh, int resolution, double 
     });
     std::vector<int32_t> slot(count, -1);
     for (size_t t = 0; t < traced.size(); ++t) slot[traced[t]] = static_cast<int32_t>(t);
-    transfer_.resize(texels_.size() * kEnvShCount);
-    for (size_t t = 0; t < texels_.size(); ++t) {
-        const size_t from = static_cast<size_t>(slot[static_cast<size_t>(owner[texels_[t]])]);
-        std::copy_n(&own[from * kEnvShCount], kEnvShCount, &transfer_[t * kEnvShCount]);
-    }
+    ownerSlot_.resize(texels_.size());
+    for (size_t t = 0; t < texels_.size(); ++t)
+        ownerSlot_[t] = static_cast<uint32_t>(slot[static_cast<size_t>(owner[texels_[t]])]);
+    transfer_ = std::move(own);
     traced_ = traced.size();
     key_ = key;
     return true;
@@ -133,18 +132,24 @@ std::vector<float> EnvTransfer::irradiance(const Environment& env) const {
     const std::array<glm::dvec3, kEnvShCount> l = env.worldSh();
     std::array<glm::vec3, kEnvShCount> lf;
     for (int k = 0; k < kEnvShCount; ++k) lf[k] = glm::vec3(l[k]);
-    std::vector<float> out(static_cast<size_t>(resolution_) * resolution_ * 4, 0.0f);
-    parallelFor(texels_.size(), 4096, [&](size_t begin, size_t end) {
+    // One dot product per traced texel; its block's texels take its E.
+    std::vector<glm::vec3> traced(traced_);
+    parallelFor(traced_, 4096, [&](size_t begin, size_t end) {
         for (size_t t = begin; t < end; ++t) {
             glm::vec3 e(0.0f);
             const float* c = &transfer_[t * kEnvShCount];
             for (int k = 0; k < kEnvShCount; ++k) e += c[k] * lf[k];
-            float* o = &out[static_cast<size_t>(texels_[t]) * 4];
-            o[0] = std::max(0.0f, e.x);
-            o[1] = std::max(0.0f, e.y);
-            o[2] = std::max(0.0f, e.z);
+            traced[t] = glm::max(e, glm::vec3(0.0f));
         }
     });
+    std::vector<float> out(static_cast<size_t>(resolution_) * resolution_ * 4, 0.0f);
+    for (size_t t = 0; t < texels_.size(); ++t) {
+        const glm::vec3& e = traced[ownerSlot_[t]];
+        float* o = &out[static_cast<size_t>(texels_[t]) * 4];
+        o[0] = e.x;
+        o[1] = e.y;
+        o[2] = e.z;
+    }
     return out;
 }
 

@@ -50,8 +50,9 @@ class EnvTransfer {
     uint64_t key_ = 0;
     int resolution_ = 0;
     size_t traced_ = 0;
-    std::vector<uint32_t> texels_;  // covered texel indices
-    std::vector<float> transfer_;   // kEnvShCount per covered texel
+    std::vector<uint32_t> texels_;     // covered texel indices
+    std::vector<uint32_t> ownerSlot_;  // per covered texel: the traced texel whose rays it uses
+    std::vector<float> transfer_;      // kEnvShCount per traced texel
 };
 
 // Strata per side of the transfer's directions (144 rays a traced texel), and
