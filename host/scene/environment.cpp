@@ -64,6 +64,38 @@ ShCoefficients shBasis(const glm::dvec3& d) {
             0.590043589926644 * x * (x * x - 3 * y * y)};
 }
 
+std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, kEnvShCount>& c,
+                                                   double degrees) {
+    // Gauss–Legendre nodes and weights on [−1, 1], 6 points (exact to degree
+    // 11 in cos θ), and 16 angles in φ (exact for |m| < 16): the products of
+    // two band-≤3 harmonics are polynomials of degree ≤ 6.
+    static constexpr double kNode[6] = {-0.932469514203152, -0.661209386466265, -0.238619186083197,
+                                        0.238619186083197,  0.661209386466265,  0.932469514203152};
+    static constexpr double kWeight[6] = {0.171324492379170, 0.360761573048139, 0.467913934572691,
+                                          0.467913934572691, 0.360761573048139, 0.171324492379170};
+    constexpr int kPhi = 16;
+    const double a = degrees * kPi / 180.0, ca = std::cos(a), sa = std::sin(a);
+    std::array<glm::dvec3, kEnvShCount> out;
+    out.fill(glm::dvec3(0.0));
+    for (int i = 0; i < 6; ++i) {
+        const double z = kNode[i], r = std::sqrt(1.0 - z * z);
+        for (int j = 0; j < kPhi; ++j) {
+            const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
+            const glm::dvec3 d(r * std::cos(phi), r * std::sin(phi), z);
+            // R d, R as Environment::toWorld: about +y, x → (c, 0, −s).
+            const glm::dvec3 rd(ca * d.x + sa * d.z, d.y, -sa * d.x + ca * d.z);
+            const ShCoefficients yd = shBasis(d), yr = shBasis(rd);
+            const double w = kWeight[i] * 2.0 * kPi / kPhi;
+            // f(R⁻¹ d) = Σ_j c_j Y_j(R⁻¹ d): its k-th coefficient is
+            // Σ_j c_j ∫ Y_k(d) Y_j(R⁻¹ d) dd = Σ_j c_j ∫ Y_k(R e) Y_j(e) de.
+            glm::dvec3 f(0.0);
+            for (int k = 0; k < kEnvShCount; ++k) f += c[static_cast<size_t>(k)] * yd[k];
+            for (int k = 0; k < kEnvShCount; ++k) out[static_cast<size_t>(k)] += w * yr[k] * f;
+        }
+    }
+    return out;
+}
+
 glm::dvec3 EnvironmentMap::radiance(const glm::dvec3& d) const {
     double u, v;
     latLongCoordinates(d, u, v);
@@ -195,6 +227,7 @@ std::shared_ptr<const EnvironmentMap> splitEnvironment(const std::string& path, 
         for (int c = 0; c < 3; ++c)
             map->shResidual[j * 3 + c] =
                 weight[j] > 0 ? static_cast<float>(sum[j * 3 + c] / weight[j]) : 0.0f;
+    map->sh = map->project(glm::dmat3(1.0));
     map->hash = Hasher().addAll(map->residual).add(map->sunIrradiance).add(width).digest();
     return map;
 }
@@ -237,7 +270,7 @@ glm::dvec3 Environment::radiance(const glm::dvec3& d) const {
 }
 
 std::array<glm::dvec3, kEnvShCount> Environment::worldSh() const {
-    std::array<glm::dvec3, kEnvShCount> c = map->project(toWorld());
+    std::array<glm::dvec3, kEnvShCount> c = rotateShAboutY(map->sh, rotateDegrees);
     for (glm::dvec3& v : c) v *= intensity;
     return c;
 }

@@ -29,6 +29,13 @@ constexpr int kEnvShBands = 4;
 constexpr int kEnvShCount = kEnvShBands * kEnvShBands;
 using ShCoefficients = std::array<double, kEnvShCount>;
 ShCoefficients shBasis(const glm::dvec3& d);
+// Coefficients c (of a function f) turned about +y by `degrees`: those of
+// f(R⁻¹ d), R the turn (Environment::toWorld's). Each band turns within
+// itself; its matrix M_kj = ∫ Y_k(R d) Y_j(d) dω is summed on a product rule
+// exact for these polynomials (Gauss–Legendre in cos θ, uniform in φ), so
+// turning costs microseconds, not a pass over the map.
+std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, kEnvShCount>& c,
+                                                   double degrees);
 
 constexpr int kShMapWidth = 256;
 constexpr float kEnvNegativeTolerance = 1e-3f;
@@ -54,8 +61,11 @@ struct EnvironmentMap {
 
     // Radiance of the residual arriving from direction d (map frame), nearest texel.
     glm::dvec3 radiance(const glm::dvec3& d) const;
-    // The residual projected on shBasis, per channel, in the map's frame.
+    // The residual projected on shBasis, per channel, its directions taken
+    // through toWorld (identity: the map's frame).
     std::array<glm::dvec3, kEnvShCount> project(const glm::dmat3& toWorld) const;
+    // project(identity), made with the map: what Environment::worldSh turns.
+    std::array<glm::dvec3, kEnvShCount> sh{};
 };
 
 // The map's pixels split: the sun is the texels within 10° of the brightest
@@ -85,7 +95,8 @@ struct Environment {
     glm::dmat3 toWorld() const;  // map frame → world
     // Residual radiance arriving from world direction d (scaled).
     glm::dvec3 radiance(const glm::dvec3& d) const;
-    // The residual's SH coefficients in world frame, scaled.
+    // The residual's SH coefficients in world frame, scaled: the map's own,
+    // turned (rotateShAboutY).
     std::array<glm::dvec3, kEnvShCount> worldSh() const;
     // The sun as a directional light (Light::environment set).
     Light sun() const;

@@ -81,6 +81,38 @@ TEST(Environment, LargeMapProjectsAsItsAverage) {
 
 // One bright texel on a dim sky: it becomes the sun, with its flux, its
 // direction, turned with the map, and leaves the residual.
+// Turning the coefficients (rotateShAboutY) is projecting the turned map:
+// the same numbers to rounding for a map with all 16 coefficients nonzero,
+// at any angle, and the round trip is the identity.
+TEST(Environment, TurnedCoefficientsAreTheTurnedMapsProjection) {
+    const int w = 64, h = 32;
+    std::vector<float> px(static_cast<size_t>(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                px[(static_cast<size_t>(y) * w + x) * 3 + c] = static_cast<float>(
+                    1.0 + 0.5 * std::sin(3.0 * x / w * 2 * kPi + c) * std::cos(2.0 * y / h * kPi) +
+                    0.3 * (x % 7) / 7.0 + 0.2 * (y * y % 5) / 5.0 +
+                    0.4 * std::sin(2 * kPi * x / w + 0.3) * y / h +
+                    0.25 * std::cos(4 * kPi * x / w) * std::sin(kPi * y / h));
+    Environment env;
+    env.map = splitEnvironment("turn.hdr", w, h, 3, px);
+    double scale = 0;
+    for (const glm::dvec3& c : env.map->sh) scale = std::max(scale, glm::length(c));
+    for (const glm::dvec3& c : env.map->sh) EXPECT_GT(glm::length(c), 1e-6 * scale);
+    for (const double degrees : {0.0, 17.0, 90.0, -135.5, 400.0}) {
+        SCOPED_TRACE(degrees);
+        env.rotateDegrees = degrees;
+        const auto turned = rotateShAboutY(env.map->sh, degrees);
+        const auto projected = env.map->project(env.toWorld());
+        for (int k = 0; k < kEnvShCount; ++k)
+            EXPECT_LT(glm::length(turned[k] - projected[k]), 1e-12 * scale) << k;
+        const auto back = rotateShAboutY(turned, -degrees);
+        for (int k = 0; k < kEnvShCount; ++k)
+            EXPECT_LT(glm::length(back[k] - env.map->sh[k]), 1e-12 * scale) << k;
+    }
+}
+
 TEST(Environment, SunIsSplitOffTurnedAndScaled) {
     const int w = 64, h = 32;
     std::vector<float> px = uniformPixels(w, h, 0.01f);
