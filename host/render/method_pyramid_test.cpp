@@ -217,5 +217,45 @@ TEST(Pyramid, CameraMovesReadTheCopyOnTheGlSideAsOnTheClSide) {
     }
 }
 
+// prepareCameraMoves makes the copy the first camera move would: that move
+// then reads it on the GL side at once (no run of the method), with the
+// frame a renderer gives once the copy exists, byte for byte; a light move
+// gathers at the pixels again. Where no frame makes a copy it does nothing.
+TEST(Pyramid, PreparedCameraMovesReadTheCopyFromTheFirstMove) {
+    const CameraMoves m;
+    RenderOptions opt = frameSequenceOptions();
+    opt.keepAovs = false;
+    Renderer prepared, plain;
+    prepared.render(m.a, opt);
+    ASSERT_TRUE(prepared.prepareCameraMoves(m.a, opt));
+    const FrameResult first = prepared.render(m.turned, opt);
+    EXPECT_EQ(first.stats.number("radiosity_lookup_gl"), 1);
+    EXPECT_EQ(first.stats.number("pyramid_from_atlas"), 1);
+    // The plain renderer's first move makes the copy, its second reads it.
+    for (const Scene* s : {&m.a, &m.turned, &m.again}) plain.render(*s, opt);
+    const FrameResult second = plain.render(m.turned, opt);
+    EXPECT_EQ(second.stats.number("radiosity_lookup_gl"), 1);
+    EXPECT_EQ(first.rgb8, second.rgb8);
+    EXPECT_EQ(prepared.render(m.lit, opt).stats.number("radiosity_lookup_gl"), 0);
+    // Preparing twice for one lighting finds the copy current; a camera move
+    // under that lighting reads it.
+    ASSERT_TRUE(prepared.prepareCameraMoves(m.lit, opt));
+    ASSERT_TRUE(prepared.prepareCameraMoves(m.lit, opt));
+    Scene litTurned = m.lit;
+    litTurned.camera = m.turned.camera;
+    EXPECT_EQ(prepared.render(litTurned, opt).stats.number("radiosity_lookup_gl"), 1);
+
+    for (const auto& [what, change] : std::vector<std::pair<const char*, void (*)(RenderOptions&)>>{
+             {"tsis", [](RenderOptions& o) { o.method = "tsis"; }},
+             {"off", [](RenderOptions& o) { o.pyramidCache = PyramidCache::Pixels; }},
+             {"always", [](RenderOptions& o) { o.pyramidCache = PyramidCache::Texture; }},
+             {"progressive", [](RenderOptions& o) { o.progressive = true; }},
+             {"aovs", [](RenderOptions& o) { o.keepAovs = true; }}}) {
+        RenderOptions other = opt;
+        change(other);
+        EXPECT_FALSE(prepared.prepareCameraMoves(m.a, other)) << what;
+    }
+}
+
 }  // namespace
 }  // namespace tsis

@@ -153,6 +153,20 @@ void Renderer::forgetAfterAbort() {
     lastView_ = 0;
 }
 
+bool Renderer::prepareCameraMoves(const Scene& scene, const RenderOptions& options) {
+    // With AOVs kept the camera moves read the copy on the CL side, which
+    // makes it as fast as the GL side's lookup does not: nothing to gain.
+    if (options.method != "pyramid" || options.pyramidCache != PyramidCache::Camera ||
+        options.progressive || options.keepAovs)
+        return false;
+    // The same view and lighting with the copy always read: it is made (or
+    // found current) for this lighting; the frame itself is not shown.
+    RenderOptions copy = options;
+    copy.pyramidCache = PyramidCache::Texture;
+    render(scene, copy);
+    return true;
+}
+
 // The passes free their GL objects in this renderer's context, whichever
 // renderer of the thread drew last.
 Renderer::~Renderer() {

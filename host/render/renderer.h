@@ -55,6 +55,15 @@ class Renderer {
     // (volumetric, reference): tsis::Cancelled then, and the next frame starts
     // afresh. Throws tsis::Error in a child forked after this renderer was made.
     FrameResult render(const Scene& scene, const RenderOptions& options, Cancel* cancel = nullptr);
+    // What the first frame to move only the camera after a lighting change
+    // would otherwise do, done now (a window calls it while its last frame is
+    // shown): pyramid's copy of B over the atlas (method_pyramid.h), 80–160
+    // ms in that frame against ~20 for the next camera moves. `scene` and
+    // `options` are the last frame's; nothing changes for it but the copy,
+    // so the camera moves that follow read it at once. Returns false, doing
+    // nothing, where no frame would make a copy (another method,
+    // pyramid-cache off or always, progressive frames, AOVs kept).
+    bool prepareCameraMoves(const Scene& scene, const RenderOptions& options);
     // Whether this process is not the one that made the renderer (a fork's
     // child): it may then only be leaked, as its GL and CL threads are gone.
     bool forkedAway() const;

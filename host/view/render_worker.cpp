@@ -59,6 +59,11 @@ std::optional<FrameDone> RenderWorker::take() {
     return out;
 }
 
+int RenderWorker::preparations() const {
+    std::lock_guard lock(mutex_);
+    return preparations_;
+}
+
 FrameDone RenderWorker::render(const FrameJob& job) {
     FrameDone done;
     done.id = job.id;
@@ -77,6 +82,24 @@ FrameDone RenderWorker::render(const FrameJob& job) {
         done.error = currentErrorMessage();
     }
     return done;
+}
+
+void RenderWorker::prepareWhileIdle(const FrameJob& job) {
+    {
+        std::unique_lock lock(mutex_);
+        if (changed_.wait_for(lock, kPrepareAfter, [&] { return stop_ || waiting_.has_value(); }))
+            return;
+        rendering_ = true;
+    }
+    bool prepared = false;
+    try {
+        prepared = renderer_->prepareCameraMoves(scene_, job.options);
+    } catch (...) {  // the next frame meets the same error and shows it
+    }
+    progress_.clear();
+    std::lock_guard lock(mutex_);
+    rendering_ = false;
+    preparations_ += prepared ? 1 : 0;
 }
 
 void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
@@ -106,12 +129,15 @@ void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
         }
         FrameDone done = render(job);
         progress_.clear();
+        const bool atPixels =
+            done.error.empty() && done.frame.stats.number("pyramid_from_atlas") == 0;
         {
             std::lock_guard lock(mutex_);
             done_ = std::move(done);
             rendering_ = false;
         }
         if (wake_) wake_();
+        if (atPixels) prepareWhileIdle(job);
     }
     renderer_.reset();  // on the thread whose context it is
 }

@@ -5,6 +5,7 @@
 // replaces any older one still waiting.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -51,10 +52,22 @@ class RenderWorker {
     // The newest finished frame, once.
     std::optional<FrameDone> take();
     WorkProgress progress() const { return progress_.get(); }
+    // How many times the worker prepared camera moves while idle (below).
+    int preparations() const;
+
+    // After a frame that gathered B at its pixels (a light or material
+    // change, not a camera move), the worker waits this long for the next
+    // job; none coming (the user let go of the light), it makes pyramid's
+    // copy of B over the atlas (Renderer::prepareCameraMoves) while the frame
+    // is shown, so that the first orbit costs what the next ones do.
+    static constexpr std::chrono::milliseconds kPrepareAfter{150};
 
   private:
     void run(const std::string& clDevice, const std::string& gl);
     FrameDone render(const FrameJob& job);
+    // Idle after `job`'s frame: prepares its camera moves unless a job comes
+    // within kPrepareAfter or the worker stops.
+    void prepareWhileIdle(const FrameJob& job);
 
     std::function<void()> wake_;
     ProgressBox progress_;
@@ -65,6 +78,7 @@ class RenderWorker {
     std::optional<FrameDone> done_;
     std::string startError_;
     bool started_ = false;
+    int preparations_ = 0;
     // Owned by the thread: the renderer and the scene with its current mesh.
     std::unique_ptr<Renderer> renderer_;
     std::shared_ptr<const Mesh> mesh_;

@@ -23,6 +23,7 @@ struct Syntax {
 
 const Syntax kSyntax[] = {
     {"frame", Kind::Frame, "n"},
+    {"wait", Kind::Wait, "n"},
     {"orbit", Kind::Orbit, "xy"},
     {"pan", Kind::Pan, "xy"},
     {"zoom", Kind::Zoom, "z"},

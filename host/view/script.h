@@ -6,6 +6,7 @@
 //
 //   # a comment; blank lines are skipped
 //   frame N              N more frames (a sampling method's progressive frames accumulate)
+//   wait MS              MS milliseconds with no input (a user letting go), frames done first
 //   orbit DX DY          drag the camera by DX, DY pixels (left button)
 //   pan DX DY            drag with the middle button
 //   zoom STEPS           wheel notches (positive: closer)
@@ -29,6 +30,7 @@ namespace tsis {
 struct ScriptCommand {
     enum class Kind {
         Frame,
+        Wait,
         Orbit,
         Pan,
         Zoom,
@@ -45,9 +47,9 @@ struct ScriptCommand {
         Close
     };
     Kind kind = Kind::Frame;
-    int line = 0;             // in the file, for messages
-    float x = 0, y = 0;       // frame: N in x; orbit, pan, light-drag: DX, DY; zoom: STEPS
-    bool on = false;          // panel, heatmap
+    int line = 0;        // in the file, for messages
+    float x = 0, y = 0;  // frame: N in x; wait: MS; orbit, pan, light-drag: DX, DY; zoom: STEPS
+    bool on = false;     // panel, heatmap
     std::string name, value;  // set NAME VALUE; the path of open-mesh, screenshot, save, aov
 };
 

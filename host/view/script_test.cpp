@@ -27,9 +27,10 @@ TEST(Script, ParsesEveryCommand) {
         "screenshot out/a b.png\n"
         "save r.png\n"
         "aov dir\n"
-        "close\n";
+        "close\n"
+        "wait 250\n";
     const std::vector<ScriptCommand> s = parseScript(text, "s.txt");
-    ASSERT_EQ(s.size(), 15u);
+    ASSERT_EQ(s.size(), 16u);
     EXPECT_EQ(s[0].kind, Kind::Frame);
     EXPECT_EQ(s[0].x, 3);
     EXPECT_EQ(s[0].line, 3);
@@ -56,6 +57,8 @@ TEST(Script, ParsesEveryCommand) {
     EXPECT_EQ(s[13].kind, Kind::Aov);
     EXPECT_EQ(s[14].kind, Kind::Close);
     EXPECT_EQ(s[14].line, 17);
+    EXPECT_EQ(s[15].kind, Kind::Wait);
+    EXPECT_EQ(s[15].x, 250);
 }
 
 TEST(Script, BadLinesAreRefusedWithFileAndLine) {
@@ -63,6 +66,8 @@ TEST(Script, BadLinesAreRefusedWithFileAndLine) {
         {"jump 3", "unknown command 'jump'"},
         {"frame 0", "outside"},
         {"frame", "expected 1 operand"},
+        {"wait 0", "outside"},
+        {"wait -5", "outside"},
         {"orbit 1", "expected 2 operands"},
         {"orbit 1 2 3", "expected 2 operands"},
         {"orbit 1 nan", "not a finite number"},

@@ -153,7 +153,8 @@ class Viewer {
 
     // The script.
     size_t scriptNext_ = 0;
-    int scriptFrames_ = 0;  // frames still to render for `frame N`
+    int scriptFrames_ = 0;                           // frames still to render for `frame N`
+    std::optional<Clock::time_point> scriptResume_;  // `wait MS`: the next command not before
     std::optional<std::string> screenshotPending_;
     int screenshotDelay_ = 0;
 
@@ -384,6 +385,7 @@ bool Viewer::busy() const {
 // A script's next command waits for the frame of the view so far, the frames
 // `frame N` asked for, the background work and a screenshot in hand.
 bool Viewer::scriptWaiting() const {
+    if (scriptResume_ && Clock::now() < *scriptResume_) return true;
     return busy() || scriptFrames_ > 0 || forceFrame_ || aovPending_ || screenshotPending_ ||
            (state_.mesh && (!submitted_ || !sameFrame(*submitted_, state_)));
 }
@@ -393,6 +395,9 @@ void Viewer::runCommand(const ScriptCommand& c) {
     switch (c.kind) {
         case Kind::Frame:
             scriptFrames_ += static_cast<int>(c.x);
+            break;
+        case Kind::Wait:
+            scriptResume_ = Clock::now() + std::chrono::milliseconds(static_cast<int>(c.x));
             break;
         case Kind::Orbit:
             state_.camera = orbitCamera(state_.camera, c.x, c.y);
@@ -683,6 +688,7 @@ ViewerResult Viewer::run() {
         stats["frame_ms_median"] = percentile(frameMs_, 0.5);
         stats["frame_ms_p99"] = percentile(frameMs_, 0.99);
         stats["frame_ms_max"] = percentile(frameMs_, 1.0);
+        stats["frame_ms"] = frameMs_;  // in order: which frame spiked
     }
     if (relRmse_) stats["reference_rel_rmse"] = *relRmse_;
     if (truth_) stats["truth_check_rel_rmse"] = truth_->subtracted;

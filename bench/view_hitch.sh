@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The first orbit after a light drag in `tsis view` (issue 38, "no spikes"),
+# under a virtual display (xvfb-run), in one run: a scripted session of 10
+# light-drag steps, then 10 orbit steps, with the user letting go in between
+# (`wait 400`: the window idle, the renderer's worker prepares the camera
+# moves) or not (the orbit follows at once: the first orbit step makes
+# pyramid's copy of B over the atlas itself). Rounds interleave the two; the
+# figures come from the window's --stats `frame_ms` (the renderer's time of
+# every frame, in order): the drags' median, the first orbit step, the other
+# orbit steps' median, and the slowest frame after the start-up one.
+#
+#   bench/view_hitch.sh [ROUNDS]     writes bench/results/view_hitch.md
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/bench/common.sh"
+command -v xvfb-run >/dev/null || { echo "$0: needs xvfb-run (Debian: xvfb)" >&2; exit 1; }
+rounds=${1:-3}
+out="$results/view_hitch.md"
+session() {  # session NAME PAUSE: 2 frames, 10 light drags, the pause, 10 orbits, close
+    {
+        echo "frame 2"
+        for _ in $(seq 10); do echo "light-drag 6 0"; done
+        [ "$2" = none ] || echo "wait $2"
+        for _ in $(seq 10); do echo "orbit 6 0"; done
+        echo close
+    } >"$tmp/$1.script"
+}
+session paused 400
+session straight none
+load=$(cut -d' ' -f1-3 /proc/loadavg)
+for r in $(seq "$rounds"); do
+    [ -t 2 ] && printf 'round %s of %s\r' "$r" "$rounds" >&2
+    for s in paused straight; do
+        xvfb-run -a "$tsis" view --script "$tmp/$s.script" --stats "$tmp/$s.json" >/dev/null 2>&1
+        python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1]))
+import statistics
+f = d['frame_ms']
+print(sys.argv[2], statistics.median(f[-20:-10]), f[-10], statistics.median(f[-9:]), max(f[1:]))" "$tmp/$s.json" "$s" >>"$tmp/rows"
+    done
+done
+[ -t 2 ] && printf '%*s\r' 20 '' >&2
+python3 - "$tmp/rows" "$rounds" "$load" "$(cut -d' ' -f1-3 /proc/loadavg)" >"$out" <<'EOF'
+import collections
+import statistics
+import sys
+import time
+
+rows, rounds, load_start, load_end = sys.argv[1:]
+runs = collections.defaultdict(list)
+for line in open(rows):
+    name, *v = line.split()
+    runs[name].append([float(x) for x in v])
+print("# The first orbit after a light drag in `tsis view`\n")
+print(f"Made by `bench/view_hitch.sh {rounds}` on {time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())};"
+      f" load average {load_start} at the start, {load_end} at the end. builtin:default, 512²,"
+      " pyramid, the window under xvfb-run. A session: 2 frames, 10 × `light-drag 6 0`, then"
+      " `wait 400` (paused: the user lets go; the worker prepares the camera moves while the"
+      " frame is shown) or nothing (straight: the first orbit step makes pyramid's copy of B over"
+      " the atlas itself), 10 × `orbit 6 0`. From the window's --stats `frame_ms` (the renderer's"
+      " time of each frame): the light drags' median, the first orbit step, the other orbit"
+      " steps' median, the slowest frame after the start-up one; the median over the rounds,"
+      " each round's value in brackets. Issue 38 asks every frame ≤ 1.5× the steady frame of"
+      " its kind.\n")
+print("| session | light drag ms | first orbit ms | next orbits ms | slowest ms |")
+print("|---|---|---|---|---|")
+for name in ("paused", "straight"):
+    cols = list(zip(*runs[name]))
+    print(f"| {name} | " + " | ".join(
+        f"{statistics.median(c):.1f} ({', '.join(f'{x:.0f}' for x in c)})" for c in cols) + " |")
+EOF
+cat "$out"
