@@ -39,6 +39,7 @@ class RenderTarget {
     void readRGBA(int i, float* out) const { read(i, GL_RGBA, GL_FLOAT, out); }
     // Attachment i's first two channels as floats (for GL_RG32F), GL order.
     std::vector<float> readRG(int i) const;
+    void readRG(int i, float* out) const { read(i, GL_RG, GL_FLOAT, out); }
     // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
     std::vector<unsigned char> readRGBA8(int i) const;
 

@@ -94,16 +94,26 @@ void GlClStaging::addUploads(FrameGraph& graph, const FrameContext& ctx, const R
                 p = cachedPoints_;
                 return;
             }
-            const std::vector<float> position = gbuffer.target->readRGBA(0);
+            static const std::vector<float> kNone;
+            const RenderTarget& target = *gbuffer.target;
+            const size_t texels = static_cast<size_t>(target.width()) * target.height();
+            gbufferPositions_.resize(texels * 4);
+            target.readRGBA(0, gbufferPositions_.data());
+            const std::vector<float>& position = gbufferPositions_;
             // The atlas coordinates, when drawn: the G-buffer's last attachment.
-            const std::vector<float> uv =
-                graph.isRead(ctx.pointUvs)
-                    ? gbuffer.target->readRG(gbuffer.target->colorCount() - 1)
-                    : std::vector<float>();
+            const bool uvs = graph.isRead(ctx.pointUvs);
+            if (uvs) {
+                gbufferUvs_.resize(texels * 2);
+                target.readRG(target.colorCount() - 1, gbufferUvs_.data());
+            }
+            const std::vector<float>& uv = uvs ? gbufferUvs_ : kNone;
             // With an albedo atlas, the normal's w holds each pixel's texel + 1.
             const AlbedoAtlas& albedo = *ctx.albedo;
-            const std::vector<float> normal =
-                albedo.empty() ? std::vector<float>() : gbuffer.target->readRGBA(1);
+            if (!albedo.empty()) {
+                gbufferNormals_.resize(texels * 4);
+                target.readRGBA(1, gbufferNormals_.data());
+            }
+            const std::vector<float>& normal = albedo.empty() ? kNone : gbufferNormals_;
             for (int i = 0; i < ctx.width * ctx.height; ++i)
                 if (position[static_cast<size_t>(i) * 4 + 3] > 0) {
                     p.pixel.push_back(i);
@@ -253,7 +263,8 @@ FrameGraphId<RadiosityImage> GlClStaging::addReadback(FrameGraph& graph,
                                                       const std::vector<FrameContext>& runs,
                                                       const std::vector<FrameContext>& residual) {
     TSIS_CHECK(residual.empty() || residual.size() == runs.size());
-    const FrameGraphId<RadiosityImage> image = graph.create<RadiosityImage>("radiosity");
+    const FrameGraphId<RadiosityImage> image =
+        graph.create<RadiosityImage>("radiosity", RadiosityImage{std::move(spareRadiosity_)});
     graph.addPass(
         "read_radiosity",
         [&](FrameGraph::Builder& b) {

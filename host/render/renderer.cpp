@@ -398,6 +398,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     stats.set("gl_cl_sharing", sharing_.reason);
     recordFrame(stats, opt, scene, graph,
                 copy ? graph.get(radiosity).covered : graph.get(ctx.points).count);
+    if (!copy) staging_.recycle(graph.get(radiosity));
     return result;
 }
 
