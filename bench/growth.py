@@ -125,7 +125,8 @@ def main():
            f"Made by `bench/growth.py` on {time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())};"
            f" {os.cpu_count()} cores, load average {' '.join(load)} at the start."
            f" `tsis animate --orbit --frames {a.frames}`, the default method; lights: the"
-           " default lights; env: `--env data/env/sky.hdr` with them. A cell is the median"
+           " default lights; env: `--env data/env/sky.hdr` alone (its sun and its residual: a"
+           " map given without --light lights the scene by itself). A cell is the median"
            " render ms of the frames after the first.\n"]
     with tempfile.TemporaryDirectory() as tmp:
         levels = [int(x) for x in a.levels.split(",")]
