@@ -12,6 +12,7 @@
 #include "tsis_shared.h"
 #include "util/error.h"
 #include "util/hash.h"
+#include "util/parallel.h"
 #include "util/parse.h"
 
 namespace tsis {
@@ -90,37 +91,40 @@ TransportGrid transportGrid(const PatchTransfer& t, int m) {
     g.patch.assign(g.nodes() * TransportGrid::kTaps, -1);
     g.weight.assign(g.nodes() * TransportGrid::kTaps, 0.0f);
     g.value.assign(g.nodes(), glm::vec3(0.0f));
-    // Gaussian weights of width r over the nearest kTaps centres.
+    // Gaussian weights of width r over the nearest kTaps centres; each node
+    // on its own (a 64³ grid over a few hundred patches: the threads share it).
     const float inv = 1.0f / (r * r);
-    std::vector<std::pair<float, int>> near;
-    for (size_t n = 0; n < g.nodes(); ++n) {
-        const glm::ivec3 q(
-            static_cast<int>(n % static_cast<size_t>(g.dims.x)),
-            static_cast<int>(n / static_cast<size_t>(g.dims.x) % static_cast<size_t>(g.dims.y)),
-            static_cast<int>(n / (static_cast<size_t>(g.dims.x) * g.dims.y)));
-        const glm::vec3 x = g.origin + glm::vec3(q) * g.cell;
-        near.clear();
-        for (int p = first; p < last; ++p) {
-            const glm::vec3 d = x - t.centre[static_cast<size_t>(p)];
-            near.emplace_back(glm::dot(d, d), p);
+    parallelFor(g.nodes(), 2048, [&](size_t begin, size_t end) {
+        std::vector<std::pair<float, int>> near;
+        for (size_t n = begin; n < end; ++n) {
+            const glm::ivec3 q(
+                static_cast<int>(n % static_cast<size_t>(g.dims.x)),
+                static_cast<int>(n / static_cast<size_t>(g.dims.x) % static_cast<size_t>(g.dims.y)),
+                static_cast<int>(n / (static_cast<size_t>(g.dims.x) * g.dims.y)));
+            const glm::vec3 x = g.origin + glm::vec3(q) * g.cell;
+            near.clear();
+            for (int p = first; p < last; ++p) {
+                const glm::vec3 d = x - t.centre[static_cast<size_t>(p)];
+                near.emplace_back(glm::dot(d, d), p);
+            }
+            const size_t k = std::min<size_t>(TransportGrid::kTaps, near.size());
+            std::partial_sort(near.begin(), near.begin() + static_cast<long>(k), near.end());
+            // Relative to the nearest, so far nodes still get their nearest
+            // patches. The node's value is Σ g·ΔE / Σ g·A over its patches
+            // (flux over area, not a mean of densities): a sliver of a patch
+            // with a photon or two on it cannot dominate.
+            const float d0 = near[0].first;
+            float sum = 0;
+            for (size_t j = 0; j < k; ++j)
+                sum += std::exp(-(near[j].first - d0) * inv) *
+                       t.area[static_cast<size_t>(near[j].second)];
+            for (size_t j = 0; j < k; ++j) {
+                g.patch[n * TransportGrid::kTaps + j] = near[j].second;
+                g.weight[n * TransportGrid::kTaps + j] =
+                    sum > 0 ? std::exp(-(near[j].first - d0) * inv) / sum : 0.0f;
+            }
         }
-        const size_t k = std::min<size_t>(TransportGrid::kTaps, near.size());
-        std::partial_sort(near.begin(), near.begin() + static_cast<long>(k), near.end());
-        // Relative to the nearest, so far nodes still get their nearest
-        // patches. The node's value is Σ g·ΔE / Σ g·A over its patches (flux
-        // over area, not a mean of densities): a sliver of a patch with a
-        // photon or two on it cannot dominate.
-        const float d0 = near[0].first;
-        float sum = 0;
-        for (size_t j = 0; j < k; ++j)
-            sum +=
-                std::exp(-(near[j].first - d0) * inv) * t.area[static_cast<size_t>(near[j].second)];
-        for (size_t j = 0; j < k; ++j) {
-            g.patch[n * TransportGrid::kTaps + j] = near[j].second;
-            g.weight[n * TransportGrid::kTaps + j] =
-                sum > 0 ? std::exp(-(near[j].first - d0) * inv) / sum : 0.0f;
-        }
-    }
+    });
     return g;
 }
 
@@ -243,9 +247,28 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
                          start.size() * sizeof(int), start.data());
     q.enqueueWriteBuffer(texels_.reserve(cl_.context(), std::max<size_t>(list.size(), 1) * 4),
                          CL_TRUE, 0, list.size() * sizeof(int), list.data());
+    // The grids follow the patches alone (not the materials): a switch back
+    // and forth between materials finds them made.
     grids_.clear();
-    for (size_t m = 0; m < media; ++m)
-        grids_.push_back(transportGrid(transfer_, static_cast<int>(m)));
+    int made = 0;
+    for (size_t m = 0; m < media; ++m) {
+        const auto first = static_cast<size_t>(transfer_.mediumStart[m]);
+        const auto last = static_cast<size_t>(transfer_.mediumStart[m + 1]);
+        Hasher h;
+        for (size_t p = first; p < last; ++p)
+            h.add(transfer_.centre[p]).add(transfer_.radius[p]).add(transfer_.area[p]);
+        const uint64_t gridKey = h.add(first).add(last).digest();
+        auto cached = std::find_if(gridCache_.begin(), gridCache_.end(),
+                                   [&](const auto& e) { return e.first == gridKey; });
+        if (cached == gridCache_.end()) {
+            if (gridCache_.size() == kCachedGrids) gridCache_.erase(gridCache_.begin());
+            gridCache_.emplace_back(gridKey, transportGrid(transfer_, static_cast<int>(m)));
+            cached = gridCache_.end() - 1;
+            ++made;
+        }
+        grids_.push_back(cached->second);
+    }
+    res.stats().set("transport_grids_made", made);
 }
 
 void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,

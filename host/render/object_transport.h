@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <glm/ext/vector_int3.hpp>
 #include <glm/vec3.hpp>
+#include <utility>
 #include <vector>
 
 #include "render/frame_graph.h"
@@ -72,6 +73,9 @@ class ObjectTransport {
     PatchTransfer transfer_;
     bool fitted_ = false;
     std::vector<TransportGrid> grids_;
+    // Grids made before, by their patches' hash (the last kCachedGrids).
+    static constexpr size_t kCachedGrids = 8;
+    std::vector<std::pair<uint64_t, TransportGrid>> gridCache_;
     std::vector<double> exitancePerB_;  // per medium
     uint64_t geometryOf_ = 0, fitKey_ = 0, fluxOf_ = 0, inputsKey_ = 0;
 };
