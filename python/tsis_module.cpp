@@ -37,9 +37,6 @@ std::string typeName(const py::handle& v) {
     return py::str(py::type::of(v).attr("__name__")).cast<std::string>();
 }
 
-// One keyword argument: str as typed, bool for a flag, a number (numpy's
-// scalars too; an integer written exactly), or a sequence (x,y,z for a
-// vector; each item for the repeatable light).
 // A scalar as typed: a bool "true"/"false", an integer exactly (numpy's
 // too), a float the shortest text that reads back the same, a str as it is;
 // nullopt for anything else.
@@ -58,6 +55,9 @@ std::optional<std::string> scalarText(const py::handle& v) {
     return std::nullopt;
 }
 
+// One keyword argument: str as typed, bool for a flag, a number (numpy's
+// scalars too; an integer written exactly), or a sequence (x,y,z for a
+// vector; each item for the repeatable light).
 void setOption(Options& o, const std::string& name, const py::handle& v) {
     if (const std::optional<std::string> text = scalarText(v)) {
         o.set(name, *text);
@@ -103,11 +103,6 @@ py::object settingValue(const RenderSettings& s, const RenderParameter& p) {
             break;
     }
     return py::str(t);
-}
-
-std::string keywordName(std::string option) {
-    std::replace(option.begin(), option.end(), '-', '_');
-    return option;
 }
 
 // Settings with the render() keywords on top; a keyword that is no render
@@ -416,6 +411,18 @@ auto sceneSetter(void (Scene::*set)(const T&), const char* name) {
 bool onMainThread() {
     const py::module_ threading = py::module_::import("threading");
     return threading.attr("current_thread")().is(threading.attr("main_thread")());
+}
+
+// The keywords that make `s` again: its method and the settings off their
+// defaults (its repr and its pickle).
+py::dict changedSettings(const RenderSettings& s) {
+    py::dict d;
+    d["method"] = s.method;
+    const RenderSettings defaults;
+    for (const RenderParameter& p : RenderSettings::parameters())
+        if (s.get(p.name) != defaults.get(p.name))
+            d[pythonName(p.name).c_str()] = settingValue(s, p);
+    return d;
 }
 
 // A frame with the GIL released. On the main thread Python's signal
@@ -1002,8 +1009,7 @@ PYBIND11_MODULE(_tsis, m) {
             "hierarchical, reference or volumetric");
     for (const RenderParameter& p : RenderSettings::parameters())
         settings.def_property(
-            keywordName(p.name).c_str(),
-            [p](const RenderSettings& s) { return settingValue(s, p); },
+            pythonName(p.name).c_str(), [p](const RenderSettings& s) { return settingValue(s, p); },
             [p](RenderSettings& s, const py::handle& v) { setSetting(s, p.name, v); },
             p.help.c_str());
     settings
@@ -1017,25 +1023,15 @@ PYBIND11_MODULE(_tsis, m) {
              })
         .def("__repr__",
              [](const RenderSettings& s) {
-                 std::string r = "tsis.RenderSettings(method=" + quoted(s.method);
-                 const RenderSettings defaults;
-                 for (const RenderParameter& p : RenderSettings::parameters())
-                     if (s.get(p.name) != defaults.get(p.name))
-                         r += ", " + keywordName(p.name) + "=" +
-                              py::repr(settingValue(s, p)).cast<std::string>();
+                 std::string r = "tsis.RenderSettings(";
+                 for (const auto& [k, v] : changedSettings(s))
+                     r += (r.back() == '(' ? "" : ", ") + k.cast<std::string>() + "=" +
+                          py::repr(v).cast<std::string>();
                  return r + ")";
              })
-        .def(py::pickle(
-            [](const RenderSettings& s) {
-                py::dict d;
-                d["method"] = s.method;
-                const RenderSettings defaults;
-                for (const RenderParameter& p : RenderSettings::parameters())
-                    if (s.get(p.name) != defaults.get(p.name))
-                        d[keywordName(p.name).c_str()] = settingValue(s, p);
-                return d;
-            },
-            [](const py::dict& d) { return settingsWith(RenderSettings(), py::kwargs(d)); }));
+        .def(py::pickle(&changedSettings, [](const py::dict& d) {
+            return settingsWith(RenderSettings(), py::kwargs(d));
+        }));
 
     py::class_<PyFrame>(m, "Frame", "what Renderer.render gives")
         .def_readwrite("image", &PyFrame::image, "tone-mapped sRGB, H×W×3 uint8, row 0 = top")

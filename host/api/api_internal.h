@@ -34,6 +34,10 @@ struct Scene::Impl {
     std::optional<tsis::Scene> withProfile(ProfileModel p) const;
 };
 
+// The options of a command line of known options ({"--size-mm", "20",
+// "--no-specular", …}), each set (and checked) as Options::set does.
+Options optionsOfArgs(const std::vector<std::string>& argv);
+
 inline Vec3 toVec3(const glm::dvec3& v) {
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
 }

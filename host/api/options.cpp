@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "api/api_internal.h"
 #include "description/scene_params.h"
 #include "render/render_params.h"
 #include "util/args.h"
@@ -85,13 +86,17 @@ RenderSettings Options::renderSettings() const {
 Options Options::of(const RenderSettings& settings) {
     validateRenderOptions(settings);
     checkParamsRead(settings);
+    return optionsOfArgs(renderOptionArgs(settings));
+}
+
+Options optionsOfArgs(const std::vector<std::string>& argv) {
     Options o;
-    const std::vector<std::string> argv = renderOptionArgs(settings);
     for (size_t i = 0; i < argv.size();) {
         const std::string name = argv[i].substr(2);
-        const bool takesValue = specOf(name) && specOf(name)->takesValue;
-        o.set(name, takesValue ? argv[i + 1] : "true");
-        i += takesValue ? 2 : 1;
+        const OptionSpec* spec = specOf(name);
+        TSIS_CHECK(spec);
+        o.set(name, spec->takesValue ? argv[i + 1] : "true");
+        i += spec->takesValue ? 2 : 1;
     }
     return o;
 }

@@ -377,15 +377,7 @@ Options Scene::options() const {
         d.env->intensity = impl_->scene.env.intensity;
     if (impl_->environment) d.env.reset();  // pixels: environment() has them
     d.fileLightUnits = false;
-    Options o;
-    const std::vector<std::string> args = descriptionArgs(d);
-    for (size_t i = 0; i < args.size();) {
-        const std::string name = args[i].substr(2);
-        const bool flag = findSceneParam(name) && findSceneParam(name)->flag;
-        o.set(name, flag ? "true" : args[i + 1]);
-        i += flag ? 1 : 2;
-    }
-    return o;
+    return optionsOfArgs(descriptionArgs(d));
 }
 
 const std::vector<std::string>& Scene::notes() const {

@@ -64,8 +64,8 @@ ShCoefficients shBasis(const glm::dvec3& d) {
             0.590043589926644 * x * (x * x - 3 * y * y)};
 }
 
-std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, kEnvShCount>& c,
-                                                   double degrees) {
+std::array<glm::dvec3, kEnvShCount> rotateSh(const std::array<glm::dvec3, kEnvShCount>& c,
+                                             const glm::dmat3& rotation) {
     // Gauss–Legendre nodes and weights on [−1, 1], 6 points (exact to degree
     // 11 in cos θ), and 16 angles in φ (exact for |m| < 16): the products of
     // two band-≤3 harmonics are polynomials of degree ≤ 6.
@@ -74,7 +74,6 @@ std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, 
     static constexpr double kWeight[6] = {0.171324492379170, 0.360761573048139, 0.467913934572691,
                                           0.467913934572691, 0.360761573048139, 0.171324492379170};
     constexpr int kPhi = 16;
-    const double a = degrees * kPi / 180.0, ca = std::cos(a), sa = std::sin(a);
     std::array<glm::dvec3, kEnvShCount> out;
     out.fill(glm::dvec3(0.0));
     for (int i = 0; i < 6; ++i) {
@@ -82,9 +81,7 @@ std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, 
         for (int j = 0; j < kPhi; ++j) {
             const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
             const glm::dvec3 d(r * std::cos(phi), r * std::sin(phi), z);
-            // R d, R as Environment::toWorld: about +y, x → (c, 0, −s).
-            const glm::dvec3 rd(ca * d.x + sa * d.z, d.y, -sa * d.x + ca * d.z);
-            const ShCoefficients yd = shBasis(d), yr = shBasis(rd);
+            const ShCoefficients yd = shBasis(d), yr = shBasis(rotation * d);
             const double w = kWeight[i] * 2.0 * kPi / kPhi;
             // f(R⁻¹ d) = Σ_j c_j Y_j(R⁻¹ d): its k-th coefficient is
             // Σ_j c_j ∫ Y_k(d) Y_j(R⁻¹ d) dd = Σ_j c_j ∫ Y_k(R e) Y_j(e) de.
@@ -270,7 +267,7 @@ glm::dvec3 Environment::radiance(const glm::dvec3& d) const {
 }
 
 std::array<glm::dvec3, kEnvShCount> Environment::worldSh() const {
-    std::array<glm::dvec3, kEnvShCount> c = rotateShAboutY(map->sh, rotateDegrees);
+    std::array<glm::dvec3, kEnvShCount> c = rotateSh(map->sh, toWorld());
     for (glm::dvec3& v : c) v *= intensity;
     return c;
 }

@@ -29,13 +29,12 @@ constexpr int kEnvShBands = 4;
 constexpr int kEnvShCount = kEnvShBands * kEnvShBands;
 using ShCoefficients = std::array<double, kEnvShCount>;
 ShCoefficients shBasis(const glm::dvec3& d);
-// Coefficients c (of a function f) turned about +y by `degrees`: those of
-// f(R⁻¹ d), R the turn (Environment::toWorld's). Each band turns within
-// itself; its matrix M_kj = ∫ Y_k(R d) Y_j(d) dω is summed on a product rule
-// exact for these polynomials (Gauss–Legendre in cos θ, uniform in φ), so
-// turning costs microseconds, not a pass over the map.
-std::array<glm::dvec3, kEnvShCount> rotateShAboutY(const std::array<glm::dvec3, kEnvShCount>& c,
-                                                   double degrees);
+// Coefficients c (of a function f) turned by the rotation R: those of
+// f(R⁻¹ d). Each band turns within itself; its matrix M_kj = ∫ Y_k(R d) Y_j(d) dω
+// is summed on a product rule exact for these polynomials (Gauss–Legendre in
+// cos θ, uniform in φ), so turning costs microseconds, not a pass over the map.
+std::array<glm::dvec3, kEnvShCount> rotateSh(const std::array<glm::dvec3, kEnvShCount>& c,
+                                             const glm::dmat3& rotation);
 
 constexpr int kShMapWidth = 256;
 constexpr float kEnvNegativeTolerance = 1e-3f;
@@ -96,7 +95,7 @@ struct Environment {
     // Residual radiance arriving from world direction d (scaled).
     glm::dvec3 radiance(const glm::dvec3& d) const;
     // The residual's SH coefficients in world frame, scaled: the map's own,
-    // turned (rotateShAboutY).
+    // turned by toWorld() (rotateSh).
     std::array<glm::dvec3, kEnvShCount> worldSh() const;
     // The sun as a directional light (Light::environment set).
     Light sun() const;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/matrix.hpp>
 
 #include "scene/scene.h"
 #include "support/error_of.h"
@@ -81,7 +82,7 @@ TEST(Environment, LargeMapProjectsAsItsAverage) {
 
 // One bright texel on a dim sky: it becomes the sun, with its flux, its
 // direction, turned with the map, and leaves the residual.
-// Turning the coefficients (rotateShAboutY) is projecting the turned map:
+// Turning the coefficients (rotateSh) is projecting the turned map:
 // the same numbers to rounding for a map with all 16 coefficients nonzero,
 // at any angle, and the round trip is the identity.
 TEST(Environment, TurnedCoefficientsAreTheTurnedMapsProjection) {
@@ -103,11 +104,11 @@ TEST(Environment, TurnedCoefficientsAreTheTurnedMapsProjection) {
     for (const double degrees : {0.0, 17.0, 90.0, -135.5, 400.0}) {
         SCOPED_TRACE(degrees);
         env.rotateDegrees = degrees;
-        const auto turned = rotateShAboutY(env.map->sh, degrees);
+        const auto turned = rotateSh(env.map->sh, env.toWorld());
         const auto projected = env.map->project(env.toWorld());
         for (int k = 0; k < kEnvShCount; ++k)
             EXPECT_LT(glm::length(turned[k] - projected[k]), 1e-12 * scale) << k;
-        const auto back = rotateShAboutY(turned, -degrees);
+        const auto back = rotateSh(turned, glm::transpose(env.toWorld()));
         for (int k = 0; k < kEnvShCount; ++k)
             EXPECT_LT(glm::length(back[k] - env.map->sh[k]), 1e-12 * scale) << k;
     }
