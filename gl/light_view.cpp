@@ -5,14 +5,9 @@
 
 namespace tsis {
 
-LightView makeLightView(const Light& light, float radius, int resolution, bool maps, bool normals) {
-    LightView lv;
-    updateLightView(lv, light, radius, resolution, maps, normals);
-    return lv;
-}
+namespace {
 
-void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps,
-                     bool normals) {
+void setProjection(LightView& lv, const Light& light, float radius, int resolution) {
     lv.light = light;
     const LightProjection lp = lightProjection(light, radius, resolution);
     lv.viewProj = lp.viewProj;
@@ -20,12 +15,34 @@ void updateLightView(LightView& lv, const Light& light, float radius, int resolu
     lv.texelAreaMm = lp.texelAreaMm;
     lv.texelMm = lp.texelMm;
     lv.resolution = resolution;
-    const int colours = maps ? (normals ? 3 : 2) : 0;
-    if (colours == 0)
+}
+
+// `lv`'s target as two RGBA32F maps of resolution², made when it has another shape.
+void ensureMaps(LightView& lv, int resolution, bool depth) {
+    if (!lv.target || lv.target->width() != resolution)
+        lv.target = std::make_unique<RenderTarget>(resolution, resolution,
+                                                   std::vector<GLenum>(2, GL_RGBA32F), depth);
+}
+
+}  // namespace
+
+LightView makeLightView(const Light& light, float radius, int resolution, bool maps) {
+    LightView lv;
+    updateLightView(lv, light, radius, resolution, maps);
+    return lv;
+}
+
+void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps) {
+    setProjection(lv, light, radius, resolution);
+    if (maps)
+        ensureMaps(lv, resolution, false);
+    else
         lv.target.reset();
-    else if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != colours)
-        lv.target = std::make_unique<RenderTarget>(
-            resolution, resolution, std::vector<GLenum>(size_t(colours), GL_RGBA32F), false);
+}
+
+void updateScatterView(LightView& lv, const Light& light, float radius, int resolution) {
+    setProjection(lv, light, radius, resolution);
+    ensureMaps(lv, resolution, true);
 }
 
 ShadowMapArray::~ShadowMapArray() {

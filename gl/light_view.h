@@ -19,8 +19,9 @@ struct LightView {
     float texelAreaMm = 0;  // directional: area of one texel (mm²)
     float texelMm = 0;      // a texel's size at the object centre (shadow offsets)
     int resolution = 0;     // texels a side
-    // With maps: flux, position (, normal); no depth of its own, the shadow
-    // map is drawn into the light's layer of ShadowMapArray. Null without.
+    // With maps: flux and position; no depth of its own, the shadow map is
+    // drawn into the light's layer of ShadowMapArray. Null without. A
+    // scatter view's (updateScatterView): position and normal, with depth.
     std::unique_ptr<RenderTarget> target;
 };
 
@@ -28,14 +29,15 @@ struct LightView {
 // maps: a target of the flux and position maps (the light-view methods read
 // them); without, none (depth only). Throws tsis::Error for a
 // point light inside that sphere or a zero direction.
-// normals: with maps, a third map of the surface normal (w = the medium tag),
-// for the single-scattering term (render/single_scatter.h).
-LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true,
-                        bool normals = false);
+LightView makeLightView(const Light& light, float boundingRadius, int resolution, bool maps = true);
 // The same in place: `view` for `light`, its target kept when it has the size
 // and the maps asked for (a light that moved needs no new target).
 void updateLightView(LightView& view, const Light& light, float boundingRadius, int resolution,
-                     bool maps, bool normals = false);
+                     bool maps);
+// The single-scattering term's view of `light` (render/single_scatter.h):
+// the same projection at a resolution of its own, into a target of its own
+// with the surface's position and normal (w = the medium tag) and a depth.
+void updateScatterView(LightView& view, const Light& light, float boundingRadius, int resolution);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
 // form the shaders sample; the light views draw into their layers.

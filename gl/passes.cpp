@@ -156,6 +156,43 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
     return theirs.size();
 }
 
+ScatterViewPass::ScatterViewPass() : program_("mesh.vert", "scatter_view.frag") {}
+
+void ScatterViewPass::draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,
+                           const ShaderProgram& program, GLuint framebuffer,
+                           GLuint vertexArray) const {
+    view.target->bindAndClear(framebuffer);
+    program.use();
+    media.bind(program, kMediaUnit, kShadingNormalUnit);
+    program.set("u_viewProj", view.viewProj);
+    drawDepthTested(mesh, mesh.closedOutward(), vertexArray);
+}
+
+void ScatterViewPass::run(const GpuMesh& mesh, const std::vector<LightView>& views,
+                          const MaterialTables& media, const std::vector<size_t>& changed) {
+    // Every other view on the worker: llvmpipe sets up each thread's
+    // triangles alone, and these small views are all set-up.
+    std::vector<size_t> mine, theirs;
+    GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(mesh.closedOutward()));
+    for (size_t k = 0; k < changed.size(); ++k)
+        (worker && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
+    if (!theirs.empty())
+        worker->start([this, &mesh, &views, &media, theirs] {
+            for (size_t i : theirs)
+                draw(mesh, views[i], media, side_.program(), side_.framebuffer(),
+                     side_.vertexArray());
+            checkGl("ScatterViewPass (worker)");
+        });
+    try {
+        for (size_t i : mine) draw(mesh, views[i], media, program_, 0, 0);
+    } catch (...) {
+        if (!theirs.empty()) worker->wait();  // it reads `views`
+        throw;
+    }
+    if (!theirs.empty()) worker->wait();
+    checkGl("ScatterViewPass");
+}
+
 GeometryAtlasPass::GeometryAtlasPass() : program_("atlas.vert", "atlas.frag") {}
 
 void GeometryAtlasPass::run(const GpuMesh& mesh, int resolution) {

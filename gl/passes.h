@@ -58,6 +58,28 @@ class LightViewPass {
     WorkerSide side_{"mesh.vert", "depth.frag"};
 };
 
+// Pass B′, for the single-scattering term (render/single_scatter.h): per
+// light the surface it sees, position and normal, into the view's own
+// target (updateScatterView), at a resolution of its own.
+class ScatterViewPass {
+  public:
+    ScatterViewPass();
+    // As LightViewPass's: every other view on `worker`'s thread.
+    void setWorker(GlWorker* worker, size_t minTriangles = kWorkerMinTriangles) {
+        side_.setWorker(worker, minTriangles);
+    }
+    // Draws views[i] for each i in `changed`.
+    void run(const GpuMesh& mesh, const std::vector<LightView>& views, const MaterialTables& media,
+             const std::vector<size_t>& changed);
+
+  private:
+    void draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,
+              const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray) const;
+
+    ShaderProgram program_;
+    WorkerSide side_{"mesh.vert", "scatter_view.frag"};
+};
+
 // Pass A, part 1 (once per mesh and resolution): the geometry atlas —
 // position (w = coverage) and normal (w = the texel's surface area, mm²).
 class GeometryAtlasPass {

@@ -71,15 +71,18 @@ static inline float3 tsis_scatter_stratum(const float3 sigma_t, const float a, c
     return sum;
 }
 
+/* At the `count` points order[] names (the rest interpolated after:
+ * render/sparse_pixels.h). */
 kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
-                                const int count, const float4 eye,
+                                const __global int* order, const int count, const float4 eye,
                                 const __global TsisScatterMedium* media, const int media_count,
                                 const TsisLightMapInfo map, const TsisScatterLight light,
                                 const __global float4* position,
                                 const __global float4* light_normal, const int strata,
                                 const int accumulate, __global float4* out) {
-    const int j = get_global_id(0);
-    if (j >= count) return;
+    const int i = get_global_id(0);
+    if (i >= count) return;
+    const int j = order[i];
     const float4 base = accumulate ? out[j] : (float4)(0.0f);
     const float tag = points[j].w;
     const int m = (int)(tag + 0.5f) - 1;

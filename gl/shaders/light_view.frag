@@ -1,6 +1,6 @@
 // The light's view: depth (the shadow map) plus the flux that lands in each
-// texel (docs/design.md §2), the surface position and its normal, for the light-view
-// methods and the single-scattering term (render/single_scatter.h).
+// texel (docs/design.md §2) and the surface position, for the light-view
+// methods.
 // Point light: flux = I · Ft · dω(texel) — the cosine and 1/d² cancel against
 // the area the texel's solid angle covers. Directional: flux = I · Ft · texel area.
 in vec3 v_position;
@@ -13,7 +13,6 @@ uniform float u_texelAreaMm; // directional: texel area (mm²)
 uniform vec2 u_resolution;
 layout(location = 0) out vec4 o_flux;
 layout(location = 1) out vec4 o_position;
-layout(location = 2) out vec4 o_normal;
 
 void main() {
     vec3 n = shadingNormal(normalize(v_normal), v_uv);
@@ -29,5 +28,4 @@ void main() {
     vec3 flux = c > 0.0 ? u_lightRgb[u_light] * (fresnelT(mediumOf(v_medium).r, c) * measure) : vec3(0.0);
     o_flux = vec4(flux * albedoFactor(v_uv), v_medium);
     o_position = vec4(v_position, length(u_lightVec[u_light] - v_position));
-    o_normal = vec4(n, v_medium);  // w as the flux's: single scattering reads only this
 }

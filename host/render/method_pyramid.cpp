@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include "render/sparse_pixels.h"
 #include "render/surface_points.h"
@@ -13,22 +11,6 @@
 namespace tsis {
 
 PyramidMethod::PyramidMethod(ClRuntime& cl) : cl_(cl), tree_(cl), interpolation_(cl), atlas_(cl) {}
-
-namespace {
-
-// A pixel's size at the target's distance (mm).
-double pixelMm(const Camera& camera, int height) {
-    return 2.0 * std::tan(glm::radians(double(camera.fovYDegrees)) / 2) *
-           glm::length(camera.eye - camera.target) / height;
-}
-
-}  // namespace
-
-int PyramidMethod::strideFor(double cellMm, double ell) {
-    int stride = 1;
-    while (stride < kMaxAutoStride && 2 * stride * cellMm <= kGridSpacing * ell) stride *= 2;
-    return stride;
-}
 
 void PyramidMethod::addPasses(FrameGraph& graph, const FrameContext& ctx) {
     const auto tree = graph.create<Marker>("flux_tree");
@@ -142,14 +124,6 @@ const AtlasRadiosity* PyramidMethod::atlasRadiosity(const FrameContext& ctx) {
     return &host_;
 }
 
-PyramidMethod::Grid PyramidMethod::gridFor(double cellMm, double ell, int stride) {
-    if (stride <= 0) stride = strideFor(cellMm, ell);
-    // Corners farther than twice a frontal cell's diagonal: a grazing or broken
-    // surface, where B changes faster across the cell than the grid assumes.
-    const double cellDiagonal = std::sqrt(2.0) * stride * cellMm;
-    return {stride, static_cast<float>(std::min(kMaxCornerDistance * ell, 2 * cellDiagonal))};
-}
-
 double PyramidMethod::gatherTree(const cl::Buffer& points, const cl::Buffer& order, int count,
                                  float epsilon, double ell, cl::Buffer& out) {
     tree_.gather(points, order, count, epsilon, static_cast<float>(ell), rd_.device(cl_.context()),
@@ -163,7 +137,7 @@ double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoint
     const uint64_t pointsKey =
         Hasher().addAll(points.pixel).addAll(points.host).add(ctx.width).add(ctx.height).digest();
     const auto [stride, maxCornerMm] =
-        gridFor(pixelMm(ctx.scene->camera, ctx.height), ell, o.pyramidStride);
+        sparseGridFor(pixelMm(ctx.scene->camera, ctx.height), ell, o.pyramidStride);
     // The plan follows the points (the camera's G-buffer), not the lights: a
     // frame that moves only a light keeps it, and its buffers on the device
     // (planning is ~1.3 ms of host time at 512², the device idle meanwhile).
@@ -200,11 +174,11 @@ double PyramidMethod::gatherFromAtlas(const FrameContext& ctx, const SurfacePoin
     const RenderOptions& o = *ctx.options;
     // The grid over the atlas by the same rule as the pixels', the texel's
     // side for the pixel's.
-    const auto [stride, maxCornerMm] = gridFor(texelMm_, ell, o.pyramidStride);
+    const auto [stride, maxCornerMm] = sparseGridFor(texelMm_, ell, o.pyramidStride);
     // A texel more than a few texels' sides away in space is another surface
     // packed beside the point's chart.
     const auto maxMm =
-        static_cast<float>(std::min(kMaxCornerDistance * ell, kLookupTexels * texelMm_));
+        static_cast<float>(std::min(kSparseMaxCornerEll * ell, kLookupTexels * texelMm_));
     const uint64_t planKey = Hasher()
                                  .add(leavesVersion_)
                                  .add(ctx.atlasResolution)

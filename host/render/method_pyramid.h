@@ -41,13 +41,6 @@ class PyramidMethod : public Method {
     // gathers at its pixels), never with off.
     const AtlasRadiosity* atlasRadiosity(const FrameContext& ctx) override;
 
-    // The default grid stride for a cell (pixel or texel) of this side, mm,
-    // and the mean free path ℓ.
-    static int strideFor(double cellMm, double ell);
-    static constexpr int kMaxAutoStride = 4;
-    static constexpr double kGridSpacing = 0.25;  // grid spacing ≤ kGridSpacing·ℓ
-    // Corners within this·ℓ in 3D and within 2 frontal cell diagonals.
-    static constexpr double kMaxCornerDistance = 0.5;
     // B over the atlas: a point reads texels within this many texel sides.
     static constexpr double kLookupTexels = 4;
 
@@ -57,13 +50,6 @@ class PyramidMethod : public Method {
                  const AtlasCl& normal, FrameStats& stats);
     double gather(const FrameContext& ctx, const SurfacePoints& points, cl::Buffer& radiosity,
                   FrameStats& stats);
-    // The sparse grid over cells (pixels or texels) of side cellMm: its
-    // stride (`stride`, or by ℓ when ≤ 0) and how far a cell's corners may be.
-    struct Grid {
-        int stride;
-        float maxCornerMm;
-    };
-    static Grid gridFor(double cellMm, double ell, int stride);
     // B at the `count` points order[] names (FluxTree::gather with this
     // frame's table), to out; its device ms.
     double gatherTree(const cl::Buffer& points, const cl::Buffer& order, int count, float epsilon,

@@ -10,6 +10,7 @@
 #include "physics/ggx.h"
 #include "render/env_reflection.h"
 #include "render/frame_keys.h"
+#include "render/single_scatter.h"
 #include "tsis_shared.h"
 #include "util/hash.h"
 #include "util/timer.h"
@@ -74,6 +75,7 @@ bool cullsBackFaces(const FrameContext& ctx, const GpuMesh& mesh) {
 
 void RasterPasses::setGlWorker(GlWorker* worker) {
     lightPass_.setWorker(worker);
+    scatterPass_.setWorker(worker);
     // The samples' G-buffer (aa × the size) goes to the worker for any mesh:
     // it then overlaps the frame's G-buffer and the CL work of a camera move
     // (default scene 28.4 -> 27.3 ms, 5 rounds interleaved; cow -0.3), where
@@ -163,10 +165,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             b.write(h.lights);
         },
         [this, &graph, &ctx, lighting, lightMapsCl, eta, h](FrameGraph::Resources& res) {
-            // Flux and position maps only when a light-view method reads them;
-            // normals only for the single-scattering term.
+            // Flux and position maps only when a light-view method reads them.
             const bool maps = graph.isRead(lightMapsCl);
-            const bool normals = maps && addsSingleScatter(*ctx.options);
             // Each view is redrawn only when its own key changed: a frame that
             // moves one light of several redraws that one.
             const std::vector<Light>& lights = ctx.scene->lights;
@@ -174,7 +174,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             const int lod = ctx.options->lightLodTriangles;
             const GpuMesh* depth = maps ? nullptr : depthMesh(ctx.scene->mesh, lod, res.stats());
             const uint64_t shading =
-                Hasher(eta).add(ctx.albedo->key).add(ctx.normals->key).add(normals).digest();
+                Hasher(eta).add(ctx.albedo->key).add(ctx.normals->key).digest();
             lights_.resize(lights.size());
             viewKeys_.resize(lights.size(), 0);
             std::vector<size_t> changed;
@@ -183,7 +183,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading, lod);
                 if (key == viewKeys_[i]) continue;
                 updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
-                                maps, normals);
+                                maps);
                 viewKeys_[i] = key;
                 changed.push_back(i);
             }
@@ -200,6 +200,38 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                             (depth ? depth : res.read(h.mesh))->closedOutward() ? 1.0 : 0.0);
             res.write(h.lights) = {&lights_, &lightPass_.shadows(), lightsVersion_};
         });
+    if (addsSingleScatter(*ctx.options)) {
+        h.scatterViews = graph.create<GlLights>("scatter_views");
+        graph.addPass(
+            "gl_scatter_views",
+            [&](FrameGraph::Builder& b) {
+                b.read(h.mesh);
+                b.write(h.scatterViews);
+            },
+            [this, &ctx, h](FrameGraph::Resources& res) {
+                // As the light views: each redrawn when its own key changed.
+                const std::vector<Light>& lights = ctx.scene->lights;
+                const int resolution = scatterViewResolution(ctx);
+                scatterViews_.resize(lights.size());
+                scatterKeys_.resize(lights.size(), 0);
+                std::vector<size_t> changed;
+                for (size_t i = 0; i < lights.size(); ++i) {
+                    const uint64_t key =
+                        lightViewKey(lights[i], meshHash_, resolution, true, ctx.normals->key, 0);
+                    if (key == scatterKeys_[i]) continue;
+                    updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius, resolution);
+                    scatterKeys_[i] = key;
+                    changed.push_back(i);
+                }
+                if (!changed.empty()) {
+                    scatterPass_.run(*res.read(h.mesh), scatterViews_, materials_, changed);
+                    glFinish();
+                    ++scatterVersion_;
+                }
+                res.stats().set("scatter_view_resolution", resolution);
+                res.write(h.scatterViews) = {&scatterViews_, nullptr, scatterVersion_};
+            });
+    }
     // The geometry atlas depends on the mesh and resolution only: made once.
     graph.addPass(
         "gl_geometry_atlas",

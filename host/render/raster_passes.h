@@ -42,6 +42,9 @@ struct FrameImage {
 struct RasterHandles {
     FrameGraphId<const GpuMesh*> mesh;
     FrameGraphId<GlLights> lights;
+    // The single-scattering term's views (gl/light_view.h
+    // updateScatterView); none without --single-scatter.
+    FrameGraphId<GlLights> scatterViews;
     FrameGraphId<GlTarget> geometryAtlas, fluxAtlas, gbuffer;
     // The flux atlas of the environment's residual alone (none without --env).
     FrameGraphId<GlTarget> residualFluxAtlas;
@@ -86,6 +89,7 @@ class RasterPasses {
     void invalidateLighting() {
         lightViewKey_ = fluxKey_ = residualKey_ = envTextureKey_ = 0;
         viewKeys_.clear();
+        scatterKeys_.clear();
     }
 
   private:
@@ -112,6 +116,7 @@ class RasterPasses {
     static constexpr int kBackgroundMapWidth = 4096;
 
     LightViewPass lightPass_;
+    ScatterViewPass scatterPass_;
     GeometryAtlasPass geometryAtlasPass_;
     FluxAtlasPass fluxAtlasPass_, residualFluxPass_;
     GBufferPass gbufferPass_, sampleGbufferPass_{false};
@@ -134,6 +139,9 @@ class RasterPasses {
     size_t lodTriangles_ = 0;
     std::vector<LightView> lights_;
     std::vector<uint64_t> viewKeys_;  // per light view: what it was drawn for (frame_keys.h)
+    std::vector<LightView> scatterViews_;
+    std::vector<uint64_t> scatterKeys_;
+    uint64_t scatterVersion_ = 0;
     // What the targets hold: lighting keys (0 = nothing) and versions.
     uint64_t lightViewKey_ = 0, fluxKey_ = 0, residualKey_ = 0;
     std::pair<uint64_t, int> geometryKey_{0, 0};  // (mesh hash, resolution)

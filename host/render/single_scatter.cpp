@@ -8,6 +8,7 @@
 #include "physics/fresnel.h"
 #include "render/light_map_info.h"
 #include "util/error.h"
+#include "util/hash.h"
 
 namespace tsis {
 
@@ -21,6 +22,30 @@ TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit) {
             static_cast<float>(st.y),
             static_cast<float>(st.z),
             static_cast<float>(M_PI / exitScale(exit, m.eta))};
+}
+
+namespace {
+
+// The media's smallest mean free path 1/max σt′ (mm).
+double smallestMeanFreePath(const FrameContext& ctx) {
+    double sigma = 0;
+    const SceneMedia& sm = *ctx.media;
+    for (size_t m = 0; m < sm.etaOfMedium.size(); ++m) {
+        const Material& mat = ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]]);
+        const glm::dvec3 st = mat.sigmaSPrime + mat.sigmaA;
+        sigma = std::max({sigma, st.x, st.y, st.z});
+    }
+    return 1.0 / sigma;
+}
+
+}  // namespace
+
+int scatterViewResolution(const FrameContext& ctx) {
+    const double texels =
+        std::ceil(2.0 * ctx.boundingRadius / smallestMeanFreePath(ctx) * kScatterTexelsPerMfp);
+    return static_cast<int>(std::clamp(texels,
+                                       double(std::min(kScatterMinResolution, ctx.lightResolution)),
+                                       double(ctx.lightResolution)));
 }
 
 namespace {
@@ -120,7 +145,7 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
 }
 
 SingleScatter::SingleScatter(ClRuntime& cl)
-    : cl_(cl), kernel_(cl.kernel("single_scatter.cl", "tsis_single_scatter")) {}
+    : cl_(cl), kernel_(cl.kernel("single_scatter.cl", "tsis_single_scatter")), interpolation_(cl) {}
 
 void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl,
                             FrameGraphId<RadiosityImage> radiosity) {
@@ -128,16 +153,14 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
         "single_scatter",
         [&](FrameGraph::Builder& b) {
             b.read(ctx.points);
-            b.read(ctx.lightMaps);
             b.read(gl.gbuffer);
-            b.read(gl.lights);
+            b.read(gl.scatterViews);
             b.read(radiosity);
             b.write(radiosity);
         },
         [this, &ctx, gl, radiosity](FrameGraph::Resources& res) {
             const SurfacePoints& points = res.read(ctx.points);
-            const LightMapsCl& maps = res.read(ctx.lightMaps);
-            const GlLights& lights = res.read(gl.lights);
+            const GlLights& scatter = res.read(gl.scatterViews);
             const GlTarget& gbuffer = res.read(gl.gbuffer);
             std::vector<float>& rgba = res.write(radiosity).rgba;
             const size_t count = static_cast<size_t>(points.count);
@@ -153,19 +176,44 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                                          count * 16, normals.data());
                 normalsOf_ = gbuffer.version;
             }
-            // The light views' normals, with the views.
-            const std::vector<LightView>& views = *lights.views;
-            TSIS_CHECK_EQ(maps.position.size(), views.size());
-            if (lights.version != lightNormalsOf_ || lightNormals_.size() != views.size()) {
-                lightNormals_.resize(views.size());
-                for (size_t l = 0; l < views.size(); ++l) {
-                    const std::vector<float> n = views[l].target->readRGBA(2);
-                    queue.enqueueWriteBuffer(
-                        lightNormals_[l].reserve(cl_.context(), n.size() * sizeof(float)), CL_TRUE,
-                        0, n.size() * sizeof(float), n.data());
-                }
-                lightNormalsOf_ = lights.version;
+            // The scatter views' positions and normals, with the views.
+            const std::vector<LightView>& views = *scatter.views;
+            if (scatter.version != viewsOf_ || viewNormals_.size() != views.size()) {
+                viewPositions_.resize(views.size());
+                viewNormals_.resize(views.size());
+                for (size_t l = 0; l < views.size(); ++l)
+                    for (int i = 0; i < 2; ++i) {
+                        const std::vector<float> map = views[l].target->readRGBA(i);
+                        const size_t bytes = map.size() * sizeof(float);
+                        GrowingBuffer& to = (i == 0 ? viewPositions_ : viewNormals_)[l];
+                        queue.enqueueWriteBuffer(to.reserve(cl_.context(), bytes), CL_TRUE, 0,
+                                                 bytes, map.data());
+                    }
+                viewsOf_ = scatter.version;
             }
+            // The points evaluated, the rest interpolated: a plan per view of
+            // the surface (the points), as the pyramid's.
+            const SparseGrid grid = sparseGridFor(pixelMm(ctx.scene->camera, ctx.height),
+                                                  kScatterGridMfp * smallestMeanFreePath(ctx), 0);
+            const uint64_t planKey = Hasher()
+                                         .addAll(points.pixel)
+                                         .addAll(points.host)
+                                         .add(ctx.width)
+                                         .add(ctx.height)
+                                         .add(grid.stride)
+                                         .add(grid.maxCornerMm)
+                                         .digest();
+            if (planKey != planKey_) {
+                plan_ = planSparsePixels(points.pixel, points.host, ctx.width, ctx.height,
+                                         grid.stride, grid.maxCornerMm);
+                const size_t bytes = std::max<size_t>(plan_.evaluate.size(), 1) * sizeof(int);
+                queue.enqueueWriteBuffer(order_.reserve(cl_.context(), bytes), CL_TRUE, 0,
+                                         plan_.evaluate.size() * sizeof(int),
+                                         plan_.evaluate.data());
+                interpolation_.upload(plan_);
+                planKey_ = planKey;
+            }
+            const int evaluated = static_cast<int>(plan_.evaluate.size());
             // Each medium's coefficients (tag − 1 indexes them).
             const SceneMedia& sm = *ctx.media;
             std::vector<TsisScatterMedium> media;
@@ -182,12 +230,14 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 const TsisScatterLight sl = {
                     light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
                     light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
-                setKernelArgs(kernel_, points.xyz, normals_.buffer, points.count, eye, mediaBuffer,
-                              static_cast<int>(media.size()),
-                              lightMapInfo(views[l], ctx.lightResolution), sl, maps.position[l],
-                              lightNormals_[l].buffer, kSingleScatterStrata, l > 0 ? 1 : 0, out);
-                enqueue1D(queue, kernel_, count, kLocalSize, nullptr);
+                setKernelArgs(kernel_, points.xyz, normals_.buffer, order_.buffer, evaluated, eye,
+                              mediaBuffer, static_cast<int>(media.size()),
+                              lightMapInfo(views[l], views[l].resolution), sl,
+                              viewPositions_[l].buffer, viewNormals_[l].buffer,
+                              kSingleScatterStrata, l > 0 ? 1 : 0, out);
+                enqueue1D(queue, kernel_, static_cast<size_t>(evaluated), kLocalSize, nullptr);
             }
+            interpolation_.run(out);
             std::vector<float> b1(count * 4);
             queue.enqueueReadBuffer(out, CL_TRUE, 0, count * 16, b1.data());
             for (size_t k = 0; k < count; ++k)
@@ -195,6 +245,8 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                     rgba[static_cast<size_t>(points.pixel[k]) * 4 + static_cast<size_t>(c)] +=
                         b1[k * 4 + static_cast<size_t>(c)];
             res.stats().set("single_scatter_strata", kSingleScatterStrata);
+            res.stats().set("single_scatter_stride", grid.stride);
+            res.stats().set("single_scatter_evaluated", evaluated);
         });
 }
 

@@ -1,7 +1,10 @@
 #include "render/sparse_pixels.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "cl/flux_tree.h"
@@ -9,6 +12,24 @@
 #include "util/error.h"
 
 namespace tsis {
+
+SparseGrid sparseGridFor(double cellMm, double ell, int stride) {
+    if (stride <= 0) {
+        stride = 1;
+        while (stride < kSparseMaxAutoStride && 2 * stride * cellMm <= kSparseGridSpacing * ell)
+            stride *= 2;
+    }
+    // Corners farther than twice a frontal cell's diagonal: a grazing or broken
+    // surface, where B changes faster across the cell than the grid assumes.
+    const double cellDiagonal = std::sqrt(2.0) * stride * cellMm;
+    return {stride, static_cast<float>(std::min(kSparseMaxCornerEll * ell, 2 * cellDiagonal))};
+}
+
+double pixelMm(const Camera& camera, int height) {
+    return 2.0 * std::tan(glm::radians(double(camera.fovYDegrees)) / 2) *
+           glm::length(camera.eye - camera.target) / height;
+}
+
 namespace {
 
 constexpr float kFlatness = 0.1f;  // of maxCornerMm

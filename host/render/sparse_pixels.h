@@ -14,9 +14,28 @@
 
 #include "cl/cl_runtime.h"
 #include "render/frame_resources.h"
+#include "scene/scene.h"
 #include "tsis_shared.h"
 
 namespace tsis {
+
+// The default grid: spacing ≤ kSparseGridSpacing·ℓ, at most kSparseMaxAutoStride.
+constexpr int kSparseMaxAutoStride = 4;
+constexpr double kSparseGridSpacing = 0.25;
+// Corners within this·ℓ in 3D and within 2 frontal cell diagonals.
+constexpr double kSparseMaxCornerEll = 0.5;
+
+// The grid over cells (pixels or texels) of side cellMm: its stride
+// (`stride`, or by the mean free path ℓ when ≤ 0) and how far a cell's
+// corners may be (planSparsePixels' maxCornerMm).
+struct SparseGrid {
+    int stride;
+    float maxCornerMm;
+};
+SparseGrid sparseGridFor(double cellMm, double ell, int stride);
+
+// A pixel's side at the camera target's distance (mm).
+double pixelMm(const Camera& camera, int height);
 
 struct SparsePixels {
     // Indices into the packed covered points to evaluate, grouped so runs of
