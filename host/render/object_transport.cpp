@@ -1,6 +1,7 @@
 #include "render/object_transport.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <glm/geometric.hpp>
@@ -14,6 +15,7 @@
 #include "util/hash.h"
 #include "util/parallel.h"
 #include "util/parse.h"
+#include "util/progress.h"
 
 namespace tsis {
 
@@ -160,7 +162,7 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
 ObjectTransport::ObjectTransport(ClRuntime& cl)
     : cl_(cl), kernel_(cl.kernel("patch_flux.cl", "tsis_patch_flux")) {}
 
-void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
+bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
                           const AtlasCl& position, const AtlasCl& normal,
                           FrameGraph::Resources& res) {
     const SceneMedia& sm = *ctx.media;
@@ -195,43 +197,70 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
                                   .add(meshHash(ctx.scene->mesh))
                                   .add(ctx.atlasResolution)
                                   .digest();
-    if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return;
-
-    const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
-    std::vector<float> pos(texels * 4), nrm(texels * 4);
-    cl::CommandQueue& q = cl_.queue();
-    q.enqueueReadBuffer(position.buffer, CL_TRUE, 0, texels * 16, pos.data());
-    q.enqueueReadBuffer(normal.buffer, CL_TRUE, 0, texels * 16, nrm.data());
-    SurfaceTexels tx;
-    for (size_t i = 0; i < texels; ++i) {
-        const float tag = pos[i * 4 + 3], area = nrm[i * 4 + 3];
-        if (!(tag > 0) || !(area > 0)) continue;
-        tx.position.emplace_back(pos[i * 4], pos[i * 4 + 1], pos[i * 4 + 2]);
-        glm::vec3 n(nrm[i * 4], nrm[i * 4 + 1], nrm[i * 4 + 2]);
-        const float len = glm::length(n);
-        tx.normal.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
-        tx.area.push_back(area);
-        tx.medium.push_back(
-            std::clamp(static_cast<int>(std::lround(tag)) - 1, 0, static_cast<int>(media) - 1));
-        tx.texel.push_back(static_cast<int>(i));
+    if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return true;
+    // No correction of other inputs while this frame's is made.
+    fitted_ = false;
+    grids_.clear();
+    std::shared_ptr<FitRequest> request = waiting_;
+    if (!request || request->geometry != geometry || request->inputs != inputs.digest()) {
+        const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
+        std::vector<float> pos(texels * 4), nrm(texels * 4);
+        cl::CommandQueue& q = cl_.queue();
+        q.enqueueReadBuffer(position.buffer, CL_TRUE, 0, texels * 16, pos.data());
+        q.enqueueReadBuffer(normal.buffer, CL_TRUE, 0, texels * 16, nrm.data());
+        SurfaceTexels tx;
+        for (size_t i = 0; i < texels; ++i) {
+            const float tag = pos[i * 4 + 3], area = nrm[i * 4 + 3];
+            if (!(tag > 0) || !(area > 0)) continue;
+            tx.position.emplace_back(pos[i * 4], pos[i * 4 + 1], pos[i * 4 + 2]);
+            glm::vec3 n(nrm[i * 4], nrm[i * 4 + 1], nrm[i * 4 + 2]);
+            const float len = glm::length(n);
+            tx.normal.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
+            tx.area.push_back(area);
+            tx.medium.push_back(
+                std::clamp(static_cast<int>(std::lround(tag)) - 1, 0, static_cast<int>(media) - 1));
+            tx.texel.push_back(static_cast<int>(i));
+        }
+        const double rMax = ctx.maxDistance();
+        for (size_t m = 0; m < media; ++m) {
+            const KeyedProfile& p = slotProfiles[sm.slotOfMedium[m]];
+            const double k = exitancePerB_[m];
+            mediaIn[m].exitance = ProfileTable::build([&](double r) { return p.f(r) * k; }, rMax);
+        }
+        const uint64_t key =
+            Hasher(inputs.digest()).addAll(tx.position).addAll(tx.normal).addAll(tx.area).digest();
+        request = std::make_shared<FitRequest>();
+        *request = {key, geometry, inputs.digest(), std::move(tx), std::move(mediaIn),
+                    opt, nullptr};
     }
-    const double rMax = ctx.maxDistance();
-    for (size_t m = 0; m < media; ++m) {
-        const KeyedProfile& p = slotProfiles[sm.slotOfMedium[m]];
-        const double k = exitancePerB_[m];
-        mediaIn[m].exitance = ProfileTable::build([&](double r) { return p.f(r) * k; }, rMax);
-    }
-    const uint64_t key =
-        Hasher(inputs.digest()).addAll(tx.position).addAll(tx.normal).addAll(tx.area).digest();
     bool loaded = false;
-    transfer_ = cachedPatchTransfer(ctx.scene->mesh, tx, mediaIn, opt, key, &loaded);
+    if (background_) {
+        std::optional<PatchTransfer> t = fitInBackground(request, ctx.scene->mesh, loaded);
+        if (!t) {
+            waiting_ = request;
+            res.stats().set("transport_pending", 1.0);
+            return false;
+        }
+        transfer_ = std::move(*t);
+    } else {
+        transfer_ = cachedPatchTransfer(ctx.scene->mesh, request->texels, request->media,
+                                        request->options, request->key, &loaded);
+    }
+    waiting_.reset();
     res.stats().set("transport_fit_s", transfer_.seconds);
     res.stats().set("transport_loaded", loaded ? 1.0 : 0.0);
     fitted_ = true;
     geometryOf_ = geometry;
     inputsKey_ = inputs.digest();
     fluxOf_ = 0;
+    install(*request, res);
+    return true;
+}
 
+void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& res) {
+    const SurfaceTexels& tx = request.texels;
+    const size_t media = request.media.size();
+    cl::CommandQueue& q = cl_.queue();
     // The patches' texels for the device's sums (CSR by patch).
     const auto patches = static_cast<size_t>(transfer_.patches());
     grids_.clear();
@@ -271,6 +300,56 @@ void ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     res.stats().set("transport_grids_made", made);
 }
 
+bool ObjectTransport::backgroundFitReady() const {
+    return running_.valid() &&
+           running_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+void ObjectTransport::collectBackgroundFit() {
+    if (!backgroundFitReady()) return;
+    const uint64_t key = runningKey_;
+    made_.emplace(key, running_.get());  // a fit's error is this frame's
+    if (queued_) {
+        std::shared_ptr<FitRequest> next = std::move(queued_);
+        queued_.reset();
+        if (next->key != key) startBackgroundFit(std::move(next));
+    }
+}
+
+void ObjectTransport::startBackgroundFit(std::shared_ptr<FitRequest> request) {
+    if (running_.valid()) {
+        if (runningKey_ != request->key) queued_ = std::move(request);
+        return;
+    }
+    runningKey_ = request->key;
+    // The fit reports to this thread's observer (the viewer's panel).
+    running_ = std::async(std::launch::async, [request, observer = currentProgressObserver()] {
+        ScopedProgressObserver scoped(observer);
+        PatchTransfer t = fitPatchTransfer(*request->mesh, request->texels, request->media,
+                                           request->options, request->key);
+        storePatchTransfer(t, request->key);
+        return t;
+    });
+}
+
+std::optional<PatchTransfer> ObjectTransport::fitInBackground(
+    const std::shared_ptr<FitRequest>& request, const Mesh& mesh, bool& loaded) {
+    collectBackgroundFit();
+    loaded = false;
+    if (made_ && made_->first == request->key) {
+        PatchTransfer t = std::move(made_->second);
+        made_.reset();
+        return t;
+    }
+    if (std::optional<PatchTransfer> t = loadPatchTransfer(request->key, request->texels.size())) {
+        loaded = true;
+        return t;
+    }
+    if (!request->mesh) request->mesh = std::make_shared<const Mesh>(mesh);
+    startBackgroundFit(request);
+    return std::nullopt;
+}
+
 void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                               std::vector<KeyedProfile> slotProfiles,
                               FrameGraphId<RadiosityImage> radiosity) {
@@ -286,7 +365,8 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
         },
         [this, &ctx, profiles = std::move(slotProfiles), radiosity](FrameGraph::Resources& res) {
             const AtlasCl& flux = res.read(ctx.fluxAtlas);
-            fit(ctx, profiles, res.read(ctx.positionAtlas), res.read(ctx.normalAtlas), res);
+            if (!fit(ctx, profiles, res.read(ctx.positionAtlas), res.read(ctx.normalAtlas), res))
+                return;  // made in the background: this frame has no correction
             const auto patches = static_cast<size_t>(transfer_.patches());
             if (patches == 0) return;
             if (flux.version != fluxOf_) {

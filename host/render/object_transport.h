@@ -12,8 +12,11 @@
 #pragma once
 
 #include <cstdint>
+#include <future>
 #include <glm/ext/vector_int3.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -63,9 +66,37 @@ class ObjectTransport {
                  FrameGraphId<RadiosityImage> radiosity);
     const PatchTransfer* transfer() const { return fitted_ ? &transfer_ : nullptr; }
 
+    // With background fits, a fit neither made before nor on disk is made on
+    // a thread of its own, one at a time (the newest request next), and the
+    // frames meanwhile render without the correction (stat
+    // transport_pending = 1): `tsis view` stays interactive while a new
+    // material's transport is fitted. Off (the default), a frame waits for it.
+    void setBackgroundFits(bool on) { background_ = on; }
+    // A background fit is done and the next frame takes it.
+    bool backgroundFitReady() const;
+
   private:
-    void fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
+    // What a fit is made from, and the frame inputs it is for.
+    struct FitRequest {
+        uint64_t key = 0, geometry = 0, inputs = 0;
+        SurfaceTexels texels;
+        std::vector<TransferMedium> media;
+        PatchTransferOptions options;
+        std::shared_ptr<const Mesh> mesh;  // a copy, for a background fit
+    };
+    // False while this frame's fit runs in the background.
+    bool fit(const FrameContext& ctx, const std::vector<KeyedProfile>& slotProfiles,
              const AtlasCl& position, const AtlasCl& normal, FrameGraph::Resources& res);
+    // The fit of `request` from the background (when made) or the disk
+    // (`loaded`); else started in the background on a copy of `mesh` (or
+    // queued behind the running one).
+    std::optional<PatchTransfer> fitInBackground(const std::shared_ptr<FitRequest>& request,
+                                                 const Mesh& mesh, bool& loaded);
+    // A finished background fit to made_, and the queued request started.
+    void collectBackgroundFit();
+    void startBackgroundFit(std::shared_ptr<FitRequest> request);
+    // transfer_ fitted for `request`: the patches' texel lists and the grids.
+    void install(const FitRequest& request, FrameGraph::Resources& res);
 
     ClRuntime& cl_;
     cl::Kernel kernel_;
@@ -78,6 +109,12 @@ class ObjectTransport {
     std::vector<std::pair<uint64_t, TransportGrid>> gridCache_;
     std::vector<double> exitancePerB_;  // per medium
     uint64_t geometryOf_ = 0, fitKey_ = 0, fluxOf_ = 0, inputsKey_ = 0;
+    bool background_ = false;
+    std::shared_ptr<FitRequest> waiting_;  // the request frames wait for
+    std::future<PatchTransfer> running_;   // the background fit, of runningKey_
+    uint64_t runningKey_ = 0;
+    std::shared_ptr<FitRequest> queued_;                      // started when the running one ends
+    std::optional<std::pair<uint64_t, PatchTransfer>> made_;  // the last one ended
 };
 
 }  // namespace tsis

@@ -153,6 +153,10 @@ void Renderer::forgetAfterAbort() {
     lastView_ = 0;
 }
 
+bool Renderer::backgroundFitReady() const {
+    return transport_ && transport_->backgroundFitReady();
+}
+
 bool Renderer::prepareCameraMoves(const Scene& scene, const RenderOptions& options) {
     // With AOVs kept the camera moves read the copy on the CL side, which
     // makes it as fast as the GL side's lookup does not: nothing to gain.
@@ -357,6 +361,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     // The object's own transport, likewise for every method but volumetric.
     if (addsTransport(opt)) {
         if (!transport_) transport_ = std::make_unique<ObjectTransport>(cl_);
+        transport_->setBackgroundFits(backgroundFits_ && !opt.progressive);
         std::vector<KeyedProfile> profiles;
         for (size_t k = 0; k < sm.slots(); ++k)
             profiles.push_back(

@@ -64,6 +64,13 @@ class Renderer {
     // nothing, where no frame would make a copy (another method,
     // pyramid-cache off or always, progressive frames, AOVs kept).
     bool prepareCameraMoves(const Scene& scene, const RenderOptions& options);
+    // The object's transport fitted in the background (ObjectTransport::
+    // setBackgroundFits), for a window: a frame whose fit is new renders
+    // without the correction (stat transport_pending = 1) and the window
+    // renders it again once backgroundFitReady(). Off by default (a frame
+    // waits for its fit); never for progressive frames, whose mean would mix.
+    void setBackgroundFits(bool on) { backgroundFits_ = on; }
+    bool backgroundFitReady() const;
     // Whether this process is not the one that made the renderer (a fork's
     // child): it may then only be leaked, as its GL and CL threads are gone.
     bool forkedAway() const;
@@ -113,6 +120,7 @@ class Renderer {
     RadiosityAccumulator accumulator_;
     std::unique_ptr<SingleScatter> singleScatter_;  // made on first use (its kernel)
     std::unique_ptr<ObjectTransport> transport_;    // made on first use
+    bool backgroundFits_ = false;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
     std::unique_ptr<SceneMedia> media_;

@@ -32,6 +32,10 @@ std::optional<double> intervalFromEnvironment() {
 
 }  // namespace
 
+ProgressObserver currentProgressObserver() {
+    return tCurrentObserver ? *tCurrentObserver : ProgressObserver();
+}
+
 ScopedProgressObserver::ScopedProgressObserver(ProgressObserver observer)
     : observer_(std::move(observer)), previous_(tCurrentObserver) {
     tCurrentObserver = &observer_;

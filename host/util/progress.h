@@ -35,6 +35,9 @@ class ScopedProgressObserver {
     const ProgressObserver* previous_;
 };
 
+// This thread's observer (none: empty), for work it hands to another thread.
+ProgressObserver currentProgressObserver();
+
 class Progress {
   public:
     Progress(std::string label, long long total);

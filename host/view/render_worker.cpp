@@ -102,6 +102,16 @@ void RenderWorker::prepareWhileIdle(const FrameJob& job) {
     preparations_ += prepared ? 1 : 0;
 }
 
+bool RenderWorker::waitForBackgroundFit() {
+    std::unique_lock lock(mutex_);
+    while (!changed_.wait_for(lock, kFitPoll, [&] { return stop_ || waiting_.has_value(); })) {
+        if (!renderer_->backgroundFitReady()) continue;
+        rendering_ = true;
+        return true;
+    }
+    return false;
+}
+
 void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
     lowerThisThreadPriority();
     // The Renderer is made here: its GL context is current on this thread only.
@@ -109,6 +119,7 @@ void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
         std::lock_guard lock(mutex_);
         try {
             renderer_ = std::make_unique<Renderer>(clDevice, gl);
+            renderer_->setBackgroundFits(true);
         } catch (...) {
             startError_ = currentErrorMessage();
         }
@@ -127,17 +138,25 @@ void RenderWorker::run(const std::string& clDevice, const std::string& gl) {
             waiting_.reset();
             rendering_ = true;
         }
-        FrameDone done = render(job);
-        progress_.clear();
-        const bool atPixels =
-            done.error.empty() && done.frame.stats.number("pyramid_from_atlas") == 0;
-        {
-            std::lock_guard lock(mutex_);
-            done_ = std::move(done);
-            rendering_ = false;
+        // A frame made while its transport was fitted in the background is
+        // made again once the fit is done, unless a new job comes first.
+        bool again = true;
+        while (again) {
+            FrameDone done = render(job);
+            progress_.clear();
+            const bool atPixels =
+                done.error.empty() && done.frame.stats.number("pyramid_from_atlas") == 0;
+            const bool pending =
+                done.error.empty() && done.frame.stats.number("transport_pending") == 1;
+            {
+                std::lock_guard lock(mutex_);
+                done_ = std::move(done);
+                rendering_ = false;
+            }
+            if (wake_) wake_();
+            again = pending && waitForBackgroundFit();
+            if (!again && !pending && atPixels) prepareWhileIdle(job);
         }
-        if (wake_) wake_();
-        if (atPixels) prepareWhileIdle(job);
     }
     renderer_.reset();  // on the thread whose context it is
 }

@@ -62,8 +62,17 @@ class RenderWorker {
     // is shown, so that the first orbit costs what the next ones do.
     static constexpr std::chrono::milliseconds kPrepareAfter{150};
 
+    // After a frame made while its object transport was fitted in the
+    // background (Renderer::setBackgroundFits: the window stays interactive
+    // while a new material's fit runs), the worker looks this often whether
+    // the fit is done, and then makes that frame again.
+    static constexpr std::chrono::milliseconds kFitPoll{20};
+
   private:
     void run(const std::string& clDevice, const std::string& gl);
+    // Waits for the background fit: true when it is done (the frame is to be
+    // made again), false when a job came first or the worker stops.
+    bool waitForBackgroundFit();
     FrameDone render(const FrameJob& job);
     // Idle after `job`'s frame: prepares its camera moves unless a job comes
     // within kPrepareAfter or the worker stops.

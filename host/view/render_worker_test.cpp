@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <thread>
 
 #include "support/render.h"
+#include "support/scoped_env.h"
+#include "support/scratch_dir.h"
 
 namespace tsis {
 namespace {
@@ -56,6 +59,33 @@ TEST(RenderWorker, PreparesCameraMovesWhileIdleAfterALightChange) {
     std::this_thread::sleep_for(RenderWorker::kPrepareAfter * 3);
     EXPECT_FALSE(worker.busy());
     EXPECT_EQ(worker.preparations(), 1);
+}
+
+// A material whose transport is fitted for the first time: the worker shows
+// the frame without it at once and, the fit done, the frame with it, unasked.
+TEST(RenderWorker, MakesTheFrameAgainWhenItsTransportIsFitted) {
+    const test::ScratchDir cache;
+    const test::ScopedEnv env("TSIS_CACHE_DIR", cache.path().string());
+    Scene scene = test::torusScene("skin1", 10.0);
+    FrameJob job;
+    job.id = 7;
+    job.mesh = std::make_shared<const Mesh>(scene.mesh);
+    job.scene = scene;
+    job.scene.mesh = Mesh();
+    job.options = test::smallOptions(48, 128);
+    job.options.transport = Transport::Object;
+    job.options.method = "pyramid";
+    RenderWorker worker("", "", nullptr);
+
+    const FrameDone first = frameOf(worker, job);
+    ASSERT_TRUE(first.error.empty()) << first.error;
+    EXPECT_EQ(first.frame.stats.number("transport_pending"), 1);
+    std::optional<FrameDone> second;
+    ASSERT_TRUE(eventually([&] { return (second = worker.take()).has_value(); }));
+    ASSERT_TRUE(second->error.empty()) << second->error;
+    EXPECT_EQ(second->id, 7u);
+    EXPECT_TRUE(std::isnan(second->frame.stats.number("transport_pending")));
+    EXPECT_NE(second->frame.rgb8, first.frame.rgb8);
 }
 
 }  // namespace

@@ -114,6 +114,7 @@ class Viewer {
     // Frames.
     uint64_t nextId_ = 1;
     bool awaiting_ = false;               // a frame asked for and not yet collected
+    bool fitPending_ = false;             // the last frame's transport is being fitted
     std::optional<ViewState> submitted_;  // the view of the last frame asked for
     std::optional<ViewState> shown_;      // the view of the frame on screen
     FrameResult frame_;
@@ -292,6 +293,7 @@ void Viewer::compareWithReference() {
 
 void Viewer::onFrame(FrameDone done) {
     awaiting_ = false;
+    fitPending_ = false;
     const Clock::time_point now = Clock::now();
     if (framesRendered_++ == 0) firstFrame_ = now;
     lastFrame_ = now;
@@ -308,6 +310,11 @@ void Viewer::onFrame(FrameDone done) {
     shown_ = submitted_;
     accumulated_ = accumulatedFrames(frame_.stats);
     window_.upload(0, frame_.width, frame_.height, frame_.rgb8);
+    // Made while its transport is fitted in the background: shown, and the
+    // frame with it follows (render_worker.h); the error, the AOVs and a
+    // script wait for that one.
+    fitPending_ = frame_.stats.number("transport_pending") == 1;
+    if (fitPending_) return;
     compareWithReference();
     if (aovPending_ && frame_.radiosity.channels > 0) {
         const std::string dir = *aovPending_;
@@ -386,8 +393,8 @@ bool Viewer::busy() const {
 // `frame N` asked for, the background work and a screenshot in hand.
 bool Viewer::scriptWaiting() const {
     if (scriptResume_ && Clock::now() < *scriptResume_) return true;
-    return busy() || scriptFrames_ > 0 || forceFrame_ || aovPending_ || screenshotPending_ ||
-           (state_.mesh && (!submitted_ || !sameFrame(*submitted_, state_)));
+    return busy() || fitPending_ || scriptFrames_ > 0 || forceFrame_ || aovPending_ ||
+           screenshotPending_ || (state_.mesh && (!submitted_ || !sameFrame(*submitted_, state_)));
 }
 
 void Viewer::runCommand(const ScriptCommand& c) {
@@ -488,7 +495,7 @@ void Viewer::panel() {
     info.accumulated = accumulated_;
     info.stats = frame_.width > 0 ? &frame_.stats : nullptr;
     info.frameError = frameError_;
-    if (awaiting_) info.frameProgress = worker_->progress();
+    if (awaiting_ || fitPending_) info.frameProgress = worker_->progress();
     info.meshLoading = meshTask_ != nullptr;
     if (meshTask_) info.meshProgress = meshTask_->progress();
     info.meshError = meshError_;

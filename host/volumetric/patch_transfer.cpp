@@ -488,34 +488,47 @@ bool parsePatchTransfer(const std::string& s, uint64_t key, size_t texels, Patch
     return true;
 }
 
+namespace {
+
+// The cache file of `key`, or none without a usable cache folder.
+std::filesystem::path transferFile(uint64_t key) {
+    const std::string root = usableCacheDirectory();
+    if (root.empty()) return {};
+    return std::filesystem::path(root) / "transport" / (hexKey(key) + ".transfer");
+}
+
+}  // namespace
+
+std::optional<PatchTransfer> loadPatchTransfer(uint64_t key, size_t texels) {
+    const std::filesystem::path file = transferFile(key);
+    if (file.empty() || !notRegularFile(file.string()).empty()) return std::nullopt;
+    std::ifstream f(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    PatchTransfer t;
+    if (!parsePatchTransfer(bytes, key, texels, t)) return std::nullopt;
+    return t;
+}
+
+void storePatchTransfer(const PatchTransfer& t, uint64_t key) {
+    const std::filesystem::path file = transferFile(key);
+    if (file.empty()) return;
+    try {
+        std::filesystem::create_directories(file.parent_path());
+        writeTextFile(file, serializePatchTransfer(t));
+    } catch (...) {
+        // A cache that cannot be written is only slower.
+    }
+}
+
 PatchTransfer cachedPatchTransfer(const Mesh& mesh, const SurfaceTexels& texels,
                                   const std::vector<TransferMedium>& media,
                                   const PatchTransferOptions& options, uint64_t key, bool* loaded) {
-    if (loaded) *loaded = false;
-    const std::string root = usableCacheDirectory();
-    const std::filesystem::path file =
-        root.empty() ? std::filesystem::path()
-                     : std::filesystem::path(root) / "transport" / (hexKey(key) + ".transfer");
-    if (!root.empty() && notRegularFile(file.string()).empty()) {
-        std::ifstream f(file, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(f)),
-                                std::istreambuf_iterator<char>());
-        PatchTransfer t;
-        if (parsePatchTransfer(bytes, key, texels.size(), t)) {
-            if (loaded) *loaded = true;
-            return t;
-        }
-    }
-    PatchTransfer t = fitPatchTransfer(mesh, texels, media, options, key);
-    if (!root.empty()) {
-        try {
-            std::filesystem::create_directories(file.parent_path());
-            writeTextFile(file, serializePatchTransfer(t));
-        } catch (...) {
-            // A cache that cannot be written is only slower.
-        }
-    }
-    return t;
+    std::optional<PatchTransfer> t = loadPatchTransfer(key, texels.size());
+    if (loaded) *loaded = t.has_value();
+    if (t) return std::move(*t);
+    PatchTransfer fitted = fitPatchTransfer(mesh, texels, media, options, key);
+    storePatchTransfer(fitted, key);
+    return fitted;
 }
 
 }  // namespace tsis

@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,9 +104,14 @@ PatchTransfer fitPatchTransfer(const Mesh& mesh, const SurfaceTexels& texels,
                                const std::vector<TransferMedium>& media,
                                const PatchTransferOptions& options, uint64_t key);
 
-// The same through the disk cache (<cache>/transport/<key>.transfer, atlas
-// cache's folder): read when a valid file of this key exists, else fitted and
-// written (a cache that cannot be written is only slower). `loaded` tells which.
+// The disk cache's fit of `key` (<cache>/transport/<key>.transfer, the atlas
+// cache's folder) when a valid file of it for `texels` texels exists.
+std::optional<PatchTransfer> loadPatchTransfer(uint64_t key, size_t texels);
+// Writes `t` there as the fit of `key` (a cache that cannot be written is only slower).
+void storePatchTransfer(const PatchTransfer& t, uint64_t key);
+
+// The same through the disk cache: read when a valid file of this key exists,
+// else fitted and written. `loaded` tells which.
 PatchTransfer cachedPatchTransfer(const Mesh& mesh, const SurfaceTexels& texels,
                                   const std::vector<TransferMedium>& media,
                                   const PatchTransferOptions& options, uint64_t key,
