@@ -54,30 +54,52 @@ struct Config {
     bool cameraMoves = false;  // the camera orbits instead of the light (lighting reused)
 };
 
-// The lights (as tsis animate --orbit), or the camera, turned by 2π·f/frames about y.
-Scene orbit(const Scene& base, int f, int frames, bool camera) {
+// What turns about y by 2π·f/frames a frame: the lights (as tsis animate
+// --orbit, the environment's sun left to the map), the camera, or the
+// environment's map (with its sun).
+enum class Motion { Lights, Camera, Environment };
+
+Scene orbit(const Scene& base, int f, int frames, Motion motion) {
     Scene s = base;
-    const glm::mat4 rot = glm::rotate(glm::mat4(1.0f), static_cast<float>(2.0 * M_PI * f / frames),
+    const double degrees = 360.0 * f / frames;
+    const glm::mat4 rot = glm::rotate(glm::mat4(1.0f), static_cast<float>(glm::radians(degrees)),
                                       glm::vec3(0.0f, 1.0f, 0.0f));
     auto turn = [&](const glm::vec3& v) { return glm::vec3(rot * glm::vec4(v, 0.0f)); };
-    if (camera) {
-        s.camera.eye = s.camera.target + turn(base.camera.eye - base.camera.target);
-        return s;
+    switch (motion) {
+        case Motion::Camera:
+            s.camera.eye = s.camera.target + turn(base.camera.eye - base.camera.target);
+            break;
+        case Motion::Lights:
+            for (size_t i = 0; i < s.lights.size(); ++i)
+                if (!s.lights[i].environment) s.lights[i].vec = turn(base.lights[i].vec);
+            break;
+        case Motion::Environment:
+            s.env.rotateDegrees = base.env.rotateDegrees + degrees;
+            applyEnvironment(s);
+            break;
     }
-    for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].vec = turn(base.lights[i].vec);
     return s;
 }
 
-// The stats of `frames` frames of c, the lights (or the camera) a step
-// further round each (steps 1 … frames of frames + 1).
+Scene orbit(const Scene& base, int f, int frames, bool camera) {
+    return orbit(base, f, frames, camera ? Motion::Camera : Motion::Lights);
+}
+
+// The stats of `frames` frames of c, the lights (or the camera, or the map)
+// a step further round each (steps 1 … frames of frames + 1).
 std::vector<FrameStats> orbitFrames(Renderer& renderer, const BenchCase& c, int frames,
-                                    bool camera) {
+                                    Motion motion) {
     std::vector<FrameStats> stats;
     stats.reserve(size_t(frames));
     for (int f = 0; f < frames; ++f)
         stats.push_back(
-            renderer.render(orbit(c.scene, f + 1, frames + 1, camera), c.options).stats);
+            renderer.render(orbit(c.scene, f + 1, frames + 1, motion), c.options).stats);
     return stats;
+}
+
+std::vector<FrameStats> orbitFrames(Renderer& renderer, const BenchCase& c, int frames,
+                                    bool camera) {
+    return orbitFrames(renderer, c, frames, camera ? Motion::Camera : Motion::Lights);
 }
 
 // Whole-frame ms of an external tsis binary's `animate --orbit` (its stats'
@@ -195,34 +217,39 @@ std::string compositeSection(Renderer& renderer, int frames) {
     return md;
 }
 
-// The two medians of --side-by-side: the light orbiting, then the camera.
+// The medians of --side-by-side: the light orbiting, then the camera, and
+// with --env the map turning.
 int sideBySide(const BenchArgs& a) {
     std::vector<std::string> args;
     for (const std::string& s : a.rest)
         if (s != "--side-by-side") args.push_back(s);
     const bool stages = std::erase(args, "--stages") > 0;
     Renderer renderer;
-    double ms[2] = {0, 0};
-    for (int camera = 0; camera < 2; ++camera) {
+    const Motion motions[] = {Motion::Lights, Motion::Camera, Motion::Environment};
+    const char* names[] = {"light", "camera", "env"};
+    double ms[3] = {0, 0, 0};
+    for (int m = 0; m < 3; ++m) {
         BenchCase c = makeCase(args);
-        c.options.reuseLighting = camera == 1;
+        if (motions[m] == Motion::Environment && !c.scene.env) break;
+        c.options.reuseLighting = motions[m] == Motion::Camera;
         renderer.render(c.scene, c.options);  // warm-up: programs, atlas, first light maps
-        const std::vector<FrameStats> frames = orbitFrames(renderer, c, a.frames, camera == 1);
-        ms[camera] = summarize(stageSums(frames, {"total"})).median;
+        const std::vector<FrameStats> frames = orbitFrames(renderer, c, a.frames, motions[m]);
+        ms[m] = summarize(stageSums(frames, {"total"})).median;
         // --stages: each stage's median, on stderr (stdout stays one line).
         if (!stages) continue;
         // Every stage any frame ran (the first camera move's differ from the later ones').
-        std::vector<std::string> names;
+        std::vector<std::string> stageNames;
         for (const FrameStats& f : frames)
             for (const FrameStats::Stage& s : f.stages)
-                if (std::find(names.begin(), names.end(), s.name) == names.end())
-                    names.push_back(s.name);
-        for (const std::string& name : names)
-            std::fprintf(stderr, "%s %s %.2f\n", camera ? "camera" : "light", name.c_str(),
+                if (std::find(stageNames.begin(), stageNames.end(), s.name) == stageNames.end())
+                    stageNames.push_back(s.name);
+        for (const std::string& name : stageNames)
+            std::fprintf(stderr, "%s %s %.2f\n", names[m], name.c_str(),
                          summarize(stageSums(frames, {name})).median);
     }
-    std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f frames=%d gl_renderer=%s\n", ms[0],
-                ms[1], a.frames, renderer.glRenderer().c_str());
+    std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f", ms[0], ms[1]);
+    if (ms[2] > 0) std::printf(" env_rotating_ms=%.1f", ms[2]);
+    std::printf(" frames=%d gl_renderer=%s\n", a.frames, renderer.glRenderer().c_str());
     return 0;
 }
 

@@ -36,10 +36,12 @@
 # changes; with one viewport sample EEVEE renders every redraw anyway), light
 # moving (every light turned about the vertical axis one step per frame, as
 # `tsis animate --orbit`, the depsgraph evaluated inside the timed frame) and
-# camera moving (the view orbits its target one step per frame). Prints one
+# camera moving (the view orbits its target one step per frame), and with
+# --env a fourth, env rotating (the world's Mapping turned one step a frame,
+# as `tsis animate --orbit` turns --env). Prints one
 # line (also written to --out):
 #
-#   EEVEE static_ms=… light_moving_ms=… camera_moving_ms=… frames=N
+#   EEVEE static_ms=… light_moving_ms=… camera_moving_ms=… [env_rotating_ms=…] frames=N
 #   region=WxH blender=3.4.1 renderer=<GL renderer>
 #
 # medians of the per-frame milliseconds, then quits Blender.
@@ -72,6 +74,11 @@ def parse_args():
     p.add_argument("--redraw", default="DRAW_SWAP", choices=["DRAW_SWAP", "DRAW_WIN_SWAP"],
                    help="wm.redraw_timer's type: the viewport region drawn and the window "
                    "presented (default), or every region of the window drawn")
+    p.add_argument("--env", default="",
+                   help="a lat-long map (tsis --env's) as the world, beside the lights; adds the "
+                   "env_rotating case (the world's Mapping turned one step a frame)")
+    p.add_argument("--env-intensity", type=float, default=1.0,
+                   help="the world's strength (tsis --env-intensity)")
     p.add_argument("--out", default="", help="also write the result line to this file")
     p.add_argument("--screenshot", default="", help="save the viewport's first frame (PNG)")
     p.add_argument("--compile-timeout", type=float, default=600.0,
@@ -184,8 +191,11 @@ def build_scene():
 
     world = scene.world or bpy.data.worlds.new("world")
     scene.world = world
-    world.use_nodes = False
-    world.color = (0, 0, 0)  # tsis has no ambient light
+    if ARGS.env:
+        build_world(world)
+    else:
+        world.use_nodes = False
+        world.color = (0, 0, 0)  # tsis has no ambient light
 
     scene.render.engine = "BLENDER_EEVEE"
     ee = scene.eevee
@@ -198,6 +208,32 @@ def build_scene():
     scene.view_settings.view_transform = "Standard"
     scene.view_settings.exposure = 3.3  # tsis --exposure default
     return [point_ob, sun_ob]
+
+
+WORLD = {}
+
+
+def build_world(world):
+    """--env as the world: its map through a Mapping node (turned about Z) at
+    --env-intensity. Blender's equirectangular lookup puts the map's centre
+    column at +X, tsis' at -z (Blender's +Y here): a Mapping turn of 90° is
+    tsis' --env-rotate 0 (docs/guide/environment.md, "Orientation")."""
+    world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    nodes.clear()
+    coord = nodes.new("ShaderNodeTexCoord")
+    mapping = nodes.new("ShaderNodeMapping")
+    tex = nodes.new("ShaderNodeTexEnvironment")
+    tex.image = bpy.data.images.load(os.path.abspath(ARGS.env))
+    background = nodes.new("ShaderNodeBackground")
+    background.inputs["Strength"].default_value = ARGS.env_intensity
+    out = nodes.new("ShaderNodeOutputWorld")
+    links.new(coord.outputs["Generated"], mapping.inputs["Vector"])
+    links.new(mapping.outputs["Vector"], tex.inputs["Vector"])
+    links.new(tex.outputs["Color"], background.inputs["Color"])
+    links.new(background.outputs["Background"], out.inputs["Surface"])
+    mapping.inputs["Rotation"].default_value[2] = math.radians(90)
+    WORLD["mapping"] = mapping
 
 
 # --- The window ------------------------------------------------------------
@@ -331,8 +367,19 @@ def measure(ctx, win, area, region):
         r3d.view_rotation = Quaternion((0, 0, 1), turn * (f + 1)) @ start
 
     camera = timed(move_camera)
+    r3d.view_rotation = start
+    env = ""
+    if WORLD:
+        rotation = WORLD["mapping"].inputs["Rotation"]
+        base_z = rotation.default_value[2]
+
+        def turn_world(f):
+            rotation.default_value[2] = base_z + turn * (f + 1)
+            view_layer.update()
+
+        env = f"env_rotating_ms={timed(turn_world):.1f} "
     line = (f"EEVEE static_ms={static:.1f} light_moving_ms={light:.1f} "
-            f"camera_moving_ms={camera:.1f} frames={ARGS.frames} region={size} "
+            f"camera_moving_ms={camera:.1f} {env}frames={ARGS.frames} region={size} "
             f"blender={bpy.app.version_string} renderer={renderer}")
     print(line, flush=True)
     if ARGS.out:

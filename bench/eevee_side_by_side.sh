@@ -8,7 +8,12 @@
 # through the same Mesa (llvmpipe here). Writes bench/results/eevee.md.
 #
 #   bench/eevee_side_by_side.sh [--mesh cow] [--material skin1] [--size-mm 10]
-#                               [--rounds 3] [--frames 30]
+#                               [--rounds 3] [--frames 30] [--env FILE]
+#
+# --env FILE (issue 38, "EEVEE under an HDRI"): the same lat-long map as
+# tsis' --env and as EEVEE's world (a Mapping node turned as tsis' map),
+# beside the default lights (written out for tsis, which drops them
+# otherwise); a third case, the map turning, and bench/results/eevee_env.md.
 #
 # Needs Debian's `blender` and `xvfb-run` (./setup.sh bench-blender installs
 # them). TSIS_BENCH_BUILD (default build-bench) and TSIS_BENCH_RESULTS override
@@ -22,7 +27,7 @@ build=${TSIS_BENCH_BUILD:-$root/build-bench}
 results=${TSIS_BENCH_RESULTS:-$root/bench/results}
 screen=${TSIS_EEVEE_SCREEN:-620x603}
 eevee_args=${TSIS_EEVEE_ARGS:-}
-mesh=cow material=skin1 size=10 rounds=3 frames=30
+mesh=cow material=skin1 size=10 rounds=3 frames=30 env=
 while [ $# -gt 0 ]; do
     case $1 in
         --mesh) mesh=$2; shift 2 ;;
@@ -30,6 +35,7 @@ while [ $# -gt 0 ]; do
         --size-mm) size=$2; shift 2 ;;
         --rounds) rounds=$2; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
+        --env) env=$(cd "$(dirname "$2")" && pwd)/$(basename "$2"); shift 2 ;;
         *) echo "eevee_side_by_side.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
 done
@@ -54,9 +60,23 @@ trap 'rm -rf "$tmp"' EXIT
 # The value of KEY=… in a result line.
 field() { sed -n "s/.*[ ]$2=\([^ ]*\).*/\1/p" "$1"; }
 
+# With --env, tsis' default lights written out (a point light behind and
+# above with irradiance 1 at the centre, the fill sun 0.12), which --env
+# would otherwise replace; EEVEE's script builds the same.
+tsis_env=""
+if [ -n "$env" ]; then
+    export env
+    tsis_env=$(awk -v s="$size" 'BEGIN {
+        x = -0.45 * 1.3 * s; y = 0.75 * 1.3 * s; z = -1.3 * s; i = x * x + y * y + z * z
+        printf "--env %s --light point:%g,%g,%g:%g,%g,%g --light dir:0.6,-0.4,-1:0.12,0.12,0.12",
+            ENVIRON["env"], x, y, z, i, i, i }')
+fi
+
 tsis_run() {
+    # $tsis_env is split into options on purpose.
+    # shellcheck disable=SC2086
     "$build/bench/bench_frame" --side-by-side --frames "$frames" --mesh "$mesh" \
-        --material "$material" --size-mm "$size" >"$tmp/tsis.out" 2>"$tmp/tsis.err" || {
+        --material "$material" --size-mm "$size" $tsis_env >"$tmp/tsis.out" 2>"$tmp/tsis.err" || {
         echo "eevee_side_by_side.sh: bench_frame failed:" >&2; tail -n 20 "$tmp/tsis.err" >&2; exit 1; }
     grep '^TSIS ' "$tmp/tsis.out" >"$tmp/tsis.line"
 }
@@ -69,7 +89,8 @@ eevee_run() {
     LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 ${screen}x24" \
         blender --factory-startup --python "$root/bench/blender_viewport.py" -- \
         --mesh "$off" --dipole "$tmp/dipole.json" --size-mm "$size" --frames "$frames" \
-        --expect 512x512 --out "$tmp/eevee.line" $eevee_args >"$tmp/eevee.log" 2>&1 || true
+        --expect 512x512 --out "$tmp/eevee.line" ${env:+--env "$env"} $eevee_args \
+        >"$tmp/eevee.log" 2>&1 || true
     grep -q '^EEVEE static_ms=' "$tmp/eevee.line" 2>/dev/null || {
         echo "eevee_side_by_side.sh: the Blender run failed:" >&2
         grep -v '^$' "$tmp/eevee.log" | grep -v 'unregistered class' | tail -n 20 >&2; exit 1; }
@@ -90,10 +111,12 @@ while [ "$r" -le "$rounds" ]; do
         say "round $r/$rounds: EEVEE"; eevee_run
         say "round $r/$rounds: tsis"; tsis_run
     fi
-    printf '%s %s %s %s %s %s %s\n' "$r" "$load" \
+    printf '%s %s %s %s %s %s %s %s %s\n' "$r" "$load" \
         "$(field "$tmp/eevee.line" light_moving_ms)" "$(field "$tmp/tsis.line" light_moving_ms)" \
         "$(field "$tmp/eevee.line" camera_moving_ms)" "$(field "$tmp/tsis.line" camera_moving_ms)" \
-        "$(field "$tmp/eevee.line" static_ms)" >>"$tmp/rows"
+        "$(field "$tmp/eevee.line" static_ms)" \
+        "$(field "$tmp/eevee.line" env_rotating_ms)" "$(field "$tmp/tsis.line" env_rotating_ms)" \
+        >>"$tmp/rows"
     say "round $r: $(cat "$tmp/eevee.line")"
     say "round $r: $(cat "$tmp/tsis.line")"
     r=$((r + 1))
@@ -117,17 +140,18 @@ table() {
     printf '| **median** | | **%.1f** | **%.1f** | **%.2f** |\n' "$me" "$mt" "$mr"
 }
 
-out=$results/eevee.md
+out=$results/eevee${env:+_env}.md
 {
     echo "# tsis against EEVEE's viewport, side by side"
     echo
-    echo "Made by \`bench/eevee_side_by_side.sh --mesh $mesh --material $material --size-mm $size --rounds $rounds --frames $frames\` on $date."
+    echo "Made by \`bench/eevee_side_by_side.sh --mesh $mesh --material $material --size-mm $size --rounds $rounds --frames $frames${env:+ --env $(basename "$env")}\` on $date."
     echo "Machine: $model, $(nproc) cores; load average (1, 5, 15 min) $load_start at the start, $load_end at the end (other work shares the machine: compare within a round, the rounds interleave tsis and EEVEE)."
     echo
     echo "* tsis: \`bench_frame --side-by-side\`, today's defaults (\`tsis render --mesh $mesh --material $material --size-mm $size\`), 512×512; GL $tsis_gl."
     echo "* EEVEE: Blender $eevee_version, \`bench/blender_viewport.py\` under Xvfb (screen $screen), the 3D view's region $region, shading Rendered, one viewport sample per redraw${eevee_args:+, options \`$eevee_args\`}; GL $eevee_gl."
     echo "* Per round, each the median of $frames frames after warm-up frames. *Light moving*: every light turns about the vertical axis one step a frame (\`tsis animate --orbit\`); EEVEE's frame is the depsgraph update plus the viewport's redraw and the window's swap. *Camera moving*: the view orbits the object; tsis reuses the lighting (light maps, flux atlas), EEVEE has nothing to reuse between two samples."
-    echo "* Ratio EEVEE / tsis: above 1, tsis' frame is the shorter; issue 25 asks for ≥ 2."
+    [ -z "$env" ] || echo "* The map \`$(basename "$env")\`: tsis' \`--env\` at intensity 1 beside the default lights (written out), EEVEE's world (Environment Texture through a Mapping node turned 90° about Z, tsis' orientation at \`--env-rotate 0\`, strength 1); tsis shows it through its lighting (sun with shadows, SH residual, prefiltered GGX), EEVEE through its world probe."
+    echo "* Ratio EEVEE / tsis: above 1, tsis' frame is the shorter; issue 25 asks for ≥ 2${env:+; issue 38, under the HDRI, for ≥ 3 in every table}."
     echo
     echo "## Light moving"
     echo
@@ -137,6 +161,14 @@ out=$results/eevee.md
     echo
     table 5 6
     echo
+    if [ -n "$env" ]; then
+        echo "## Environment rotating"
+        echo
+        echo "tsis: the map turns about +y one step a frame, its sun with it (\`tsis animate --orbit\` turns --env so), the lights still; EEVEE: the world's Mapping node turns about Z by the same step (its world probe is rendered again)."
+        echo
+        table 8 9
+        echo
+    fi
     echo "EEVEE with nothing changing (one sample, so every redraw renders it again): $(awk '{print $7}' "$tmp/rows" | median | xargs printf '%.1f') ms, median over the rounds."
     echo
     echo "## What matches and what does not"
