@@ -43,9 +43,9 @@ double smallestMeanFreePath(const FrameContext& ctx) {
 int scatterViewResolution(const FrameContext& ctx) {
     const double texels =
         std::ceil(2.0 * ctx.boundingRadius / smallestMeanFreePath(ctx) * kScatterTexelsPerMfp);
-    return static_cast<int>(std::clamp(texels,
-                                       double(std::min(kScatterMinResolution, ctx.lightResolution)),
-                                       double(ctx.lightResolution)));
+    const int most = std::min(kScatterMaxResolution, ctx.lightResolution);
+    return static_cast<int>(
+        std::clamp(texels, double(std::min(kScatterMinResolution, most)), double(most)));
 }
 
 namespace {

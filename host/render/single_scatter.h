@@ -28,6 +28,9 @@ constexpr int kSingleScatterStrata = 4;
 // surface on the scale of a mean free path, finer than the shadow maps need.
 constexpr double kScatterTexelsPerMfp = 4.0;
 constexpr int kScatterMinResolution = 256;
+// Past it a view's two maps cost more to read back than the term gains (a
+// 2048² pair is 128 MB a light).
+constexpr int kScatterMaxResolution = 1024;
 // The sparse grid's spacing is the pyramid's rule for an ℓ this many
 // smallest mean free paths: L⁽¹⁾ has no r⁻¹ peak to follow (cow in marble
 // at 512², every 4th pixel against every one: 0.8 % rel. RMSE of the
@@ -38,7 +41,8 @@ constexpr double kScatterGridMfp = 2.0;
 // The scatter views' resolution (gl/light_view.h updateScatterView):
 // kScatterTexelsPerMfp texels a smallest mean free path 1/max σt′ of the
 // scene's media across the object's bounding sphere, within
-// [kScatterMinResolution, the shadow maps' resolution].
+// [kScatterMinResolution, kScatterMaxResolution] and at most the shadow
+// maps' resolution.
 int scatterViewResolution(const FrameContext& ctx);
 
 // The kernel's medium: σs′, σt′, η and π over the exit term's scale.

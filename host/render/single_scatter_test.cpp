@@ -288,24 +288,31 @@ TEST(SingleScatterRender, PlaneGainsTheClosedForm) {
 
 // The scatter views' resolution follows the smallest mean free path ℓ:
 // kScatterTexelsPerMfp texels an ℓ across the bounding sphere, within
-// [kScatterMinResolution, the shadow maps'], over sizes and both media.
+// [kScatterMinResolution, kScatterMaxResolution] and the shadow maps', over
+// sizes, both media and two shadow-map resolutions.
 TEST(SingleScatterRender, ScatterViewsFollowTheMeanFreePath) {
     for (const char* material : {"skin1", "marble"})
-        for (const double sizeMm : {5.0, 40.0, 80.0, 400.0}) {
-            Scene scene = test::sphereScene(
-                material, {Light::Type::Directional, glm::vec3(0, 0, -1), glm::vec3(1.0f)});
-            normalizeMesh(scene.mesh, sizeMm);
-            scene.camera.eye *= static_cast<float>(sizeMm / 10.0);
-            RenderOptions opt = test::smallOptions(16, 1024);
-            opt.singleScatter = true;
-            const FrameResult f = test::renderWith(scene, opt, "pyramid");
-            const Material& m = presetMaterial(material);
-            const glm::dvec3 st = m.sigmaSPrime + m.sigmaA;
-            const double texels = std::ceil(2.0 * boundingRadius(scene.mesh) *
-                                            std::max({st.x, st.y, st.z}) * kScatterTexelsPerMfp);
-            const double want = std::clamp(texels, double(kScatterMinResolution), 1024.0);
-            EXPECT_EQ(f.stats.number("scatter_view_resolution"), want) << material << " " << sizeMm;
-        }
+        for (const double sizeMm : {5.0, 40.0, 80.0, 400.0})
+            for (const int lightResolution : {512, 2048}) {
+                Scene scene = test::sphereScene(
+                    material, {Light::Type::Directional, glm::vec3(0, 0, -1), glm::vec3(1.0f)});
+                normalizeMesh(scene.mesh, sizeMm);
+                scene.camera.eye *= static_cast<float>(sizeMm / 10.0);
+                RenderOptions opt = test::smallOptions(16, 256);
+                opt.lightResolution = lightResolution;
+                opt.singleScatter = true;
+                const FrameResult f = test::renderWith(scene, opt, "pyramid");
+                const Material& m = presetMaterial(material);
+                const glm::dvec3 st = m.sigmaSPrime + m.sigmaA;
+                const double texels =
+                    std::ceil(2.0 * boundingRadius(scene.mesh) * std::max({st.x, st.y, st.z}) *
+                              kScatterTexelsPerMfp);
+                const double most = std::min(kScatterMaxResolution, lightResolution);
+                const double want =
+                    std::clamp(texels, std::min(double(kScatterMinResolution), most), most);
+                EXPECT_EQ(f.stats.number("scatter_view_resolution"), want)
+                    << material << " " << sizeMm << " " << lightResolution;
+            }
 }
 
 // The term is evaluated on a sparse grid and interpolated between: on the
