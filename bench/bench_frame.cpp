@@ -173,6 +173,9 @@ std::string compositeSection(Renderer& renderer, int frames) {
     const std::vector<Config> configs = {
         {"no lobe, 1 sample (`--no-specular --aa 1`)", {"--no-specular", "--aa", "1"}, true},
         {"GGX, 1 sample (`--aa 1`)", {"--aa", "1"}, true},
+        {"GGX, 1 sample and FXAA at the edge pixels (`--aa-method fxaa`)",
+         {"--aa-method", "fxaa"},
+         true},
         {"GGX, 2×2 samples (default)", {}, true},
         {"GGX, 3×3 samples (`--aa 3`)", {"--aa", "3"}, true},
         {"GGX, 4×4 samples (`--aa 4`)", {"--aa", "4"}, true},

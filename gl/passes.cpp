@@ -293,17 +293,25 @@ CompositePass::CompositePass()
                            "#define TSIS_TONE_MAP 1\n#define TSIS_RESOLVE_EDGES 1\n"),
       backgroundProgram_("fullscreen.vert", "resolve.frag",
                          "#define TSIS_TONE_MAP 1\n#define TSIS_BACKGROUND 1\n"),
-      reduceProgram_("fullscreen.vert", "reduce.frag") {
+      reduceProgram_("fullscreen.vert", "reduce.frag"),
+      fxaaProgram_("edge_points.vert", "fxaa.frag") {
     glGenVertexArrays(1, &emptyVao_);
     // Depth read as a value (RenderTarget's depth compares, as a shadow map).
     glGenSamplers(1, &depthSampler_);
     glSamplerParameteri(depthSampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glSamplerParameteri(depthSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(depthSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    // The display read between texels (fxaa.frag).
+    glGenSamplers(1, &linearSampler_);
+    glSamplerParameteri(linearSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linearSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 CompositePass::~CompositePass() {
     if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
+    if (linearSampler_) glDeleteSamplers(1, &linearSampler_);
 }
 
 // The centre pass' marks read back and listed: the covered pixels it marked
@@ -369,16 +377,17 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     // The pixels' centres, and which pixels to supersample.
     // The pixels to supersample follow the G-buffer (the camera), not the
     // lights: marked, read back and listed only when it changed.
-    const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).digest();
+    const uint64_t edgesKey = Hasher(gbufferVersion).add(w).add(h).add(aa).add(fxaa_).digest();
     coverageKey_ = edgesKey;
-    const bool findEdges = aa > 1 && (!edgePixels_ || edgesKey != edgesKey_);
+    const bool marks = aa > 1 || fxaa_;  // the edge pixels listed
+    const bool findEdges = marks && (!edgePixels_ || edgesKey != edgesKey_);
     // Only the covered pixels shaded (the G-buffer's depth, < 1 there), and
     // only they read: the radiance is not cleared, the marks only when read.
     // Straight to the display, the centres write its colour and log
     // luminance (the tone map's pass over a frame of radiance saved).
     const bool direct = displayScale.has_value();
     std::unique_ptr<RenderTarget>& target = direct ? directTarget_ : centreTarget_;
-    const int marks = direct ? 2 : 1;
+    const int markIndex = direct ? 2 : 1;
     ensureTarget(target, w, h,
                  direct ? std::vector<GLenum>{GL_RGBA8, GL_RGBA32F, GL_RGBA8}
                         : std::vector<GLenum>{GL_RGBA32F, GL_RGBA8},
@@ -387,7 +396,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     copyDepth(frameGbuffer, *target);
     if (findEdges) {
         const float zero[4] = {0, 0, 0, 0};
-        glClearBufferfv(GL_COLOR, marks, zero);
+        glClearBufferfv(GL_COLOR, markIndex, zero);
     }
     const unsigned features = (specular ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
     const ShaderProgram& centre =
@@ -412,9 +421,9 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
     bindBackgroundMap();
     drawFullScreenWhere(GL_GREATER);
+    if (findEdges) updateEdgePoints(edgesKey, *target, markIndex);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
-        if (findEdges) updateEdgePoints(edgesKey, *target, marks);
         // The marked pixels' samples, packed: edge e's aa × aa block at its
         // slot in edgePixels_ (llvmpipe shades full 4×4 blocks, where a
         // point per pixel filled a quarter of each).
@@ -539,6 +548,30 @@ void CompositePass::toneMap(float scale) {
                 {GL_RGBA8, GL_RGBA32F});
     display_ = colorTarget_.get();
     checkGl("CompositePass::toneMap");
+}
+
+void CompositePass::fxaa() {
+    TSIS_CHECK(display_ != nullptr && fxaa_);
+    const int w = display_->width(), h = display_->height();
+    ensureTarget(fxaaTarget_, w, h, {GL_RGBA8}, false);
+    glCopyImageSubData(display_->color(0), GL_TEXTURE_2D, 0, 0, 0, 0, fxaaTarget_->color(0),
+                       GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    // Only the edge pixels (the centres' marks, as --aa's samples): a
+    // full-screen pass costs llvmpipe ~10 ms at 512² (every 4×4 block runs
+    // the search as far as its farthest pixel).
+    if (edgeCount_ > 0) {
+        fxaaTarget_->bind();
+        fxaaProgram_.use();
+        fxaaProgram_.set("u_frameSize", glm::vec2(w, h));
+        bindTexture(fxaaProgram_, "u_display", 0, display_->color(0));
+        glBindSampler(0, linearSampler_);
+        bindTexture(fxaaProgram_, "u_edgePixels", 10, edgePixels_->id());
+        glBindVertexArray(emptyVao_);
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glBindSampler(0, 0);
+    }
+    display_ = fxaaTarget_.get();
+    checkGl("CompositePass::fxaa");
 }
 
 float CompositePass::logAverageLuminance() {

@@ -284,6 +284,11 @@ class CompositePass {
     // alpha > 0, of the last resolve() or toneMap(); 1 when none is covered.
     // Summed in blocks on the GPU, the blocks' sums on the host.
     float logAverageLuminance();
+    // --aa-method fxaa: radiance() lists the edge pixels as for aa > 1, and
+    // fxaa() then antialiases them in the display image of the last
+    // radiance() or toneMap() (fxaa.frag), the display image from now on.
+    void setFxaa(bool on) { fxaa_ = on; }
+    void fxaa();
     const RenderTarget& colorTarget() const { return *display_; }
 
   private:
@@ -304,25 +309,26 @@ class CompositePass {
     // centres) marking the pixels to supersample
     ShaderVariants centrePrograms_, samplePrograms_;
     ShaderProgram resolveProgram_, resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_,
-        backgroundProgram_, reduceProgram_;
+        backgroundProgram_, reduceProgram_, fxaaProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded.
     // direct: the display colour, the log luminance and the mask, of
     // radiance() with a display scale.
     std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
-        colorTarget_;
+        colorTarget_, fxaaTarget_;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
     const RenderTarget* display_ = nullptr;       // the last display image's
     int aa_ = 1;
+    bool fxaa_ = false;
     int tone_ = 0;
     DisplayBackground background_;
     // The display's uniforms of the tone curve and background on `p`.
     void setDisplayUniforms(const ShaderProgram& p, float scale, int width, int height) const;
     void bindBackgroundMap() const;  // the env map on its unit, for the next draws
-    GLuint emptyVao_ = 0, depthSampler_ = 0;
+    GLuint emptyVao_ = 0, depthSampler_ = 0, linearSampler_ = 0;
     // The supersampled pixels, (x, y) in a texture of slots (the samples'
     // packed layout; the resolve's points read it by gl_VertexID), listed
     // again only when the G-buffer changed: the marks follow the camera, not

@@ -514,6 +514,7 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
             if (direct) out.exposureScale = exposureScale(o, out.lavg);
             const RadiosityImage& b = res.read(radiosity);
             compositePass_.setDisplay(static_cast<int>(o.tone), displayBackground(ctx));
+            compositePass_.setFxaa(o.aaMethod == AaMethod::Fxaa);
             compositePass_.radiance(b.texture ? nullptr : b.rgba.data(), b.texture, *gbuffer.target,
                                     gbuffer.version, *res.read(gl.samples).target, o.aa,
                                     *lights.views, *lights.shadows, ctx.eye, materials_, o.specular,
@@ -527,6 +528,7 @@ FrameGraphId<FrameImage> RasterPasses::addComposite(FrameGraph& graph, const Fra
                 compositePass_.toneMap(out.exposureScale);
             }
             if (!o.autoExposure) out.lavg = compositePass_.logAverageLuminance();
+            if (o.aaMethod == AaMethod::Fxaa) compositePass_.fxaa();
             const std::vector<uint8_t> rgba = compositePass_.colorTarget().readRGBA8(0);
             out.rgb8 = fromGlRgba(rgba, ctx.width, ctx.height, 3);
             if (o.background == Background::Transparent)

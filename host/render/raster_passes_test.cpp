@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <utility>
@@ -203,6 +204,61 @@ TEST(Composite, SupersampledSilhouettesApproachTheFinelySampledImage) {
     EXPECT_LT(err[1], 0.3 * err[0]) << "silhouette squared error, 2×2 against 1×1 samples";
     // The interior: the same surface, at most a level or two of difference.
     EXPECT_LT(interior[1], interior[0] + 1e-9 + 4.0 * cov.width * cov.height);
+}
+
+// --aa-method fxaa: the silhouette pixels come closer to the 4×4-sample
+// image than the one-sample ones do, over light directions, and the rest
+// stays the one-sample image: of the pixels whose 5×5 neighbourhood is all
+// covered or all uncovered, only the few the composite marks as another
+// surface's neighbour (as it does for --aa's samples) may move, by a few
+// levels.
+TEST(Composite, FxaaSmoothsTheSilhouettesAlone) {
+    for (const glm::vec3 light : {glm::vec3(0.3f, -0.4f, -1.0f), glm::vec3(-0.8f, 0.2f, -0.5f)}) {
+        SCOPED_TRACE(light.x);
+        const Scene scene = frontLitSphere(light);
+        RenderOptions opt = test::smallOptions(64, 256);
+        opt.aa = 1;
+        const FrameResult one = test::renderWith(scene, opt, "pyramid");
+        opt.aa = 4;
+        const FrameResult fine = test::renderWith(scene, opt, "pyramid");
+        opt.aaMethod = AaMethod::Fxaa;  // --aa not read
+        const FrameResult fxaa = test::renderWith(scene, opt, "pyramid");
+        const ImageF& cov = one.coverage;
+        auto covered = [&](int x, int y) {
+            return cov.at(std::clamp(x, 0, cov.width - 1), std::clamp(y, 0, cov.height - 1), 0);
+        };
+        double err[2] = {0, 0};
+        int edges = 0, uniformValues = 0, moved = 0;
+        for (int y = 0; y < cov.height; ++y)
+            for (int x = 0; x < cov.width; ++x) {
+                bool uniform = true, edge = false;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        uniform = uniform && covered(x + dx, y + dy) == covered(x, y);
+                        if (std::abs(dx) + std::abs(dy) == 1)
+                            edge = edge || covered(x + dx, y + dy) != covered(x, y);
+                    }
+                edges += edge;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const size_t k = (static_cast<size_t>(y) * cov.width + x) * 3 + ch;
+                    if (uniform) {
+                        const int d = int(fxaa.rgb8[k]) - int(one.rgb8[k]);
+                        EXPECT_LE(std::abs(d), 8) << x << " " << y;
+                        ++uniformValues;
+                        moved += d != 0;
+                    }
+                    if (!edge) continue;
+                    for (int i = 0; i < 2; ++i) {
+                        const double d = double((i ? fxaa : one).rgb8[k]) - double(fine.rgb8[k]);
+                        err[i] += d * d;
+                    }
+                }
+            }
+        ASSERT_GT(edges, 50);
+        ASSERT_GT(uniformValues, 3 * 64 * 64 / 2);
+        EXPECT_LT(moved, uniformValues / 100);
+        EXPECT_LT(err[1], 0.6 * err[0]) << "silhouette squared error, FXAA against 1×1 samples";
+    }
 }
 
 // The composite's targets that are not cleared (the samples' G-buffer, the

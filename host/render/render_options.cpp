@@ -36,6 +36,8 @@ constexpr Choice<VolumetricEstimator> kEstimators[] = {{VolumetricEstimator::Cam
                                                        {VolumetricEstimator::Light, "light"}};
 constexpr Choice<ToneCurve> kToneCurves[] = {
     {ToneCurve::Reinhard, "reinhard"}, {ToneCurve::Aces, "aces"}, {ToneCurve::None, "none"}};
+constexpr Choice<AaMethod> kAaMethods[] = {{AaMethod::Samples, "samples"},
+                                           {AaMethod::Fxaa, "fxaa"}};
 constexpr Choice<Background> kBackgrounds[] = {{Background::Color, "color"},
                                                {Background::Transparent, "transparent"},
                                                {Background::Env, "env"}};
@@ -74,6 +76,13 @@ ToneCurve parseToneCurve(const std::string& name) {
 }
 const char* toneCurveName(ToneCurve tone) {
     return choiceName(tone, kToneCurves);
+}
+
+AaMethod parseAaMethod(const std::string& name) {
+    return parseChoice("--aa-method", name, kAaMethods);
+}
+const char* aaMethodName(AaMethod method) {
+    return choiceName(method, kAaMethods);
 }
 
 Background parseBackground(const std::string& name) {

@@ -8,6 +8,7 @@
 
 namespace tsis {
 
+using api::AaMethod;
 using api::Background;
 using api::EnergyTarget;
 using api::ExitTerm;
@@ -78,6 +79,8 @@ const char* volumetricEstimatorName(VolumetricEstimator estimator);
 // "reinhard", "aces" or "none"; throws tsis::Error for anything else.
 ToneCurve parseToneCurve(const std::string& name);
 const char* toneCurveName(ToneCurve tone);
+AaMethod parseAaMethod(const std::string& name);
+const char* aaMethodName(AaMethod method);
 
 // What the display shows where the object does not (gl/passes.h
 // DisplayBackground): the dark gradient (color), nothing (transparent: alpha

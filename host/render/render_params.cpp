@@ -279,6 +279,12 @@ std::vector<RenderParam> makeParams() {
         number({"aa", "N  N×N composite samples per pixel (antialiased silhouettes); 1 = off",
                 kEvery, kDisplay},
                &O::aa, {1, 4}),
+        choice({"aa-method",
+                "M  how silhouettes are antialiased: samples (--aa N×N composite samples at the "
+                "pixels along them) or fxaa (one sample a pixel, then an FXAA-style pass over the "
+                "display image; --aa not read)",
+                kEvery, kDisplay},
+               &O::aaMethod, parseAaMethod, aaMethodName, AaMethod::Fxaa),
         // Not the pixels: whether a costly run may start (method_reference.h).
         flag({"force", "run even past the cost bounds (points, memory, Rd evaluations)",
               M{"reference"}, ParamEffect::None},

@@ -280,6 +280,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
+    if (opt.aaMethod == AaMethod::Fxaa) opt.aa = 1;  // the pass over the display instead
     gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
     if (opt.background == Background::Env && !scene.env)

@@ -37,6 +37,10 @@ enum class VolumetricEstimator { Camera, Light };
 // tone: the display's curve: Reinhard's Ls/(1 + Ls), ACES fitted (Narkowicz
 // 2015) or none (the exposed radiance clamped to [0, 1]).
 enum class ToneCurve { Reinhard = 0, Aces = 1, None = 2 };
+// aa-method: the silhouettes antialiased by aa × aa composite samples at
+// the pixels along them, or by an FXAA-style pass over the display image
+// (one sample a pixel; aa not read).
+enum class AaMethod { Samples = 0, Fxaa = 1 };
 // background: where the object is not: the dark gradient (color), nothing
 // (transparent: alpha 0), or the scene's environment map (env).
 enum class Background { Color = 0, Transparent = 1, Env = 2 };
@@ -83,6 +87,7 @@ struct RenderSettings {
     bool specular = true;
     float roughness = -1.0f;
     int aa = 2;  // aa: composite samples per pixel along each axis
+    AaMethod aaMethod = AaMethod::Samples;
     // rp-bound, rp-k: the hybrid's split (Rp where Rd·2πr crosses rp-bound;
     // Wl's slope K in mm⁻¹).
     double rpBound = 0.1;

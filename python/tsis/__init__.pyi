@@ -173,6 +173,7 @@ class RenderSettings:
     roughness: float | str  # "file": each object's own
     no_specular: bool
     aa: int
+    aa_method: str
     force: bool
     no_reuse_lighting: bool
     def __init__(self, **settings: OptionValue) -> None: ...

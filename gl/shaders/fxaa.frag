@@ -1,0 +1,94 @@
+// --aa-method fxaa: the display image antialiased after the fact, in the
+// manner of Lottes' FXAA (2009): where the luma's local contrast marks an
+// edge, find the edge's orientation and its two ends along it, and sample
+// the image bilinearly that far across the edge as the pixel sits from the
+// nearer end's middle (a long, shallow step blends most at its ends); thin
+// features get a blend from their 3×3 contrast (the sub-pixel term).
+// u_display is sRGB in RGBA8, read through a bilinear sampler.
+uniform sampler2D u_display;
+layout(location = 0) out vec4 o_color;
+
+// Below this local contrast (absolute, or of the brightest luma) nothing is done.
+const float kEdgeMin = 1.0 / 24.0;
+const float kEdgeRelative = 1.0 / 8.0;
+// How far the sub-pixel term may move a sample (0: off, 1: a whole texel).
+const float kSubpixel = 0.75;
+// The search along the edge: steps of growing size, in texels.
+const int kSteps = 6;
+const float kStep[kSteps] = float[](1.0, 1.5, 2.0, 2.0, 4.0, 8.0);
+
+float lumaOf(vec3 c) {
+    return dot(c, vec3(0.299, 0.587, 0.114));
+}
+
+float lumaAt(vec2 uv) {
+    return lumaOf(textureLod(u_display, uv, 0.0).rgb);
+}
+
+void main() {
+    vec2 texel = 1.0 / vec2(textureSize(u_display, 0));
+    vec2 uv = gl_FragCoord.xy * texel;
+    vec4 centre = textureLod(u_display, uv, 0.0);
+    float lC = lumaOf(centre.rgb);
+    float lN = lumaAt(uv + vec2(0.0, texel.y)), lS = lumaAt(uv - vec2(0.0, texel.y));
+    float lE = lumaAt(uv + vec2(texel.x, 0.0)), lW = lumaAt(uv - vec2(texel.x, 0.0));
+    float lo = min(lC, min(min(lN, lS), min(lE, lW)));
+    float hi = max(lC, max(max(lN, lS), max(lE, lW)));
+    float range = hi - lo;
+    if (range < max(kEdgeMin, hi * kEdgeRelative)) {
+        o_color = centre;
+        return;
+    }
+    float lNE = lumaAt(uv + texel), lSW = lumaAt(uv - texel);
+    float lNW = lumaAt(uv + vec2(-texel.x, texel.y)), lSE = lumaAt(uv + vec2(texel.x, -texel.y));
+    // The edge runs along x where the luma changes most across y.
+    float acrossY = 2.0 * abs(lN + lS - 2.0 * lC) + abs(lNE + lSE - 2.0 * lE) +
+                    abs(lNW + lSW - 2.0 * lW);
+    float acrossX = 2.0 * abs(lE + lW - 2.0 * lC) + abs(lNE + lNW - 2.0 * lN) +
+                    abs(lSE + lSW - 2.0 * lS);
+    bool alongX = acrossY >= acrossX;
+    // The side of the pixel the edge is on: its neighbour of the larger step.
+    float lBelow = alongX ? lS : lW, lAbove = alongX ? lN : lE;
+    float stepBelow = abs(lBelow - lC), stepAbove = abs(lAbove - lC);
+    float across = alongX ? texel.y : texel.x;
+    float lEdge;
+    if (stepBelow >= stepAbove) {
+        across = -across;
+        lEdge = 0.5 * (lBelow + lC);
+    } else {
+        lEdge = 0.5 * (lAbove + lC);
+    }
+    float threshold = 0.25 * max(stepBelow, stepAbove);
+    // Walk both ways along the edge's middle until the luma leaves it.
+    vec2 onEdge = uv + (alongX ? vec2(0.0, 0.5 * across) : vec2(0.5 * across, 0.0));
+    vec2 along = alongX ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
+    vec2 uvP = onEdge + along, uvN = onEdge - along;
+    float dP = lumaAt(uvP) - lEdge, dN = lumaAt(uvN) - lEdge;
+    bool endP = abs(dP) >= threshold, endN = abs(dN) >= threshold;
+    for (int i = 1; i < kSteps && !(endP && endN); ++i) {
+        if (!endP) {
+            uvP += along * kStep[i];
+            dP = lumaAt(uvP) - lEdge;
+            endP = abs(dP) >= threshold;
+        }
+        if (!endN) {
+            uvN -= along * kStep[i];
+            dN = lumaAt(uvN) - lEdge;
+            endN = abs(dN) >= threshold;
+        }
+    }
+    float distP = alongX ? uvP.x - uv.x : uvP.y - uv.y;
+    float distN = alongX ? uv.x - uvN.x : uv.y - uvN.y;
+    bool nearerN = distN < distP;
+    // Blend only towards an end where the step goes the other way from the
+    // pixel's (the pixel is on the short side of the step there).
+    bool centreBelowEdge = lC < lEdge;
+    bool blends = ((nearerN ? dN : dP) < 0.0) != centreBelowEdge;
+    float offset = blends ? 0.5 - min(distN, distP) / (distN + distP) : 0.0;
+    // Sub-pixel: a pixel unlike its 3×3 neighbourhood's mean (a thin line).
+    float mean = (2.0 * (lN + lS + lE + lW) + lNE + lNW + lSE + lSW) / 12.0;
+    float sub = smoothstep(0.0, 1.0, clamp(abs(mean - lC) / range, 0.0, 1.0));
+    offset = max(offset, sub * sub * kSubpixel);
+    vec2 at = uv + (alongX ? vec2(0.0, offset * across) : vec2(offset * across, 0.0));
+    o_color = textureLod(u_display, at, 0.0);
+}
