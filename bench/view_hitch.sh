@@ -54,16 +54,10 @@ print(sys.argv[2], statistics.median(f[-20:-10]), f[-10], statistics.median(f[-9
 done
 [ -t 2 ] && printf '%*s\r' 20 '' >&2
 python3 - "$tmp/rows" "$rounds" "$load" "$(cut -d' ' -f1-3 /proc/loadavg)" >"$out" <<'EOF'
-import collections
-import statistics
 import sys
 import time
 
-rows, rounds, load_start, load_end = sys.argv[1:]
-runs = collections.defaultdict(list)
-for line in open(rows):
-    name, *v = line.split()
-    runs[name].append([float(x) for x in v])
+rounds, load_start, load_end = sys.argv[2:]
 print("# The first orbit after a light drag in `tsis view`\n")
 print(f"Made by `bench/view_hitch.sh {rounds}` on {time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())};"
       f" load average {load_start} at the start, {load_end} at the end. builtin:default, 512²,"
@@ -79,9 +73,6 @@ print(f"Made by `bench/view_hitch.sh {rounds}` on {time.strftime('%Y-%m-%dT%H:%M
       " its kind.\n")
 print("| session | change ms | first orbit ms | next orbits ms | slowest ms |")
 print("|---|---|---|---|---|")
-for name in ("paused", "straight", "env-turn", "material"):
-    cols = list(zip(*runs[name]))
-    print(f"| {name} | " + " | ".join(
-        f"{statistics.median(c):.1f} ({', '.join(f'{x:.0f}' for x in c)})" for c in cols) + " |")
 EOF
+python3 "$root/bench/rounds_table.py" "$tmp/rows" 1.0 1.0 1.0 1.0 >>"$out"
 cat "$out"

@@ -45,16 +45,10 @@ print(sys.argv[2], len(f), max(f[1:]), statistics.median(f[1:]), float(sys.argv[
 done
 [ -t 2 ] && printf '%*s\r' 20 '' >&2
 python3 - "$tmp/rows" "$rounds" "$load" "$(cut -d' ' -f1-3 /proc/loadavg)" >"$out" <<'PY'
-import collections
-import statistics
 import sys
 import time
 
-rows, rounds, load_start, load_end = sys.argv[1:]
-runs = collections.defaultdict(list)
-for line in open(rows):
-    name, *v = line.split()
-    runs[name].append([float(x) for x in v])
+rounds, load_start, load_end = sys.argv[2:]
 print("# A new material in `tsis view`: the frames while its transport is fitted\n")
 print(f"Made by `bench/view_new_material.sh {rounds}` on {time.strftime('%Y-%m-%dT%H:%MZ', time.gmtime())};"
       f" load average {load_start} at the start, {load_end} at the end. builtin:default, 512²,"
@@ -64,10 +58,6 @@ print(f"Made by `bench/view_new_material.sh {rounds}` on {time.strftime('%Y-%m-%
       " session's wall time. Median over the rounds, each round's value in brackets.\n")
 print("| binary | frames | slowest ms | median ms | session s |")
 print("|---|---|---|---|---|")
-for name, vals in runs.items():
-    cols = list(zip(*vals))
-    cells = [f"{statistics.median(c):.0f} ({', '.join(f'{x:.0f}' for x in c)})" for c in cols[:3]]
-    cells.append(f"{statistics.median(cols[3]):.1f} ({', '.join(f'{x:.1f}' for x in cols[3])})")
-    print(f"| `{name}` | " + " | ".join(cells) + " |")
 PY
+python3 "$root/bench/rounds_table.py" "$tmp/rows" 0.0 0.0 0.0 1.1 >>"$out"
 cat "$out"

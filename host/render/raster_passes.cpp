@@ -65,6 +65,24 @@ MediumRoughness mediumRoughness(const FrameContext& ctx) {
     return r;
 }
 
+// The views (of `count` lights) whose key changed, keyOf(i) against keys[i]:
+// each updated (update(i)) and its key kept, so that a frame that moves one
+// light of several redraws that one.
+template <typename KeyOf, typename Update>
+std::vector<size_t> changedViews(size_t count, std::vector<uint64_t>& keys, const KeyOf& keyOf,
+                                 const Update& update) {
+    keys.resize(count, 0);
+    std::vector<size_t> changed;
+    for (size_t i = 0; i < count; ++i) {
+        const uint64_t key = keyOf(i);
+        if (key == keys[i]) continue;
+        update(i);
+        keys[i] = key;
+        changed.push_back(i);
+    }
+    return changed;
+}
+
 // The camera's passes may cull back faces: the mesh is closed and outward and
 // the eye outside its bounding sphere (so outside the mesh).
 bool cullsBackFaces(const FrameContext& ctx, const GpuMesh& mesh) {
@@ -167,8 +185,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         [this, &graph, &ctx, lighting, lightMapsCl, eta, h](FrameGraph::Resources& res) {
             // Flux and position maps only when a light-view method reads them.
             const bool maps = graph.isRead(lightMapsCl);
-            // Each view is redrawn only when its own key changed: a frame that
-            // moves one light of several redraws that one.
+            // Each view is redrawn only when its own key changed.
             const std::vector<Light>& lights = ctx.scene->lights;
             // A big mesh's depth-only views from its coarser copy.
             const int lod = ctx.options->lightLodTriangles;
@@ -176,17 +193,16 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             const uint64_t shading =
                 Hasher(eta).add(ctx.albedo->key).add(ctx.normals->key).digest();
             lights_.resize(lights.size());
-            viewKeys_.resize(lights.size(), 0);
-            std::vector<size_t> changed;
-            for (size_t i = 0; i < lights.size(); ++i) {
-                const uint64_t key =
-                    lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading, lod);
-                if (key == viewKeys_[i]) continue;
-                updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
-                                maps);
-                viewKeys_[i] = key;
-                changed.push_back(i);
-            }
+            const std::vector<size_t> changed = changedViews(
+                lights.size(), viewKeys_,
+                [&](size_t i) {
+                    return lightViewKey(lights[i], meshHash_, ctx.lightResolution, maps, shading,
+                                        lod);
+                },
+                [&](size_t i) {
+                    updateLightView(lights_[i], lights[i], ctx.boundingRadius, ctx.lightResolution,
+                                    maps);
+                });
             size_t onWorker = 0;
             if (!changed.empty()) {
                 onWorker = lightPass_.run(*res.read(h.mesh), lights_, materials_, changed, depth);
@@ -213,16 +229,16 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 const std::vector<Light>& lights = ctx.scene->lights;
                 const int resolution = scatterViewResolution(ctx);
                 scatterViews_.resize(lights.size());
-                scatterKeys_.resize(lights.size(), 0);
-                std::vector<size_t> changed;
-                for (size_t i = 0; i < lights.size(); ++i) {
-                    const uint64_t key =
-                        lightViewKey(lights[i], meshHash_, resolution, true, ctx.normals->key, 0);
-                    if (key == scatterKeys_[i]) continue;
-                    updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius, resolution);
-                    scatterKeys_[i] = key;
-                    changed.push_back(i);
-                }
+                const std::vector<size_t> changed = changedViews(
+                    lights.size(), scatterKeys_,
+                    [&](size_t i) {
+                        return lightViewKey(lights[i], meshHash_, resolution, true,
+                                            ctx.normals->key, 0);
+                    },
+                    [&](size_t i) {
+                        updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius,
+                                          resolution);
+                    });
                 if (!changed.empty()) {
                     scatterPass_.run(*res.read(h.mesh), scatterViews_, materials_, changed);
                     glFinish();
