@@ -4,7 +4,8 @@
 // the image bilinearly that far across the edge as the pixel sits from the
 // nearer end's middle (a long, shallow step blends most at its ends); thin
 // features get a blend from their 3×3 contrast (the sub-pixel term).
-// u_display is sRGB in RGBA8, read through a bilinear sampler.
+// u_display is sRGB in RGBA8 (alpha: the coverage, or 1), read through a
+// bilinear sampler.
 uniform sampler2D u_display;
 layout(location = 0) out vec4 o_color;
 
@@ -23,6 +24,26 @@ float lumaOf(vec3 c) {
 
 float lumaAt(vec2 uv) {
     return lumaOf(textureLod(u_display, uv, 0.0).rgb);
+}
+
+// The bilinear read of the display at uv with its colour weighted by alpha
+// (straight alpha, --background transparent: an uncovered texel's colour is
+// none of the pixel's); with every alpha 1, the plain bilinear read.
+vec4 straightAlphaAt(vec2 uv) {
+    vec2 size = vec2(textureSize(u_display, 0));
+    vec2 p = uv * size - 0.5;
+    vec2 f = fract(p);
+    ivec2 base = ivec2(floor(p));
+    vec3 rgb = vec3(0.0);
+    float alpha = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        vec4 t = texelFetch(u_display, clamp(base + o, ivec2(0), ivec2(size) - 1), 0);
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        rgb += w * t.a * t.rgb;
+        alpha += w * t.a;
+    }
+    return alpha > 0.0 ? vec4(rgb / alpha, alpha) : textureLod(u_display, uv, 0.0);
 }
 
 void main() {
@@ -90,5 +111,5 @@ void main() {
     float sub = smoothstep(0.0, 1.0, clamp(abs(mean - lC) / range, 0.0, 1.0));
     offset = max(offset, sub * sub * kSubpixel);
     vec2 at = uv + (alongX ? vec2(0.0, offset * across) : vec2(offset * across, 0.0));
-    o_color = textureLod(u_display, at, 0.0);
+    o_color = straightAlphaAt(at);
 }
