@@ -81,10 +81,6 @@ Scene orbit(const Scene& base, int f, int frames, Motion motion) {
     return s;
 }
 
-Scene orbit(const Scene& base, int f, int frames, bool camera) {
-    return orbit(base, f, frames, camera ? Motion::Camera : Motion::Lights);
-}
-
 // The stats of `frames` frames of c, the lights (or the camera, or the map)
 // a step further round each (steps 1 … frames of frames + 1).
 std::vector<FrameStats> orbitFrames(Renderer& renderer, const BenchCase& c, int frames,
