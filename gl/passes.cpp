@@ -176,7 +176,7 @@ void ScatterViewPass::run(const GpuMesh& mesh, const std::vector<LightView>& vie
     GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(mesh.closedOutward()));
     for (size_t k = 0; k < changed.size(); ++k)
         (worker && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
-    if (!theirs.empty())
+    if (worker && !theirs.empty())
         worker->start([this, &mesh, &views, &media, theirs] {
             for (size_t i : theirs)
                 draw(mesh, views[i], media, side_.program(), side_.framebuffer(),
@@ -186,10 +186,10 @@ void ScatterViewPass::run(const GpuMesh& mesh, const std::vector<LightView>& vie
     try {
         for (size_t i : mine) draw(mesh, views[i], media, program_, 0, 0);
     } catch (...) {
-        if (!theirs.empty()) worker->wait();  // it reads `views`
+        if (worker && !theirs.empty()) worker->wait();  // it reads `views`
         throw;
     }
-    if (!theirs.empty()) worker->wait();
+    if (worker && !theirs.empty()) worker->wait();
     checkGl("ScatterViewPass");
 }
 

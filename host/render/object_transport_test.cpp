@@ -79,7 +79,7 @@ TEST(ObjectTransportBackground, TheNewestRequestRunsNext) {
     auto waitAndRender = [&] {
         const auto start = std::chrono::steady_clock::now();
         for (;;) {
-            const FrameResult f = background.render(scene, opt);
+            FrameResult f = background.render(scene, opt);
             if (std::isnan(f.stats.number("transport_pending"))) return f;
             EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::minutes(2));
             if (std::chrono::steady_clock::now() - start > std::chrono::minutes(2)) return f;

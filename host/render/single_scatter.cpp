@@ -192,17 +192,11 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 viewsOf_ = scatter.version;
             }
             // The points evaluated, the rest interpolated: a plan per view of
-            // the surface (the points), as the pyramid's.
+            // the surface (the points are the G-buffer's covered pixels).
             const SparseGrid grid = sparseGridFor(pixelMm(ctx.scene->camera, ctx.height),
                                                   kScatterGridMfp * smallestMeanFreePath(ctx), 0);
-            const uint64_t planKey = Hasher()
-                                         .addAll(points.pixel)
-                                         .addAll(points.host)
-                                         .add(ctx.width)
-                                         .add(ctx.height)
-                                         .add(grid.stride)
-                                         .add(grid.maxCornerMm)
-                                         .digest();
+            const uint64_t planKey =
+                Hasher(gbuffer.version).add(grid.stride).add(grid.maxCornerMm).digest();
             if (planKey != planKey_) {
                 plan_ = planSparsePixels(points.pixel, points.host, ctx.width, ctx.height,
                                          grid.stride, grid.maxCornerMm);
