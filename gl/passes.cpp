@@ -70,6 +70,34 @@ void copyDepth(const RenderTarget& from, const RenderTarget& to) {
                        0, from.width(), from.height(), 1);
 }
 
+// Draws each of `views`: every other one that mayMove(i) allows on
+// `worker`'s thread (there(i)), in parallel with the others here (here(i)),
+// then waits for the worker; null: all here. llvmpipe sets up each thread's
+// triangles alone, so two views take little more than one. Returns how many
+// the worker drew.
+template <typename MayMove, typename There, typename Here>
+size_t drawSplit(GlWorker* worker, const std::vector<size_t>& views, const MayMove& mayMove,
+                 const There& there, const Here& here, const char* what) {
+    std::vector<size_t> mine, theirs;
+    for (size_t k = 0; k < views.size(); ++k)
+        (worker && k % 2 == 1 && mayMove(views[k]) ? theirs : mine).push_back(views[k]);
+    const bool split = worker && !theirs.empty();
+    if (split)
+        worker->start([&there, &theirs, what] {
+            for (size_t i : theirs) there(i);
+            checkGl(what);
+        });
+    try {
+        for (size_t i : mine) here(i);
+    } catch (...) {
+        if (split) worker->wait();  // it reads the caller's views
+        throw;
+    }
+    if (split) worker->wait();
+    checkGl(what);
+    return theirs.size();
+}
+
 }  // namespace
 
 LightViewPass::LightViewPass()
@@ -110,28 +138,20 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
         views.resize(lights.size());
         for (size_t i = 0; i < views.size(); ++i) views[i] = i;
     }
-    // Every other depth-only view to the worker's thread: llvmpipe sets up
-    // each thread's triangles alone, so two views take little more than one.
-    std::vector<size_t> mine, theirs;
+    // Every other depth-only view to the worker's thread.
     const GpuMesh& depthDrawn = depthMesh ? *depthMesh : mesh;
     GlWorker* worker = side_.workerFor(depthDrawn.trianglesSetUp(depthDrawn.closedOutward()));
-    for (size_t k = 0; k < views.size(); ++k) {
-        const bool maps = lights[views[k]].target != nullptr;
-        (worker && !maps && k % 2 == 1 ? theirs : mine).push_back(views[k]);
-    }
-    if (!theirs.empty())
-        worker->start([this, &depthDrawn, &lights, theirs] {
-            for (size_t i : theirs)
-                drawDepth(depthDrawn, lights[i], static_cast<int>(i), side_.program(),
-                          side_.framebuffer(), side_.vertexArray());
-            checkGl("LightViewPass (worker)");
-        });
-    try {
-        for (size_t i : mine) {
+    return drawSplit(
+        worker, views, [&](size_t i) { return lights[i].target == nullptr; },
+        [&](size_t i) {
+            drawDepth(depthDrawn, lights[i], static_cast<int>(i), side_.program(),
+                      side_.framebuffer(), side_.vertexArray());
+        },
+        [&](size_t i) {
             if (!lights[i].target) {
                 drawDepth(depthDrawn, lights[i], static_cast<int>(i), depthProgram_, framebuffer_,
                           0);
-                continue;
+                return;
             }
             bindAndClearLightView(framebuffer_, lights[i], shadows_, static_cast<int>(i));
             program_.use();
@@ -146,14 +166,8 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
             program_.set("u_texelAreaMm", lights[i].texelAreaMm);
             program_.set("u_resolution", glm::vec2(lights[i].resolution));
             drawDepthTested(mesh, mesh.closedOutward());
-        }
-    } catch (...) {
-        if (!theirs.empty()) worker->wait();  // it reads `lights`
-        throw;
-    }
-    if (!theirs.empty()) worker->wait();
-    checkGl("LightViewPass");
-    return theirs.size();
+        },
+        "LightViewPass");
 }
 
 ScatterViewPass::ScatterViewPass() : program_("mesh.vert", "scatter_view.frag") {}
@@ -170,27 +184,14 @@ void ScatterViewPass::draw(const GpuMesh& mesh, const LightView& view, const Mat
 
 void ScatterViewPass::run(const GpuMesh& mesh, const std::vector<LightView>& views,
                           const MaterialTables& media, const std::vector<size_t>& changed) {
-    // Every other view on the worker: llvmpipe sets up each thread's
-    // triangles alone, and these small views are all set-up.
-    std::vector<size_t> mine, theirs;
-    GlWorker* worker = side_.workerFor(mesh.trianglesSetUp(mesh.closedOutward()));
-    for (size_t k = 0; k < changed.size(); ++k)
-        (worker && k % 2 == 1 ? theirs : mine).push_back(changed[k]);
-    if (worker && !theirs.empty())
-        worker->start([this, &mesh, &views, &media, theirs] {
-            for (size_t i : theirs)
-                draw(mesh, views[i], media, side_.program(), side_.framebuffer(),
-                     side_.vertexArray());
-            checkGl("ScatterViewPass (worker)");
-        });
-    try {
-        for (size_t i : mine) draw(mesh, views[i], media, program_, 0, 0);
-    } catch (...) {
-        if (worker && !theirs.empty()) worker->wait();  // it reads `views`
-        throw;
-    }
-    if (worker && !theirs.empty()) worker->wait();
-    checkGl("ScatterViewPass");
+    // Every other view on the worker: these small views are all set-up.
+    drawSplit(
+        side_.workerFor(mesh.trianglesSetUp(mesh.closedOutward())), changed,
+        [](size_t) { return true; },
+        [&](size_t i) {
+            draw(mesh, views[i], media, side_.program(), side_.framebuffer(), side_.vertexArray());
+        },
+        [&](size_t i) { draw(mesh, views[i], media, program_, 0, 0); }, "ScatterViewPass");
 }
 
 GeometryAtlasPass::GeometryAtlasPass() : program_("atlas.vert", "atlas.frag") {}

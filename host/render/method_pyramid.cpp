@@ -147,16 +147,12 @@ double PyramidMethod::gatherAtPixels(const FrameContext& ctx, const SurfacePoint
     if (replan) {
         plan_ =
             planSparsePixels(points.pixel, points.host, ctx.width, ctx.height, stride, maxCornerMm);
-        if (!plan_.evaluate.empty())
-            cl_.queue().enqueueWriteBuffer(
-                order_.reserve(cl_.context(), plan_.evaluate.size() * sizeof(int)), CL_FALSE, 0,
-                plan_.evaluate.size() * sizeof(int), plan_.evaluate.data());
         interpolation_.upload(plan_);
         planKey_ = planKey;
     }
     stats.set("pyramid_plan_reused", replan ? 0.0 : 1.0);
     const std::vector<int>& order = plan.evaluate;
-    const double ms = gatherTree(points.xyz, order_.buffer, static_cast<int>(order.size()),
+    const double ms = gatherTree(points.xyz, interpolation_.order(), static_cast<int>(order.size()),
                                  o.pyramidEpsilon, ell, radiosity);
     // The rest from the grid, in the same buffer (no trip through the host).
     interpolation_.run(radiosity);

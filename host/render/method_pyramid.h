@@ -67,11 +67,10 @@ class PyramidMethod : public Method {
     // What the node sums were made from (the flux atlas' version,
     // leavesVersion_, the normal atlas' version: its areas).
     uint64_t builtFluxVersion_ = 0, builtLeavesVersion_ = 0, builtNormalVersion_ = 0;
-    SparseInterpolation interpolation_;
-    GrowingBuffer order_;  // the covered pixels in tiles (FluxTree::tileOrder)
     // The last plan of the pixels to evaluate and to interpolate, and what it
     // was made from (the points, the image size, the grid): on the device in
-    // order_ and interpolation_.
+    // interpolation_.
+    SparseInterpolation interpolation_;
     SparsePixels plan_;
     uint64_t planKey_ = 0;
     // What the last frame's B was made of (the surface's B: sums, table,

@@ -88,9 +88,6 @@ void RadiosityAtlas::plan(const std::vector<float>& positions, int resolution, i
     }
     cl::Buffer& dense = xyz_.reserve(cl_.context(), texels * 4 * sizeof(float));
     cl_.queue().enqueueWriteBuffer(dense, CL_TRUE, 0, texels * 4 * sizeof(float), ring.data());
-    const size_t bytes = plan_.evaluate.size() * sizeof(int);
-    cl::Buffer& order = order_.reserve(cl_.context(), bytes);
-    if (bytes > 0) cl_.queue().enqueueWriteBuffer(order, CL_TRUE, 0, bytes, plan_.evaluate.data());
     b_.reserve(cl_.context(), texels * 4 * sizeof(float));
     interpolation_.upload(plan_);
     resolution_ = resolution;

@@ -39,7 +39,7 @@ class RadiosityAtlas {
     // neighbours) and B, an image of the same texels (float4; those without
     // a position undefined).
     const cl::Buffer& points() const { return xyz_.buffer; }
-    const cl::Buffer& order() const { return order_.buffer; }
+    const cl::Buffer& order() const { return interpolation_.order(); }
     int evaluated() const { return static_cast<int>(plan_.evaluate.size()); }
     int covered() const { return covered_; }
     cl::Buffer& values() { return b_.buffer; }
@@ -68,7 +68,7 @@ class RadiosityAtlas {
     cl::Kernel lookup_;
     SparsePixels plan_;
     SparseInterpolation interpolation_;
-    GrowingBuffer xyz_, order_, b_, none_;
+    GrowingBuffer xyz_, b_, none_;
     std::vector<float> ring_, hostB_;
     bool hostCurrent_ = false;
     int resolution_ = 0, covered_ = 0;

@@ -7,6 +7,7 @@
 #include "cl/launch.h"
 #include "physics/fresnel.h"
 #include "render/light_map_info.h"
+#include "render/surface_points.h"
 #include "util/error.h"
 #include "util/hash.h"
 
@@ -26,23 +27,21 @@ TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit) {
 
 namespace {
 
-// The media's smallest mean free path 1/max σt′ (mm).
-double smallestMeanFreePath(const FrameContext& ctx) {
-    double sigma = 0;
+// The smallest mean free path 1/max σt′ (mm) of the scene's media.
+double mediaMeanFreePath(const FrameContext& ctx) {
+    double ell = INFINITY;
     const SceneMedia& sm = *ctx.media;
-    for (size_t m = 0; m < sm.etaOfMedium.size(); ++m) {
-        const Material& mat = ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]]);
-        const glm::dvec3 st = mat.sigmaSPrime + mat.sigmaA;
-        sigma = std::max({sigma, st.x, st.y, st.z});
-    }
-    return 1.0 / sigma;
+    for (size_t m = 0; m < sm.etaOfMedium.size(); ++m)
+        ell = std::min(
+            ell, smallestMeanFreePath(ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]])));
+    return ell;
 }
 
 }  // namespace
 
 int scatterViewResolution(const FrameContext& ctx) {
     const double texels =
-        std::ceil(2.0 * ctx.boundingRadius / smallestMeanFreePath(ctx) * kScatterTexelsPerMfp);
+        std::ceil(2.0 * ctx.boundingRadius / mediaMeanFreePath(ctx) * kScatterTexelsPerMfp);
     const int most = std::min(kScatterMaxResolution, ctx.lightResolution);
     return static_cast<int>(
         std::clamp(texels, double(std::min(kScatterMinResolution, most)), double(most)));
@@ -194,16 +193,12 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
             // The points evaluated, the rest interpolated: a plan per view of
             // the surface (the points are the G-buffer's covered pixels).
             const SparseGrid grid = sparseGridFor(pixelMm(ctx.scene->camera, ctx.height),
-                                                  kScatterGridMfp * smallestMeanFreePath(ctx), 0);
+                                                  kScatterGridMfp * mediaMeanFreePath(ctx), 0);
             const uint64_t planKey =
                 Hasher(gbuffer.version).add(grid.stride).add(grid.maxCornerMm).digest();
             if (planKey != planKey_) {
                 plan_ = planSparsePixels(points.pixel, points.host, ctx.width, ctx.height,
                                          grid.stride, grid.maxCornerMm);
-                const size_t bytes = std::max<size_t>(plan_.evaluate.size(), 1) * sizeof(int);
-                queue.enqueueWriteBuffer(order_.reserve(cl_.context(), bytes), CL_TRUE, 0,
-                                         plan_.evaluate.size() * sizeof(int),
-                                         plan_.evaluate.data());
                 interpolation_.upload(plan_);
                 planKey_ = planKey;
             }
@@ -224,8 +219,8 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 const TsisScatterLight sl = {
                     light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
                     light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
-                setKernelArgs(kernel_, points.xyz, normals_.buffer, order_.buffer, evaluated, eye,
-                              mediaBuffer, static_cast<int>(media.size()),
+                setKernelArgs(kernel_, points.xyz, normals_.buffer, interpolation_.order(),
+                              evaluated, eye, mediaBuffer, static_cast<int>(media.size()),
                               lightMapInfo(views[l], views[l].resolution), sl,
                               viewPositions_[l].buffer, viewNormals_[l].buffer,
                               kSingleScatterStrata, l > 0 ? 1 : 0, out);

@@ -79,7 +79,7 @@ class SingleScatter {
     SparseInterpolation interpolation_;
     SparsePixels plan_;
     uint64_t planKey_ = 0;
-    GrowingBuffer normals_, media_, out_, order_;
+    GrowingBuffer normals_, media_, out_;
     std::vector<GrowingBuffer> viewPositions_, viewNormals_;
     uint64_t normalsOf_ = 0, viewsOf_ = 0;  // G-buffer and scatter-view versions
 };

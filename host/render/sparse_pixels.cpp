@@ -161,6 +161,10 @@ SparseInterpolation::SparseInterpolation(ClRuntime& cl)
 void SparseInterpolation::upload(const SparsePixels& plan) {
     events_.clear();
     uploaded_ = true;
+    const size_t evaluate = plan.evaluate.size() * sizeof(int);
+    cl::Buffer& order = order_.reserve(cl_.context(), evaluate);
+    if (evaluate > 0)
+        cl_.queue().enqueueWriteBuffer(order, CL_TRUE, 0, evaluate, plan.evaluate.data());
     const std::vector<TsisInterpolatedPixel>& p = plan.interpolate;
     levelEnds_ = plan.levelEnds;
     if (p.empty()) return;

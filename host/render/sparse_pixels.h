@@ -65,8 +65,11 @@ class SparseInterpolation {
   public:
     explicit SparseInterpolation(ClRuntime& cl);
     // The plan's pixels to the device (blocking: the plan may be gone before
-    // the queue runs), kept for the runs after it.
+    // the queue runs), kept for the runs after it: those to interpolate, and
+    // those to evaluate as order() for the caller's kernel.
     void upload(const SparsePixels& plan);
+    // The last upload's points to evaluate (SparsePixels::evaluate), int each.
+    const cl::Buffer& order() const { return order_.buffer; }
     // rgba: float4 per packed point, from the last upload. Enqueues without
     // waiting; lastMs() waits.
     void run(cl::Buffer& rgba);
@@ -81,7 +84,7 @@ class SparseInterpolation {
   private:
     ClRuntime& cl_;
     cl::Kernel kernel_;
-    GrowingBuffer pixels_;
+    GrowingBuffer pixels_, order_;
     std::vector<int> levelEnds_;  // the plan's (SparsePixels::levelEnds)
     std::vector<cl::Event> events_;
     bool uploaded_ = false;  // an upload since the last run
