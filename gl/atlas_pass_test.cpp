@@ -44,7 +44,7 @@ class AtlasPassTest : public ::testing::Test {
     const MaterialTables& materials() {
         tables.updateMedia({{1.3f, 1.0f}});
         tables.updateAlbedo({}, 0, 0);
-        tables.updateNormals({}, 0, 0);
+        tables.updateSurface({}, {}, 0, 0);
         return tables;
     }
     GlContext gl;

@@ -71,7 +71,7 @@ class GlWorkerScene : public ::testing::Test {
     void SetUp() override {
         tables.updateMedia({{1.3f, 1.0f}});
         tables.updateAlbedo({}, 0, 0);
-        tables.updateNormals({}, 0, 0);
+        tables.updateSurface({}, {}, 0, 0);
     }
     GlContext gl;
     GpuMesh gpu{defaultMesh()};

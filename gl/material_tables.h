@@ -6,11 +6,13 @@
 //    and composited with their own;
 //  * per atlas texel, when the scene has one: the albedo factor
 //    (render/albedo_atlas.h) that scales the light entering there, and the
-//    shading normal of the normal maps (render/normal_atlas.h).
+//    shading normal of the normal maps and the roughness of the roughness
+//    maps (render/surface_atlas.h).
 #pragma once
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <vector>
 
@@ -38,21 +40,23 @@ class MaterialTables {
     // The albedo factor per atlas texel (res², GL row order), or none
     // (`factor` empty); uploaded when `version` changed.
     void updateAlbedo(const std::vector<glm::vec3>& factor, int resolution, uint64_t version);
-    // The shading normal per atlas texel (res², GL row order; (0, 0, 0): the
-    // geometry's), or none (`normal` empty); uploaded when `version` changed.
-    void updateNormals(const std::vector<glm::vec3>& normal, int resolution, uint64_t version);
+    // The shading normal (xyz; (0, 0, 0): the geometry's) and roughness (w;
+    // 0: the medium's) per atlas texel (res², GL row order), either or both
+    // none (empty); uploaded when `version` changed.
+    void updateSurface(const std::vector<glm::vec3>& normal, const std::vector<float>& roughness,
+                       int resolution, uint64_t version);
     // Binds the tables to texture units `unit`, `unit` + 1 and `normalUnit`
-    // (common.glsl: u_media, u_albedo, u_textured, u_shadingNormal,
-    // u_normalMapped).
+    // (common.glsl: u_media, u_albedo, u_textured, u_surfaceMaps,
+    // u_normalMapped, u_roughnessMapped).
     void bind(const ShaderProgram& program, int unit, int normalUnit) const;
     // Whether the scene has an albedo factor (a program's TSIS_TEXTURED).
     bool textured() const { return textured_; }
 
   private:
     std::vector<MediumSurface> media_;
-    std::unique_ptr<FloatTexture> mediaTexture_, albedoTexture_, normalTexture_;
-    bool textured_ = false, normalMapped_ = false;
-    uint64_t albedoVersion_ = 0, normalVersion_ = 0;
+    std::unique_ptr<FloatTexture> mediaTexture_, albedoTexture_, surfaceTexture_;
+    bool textured_ = false, normalMapped_ = false, roughnessMapped_ = false;
+    uint64_t albedoVersion_ = 0, surfaceVersion_ = 0;
 };
 
 // Media per texture row (common.glsl mediumOf reads the same layout).

@@ -409,6 +409,10 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         materials.bind(*p, kMediaUnit, kShadingNormalUnit);
         p->set("u_eye", eye);
         p->set("u_envLayers", env.layers);
+        p->set("u_ladderSteps", env.ladderSteps);
+        p->set("u_ladderLayer", env.ladderLayer);
+        p->set("u_ladderRow", env.ladderRow);
+        p->set("u_ladderMin", env.ladderMin);
         p->set("u_worldToMap", env.worldToMap);
         p->set("u_envScale", env.scale);
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);

@@ -210,13 +210,17 @@ class RadiosityLookupPass {
 
 // The environment's reflection for the composite (render/env_reflection.h):
 // the prefiltered residual (lat-long, map frame; 0: none; `layers` bands of
-// rows, one per roughness: MediumSurface::envLayer) and the albedo table per
-// medium, the rotation world → map and the map's intensity.
+// rows, one per roughness: MediumSurface::envLayer, then with a roughness
+// map the ladder's `ladderSteps` from `ladderLayer`) and the albedo table
+// (a row per medium, then per medium and ladder step from `ladderRow`), the
+// rotation world → map and the map's intensity.
 struct EnvReflectionTextures {
     GLuint prefiltered = 0, albedo = 0;
     int layers = 1;
     glm::mat3 worldToMap{1.0f};
     float scale = 0;
+    int ladderSteps = 0, ladderLayer = 0, ladderRow = 0;
+    float ladderMin = 0;
 };
 
 // The display image's background (common.glsl backgroundAt; render_options.h

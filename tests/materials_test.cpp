@@ -11,9 +11,13 @@
 #include "atlas/atlas.h"
 #include "mesh/media.h"
 #include "render/albedo_inversion.h"
+#include "render/env_reflection.h"
+#include "render/mfp_map.h"
+#include "render/surface_atlas.h"
 #include "scene/environment.h"
 #include "support/boxes.h"
 #include "support/render.h"
+#include "util/error.h"
 
 namespace tsis {
 namespace {
@@ -304,7 +308,7 @@ std::shared_ptr<AlbedoTexture> constantNormalMap(const glm::dvec3& t) {
     return map;
 }
 
-// Normal maps (render/normal_atlas.h) turn the shading normal: on a plane
+// Normal maps (render/surface_atlas.h) turn the shading normal: on a plane
 // whose map tilts every normal by θ, the G-buffer's normal is the tilted one
 // (along the texture's u for +x, up the image for +y), and the radiosity is
 // the plane's own under a light θ off its normal, as the entry's cosine
@@ -351,6 +355,233 @@ TEST(Materials, NormalMapTurnsTheShadingNormalAndTheEntry) {
             EXPECT_NEAR(b[c] / expected[c], 1.0, 0.01) << c;
             EXPECT_LT(b[c] / straight[c], 0.95) << c;  // the tilt shows
         }
+    }
+}
+
+// A metallic-roughness texture: G = g at every texel (R and B, the
+// metalness, hold other values: only G is R).
+std::shared_ptr<AlbedoTexture> roughnessMap(double g) {
+    auto map = std::make_shared<AlbedoTexture>();
+    map->name = "roughness";
+    map->image = ImageF{2, 2, 3, {}};
+    for (int i = 0; i < 4; ++i)
+        map->image.pixels.insert(map->image.pixels.end(), {0.9f, float(g), 0.4f});
+    return map;
+}
+
+// A roughness map (render/surface_atlas.h) sets the lobe's R per texel, as
+// its factor × its G: each cube renders as the cube whose material has that
+// R, in the lights' lobe and in the environment's reflection (which blends
+// the two nearest steps of the prefiltered ladder: exact on a step, within
+// the stated bound between steps); --roughness R replaces the maps too.
+TEST(Materials, RoughnessMapSetsTheLobePerTexel) {
+    Scene files = twoCubes("marble", "marble");
+    files.mesh.texcoords = files.mesh.uvs;
+    const double onStep[2] = {ladderRoughness(4), ladderRoughness(6)};
+    RenderOptions opt = test::smallOptions(96, 256, 64);
+    opt.aa = 1;
+    for (bool env : {false, true}) {
+        SCOPED_TRACE(env ? "a sky as well" : "a light");
+        Scene scene = files;
+        if (env) {
+            const int w = 32, h = 16;
+            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
+            for (int y = 0; y < h; ++y)  // bright above, dark below: the lobe's width shows
+                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
+            scene.env.map = splitEnvironment("sky", w, h, 3, sky);
+        }
+        // The maps: R = 0.5 × G on the left cube, 1 × G on the right.
+        auto withMaps = [&](double left, double right) {
+            Scene s = scene;
+            s.objectMaterials[0].roughness = 0.5;
+            s.objectMaterials[0].roughnessMap = roughnessMap(left / 0.5);
+            s.objectMaterials[1].roughness = -1;  // no factor: 1
+            s.objectMaterials[1].roughnessMap = roughnessMap(right);
+            return s;
+        };
+        auto withoutMaps = [&](double left, double right) {
+            Scene s = scene;
+            s.objectMaterials[0].roughness = left;
+            s.objectMaterials[1].roughness = right;
+            return s;
+        };
+        const FrameResult mapped = test::renderWith(withMaps(onStep[0], onStep[1]), opt, "pyramid");
+        const FrameResult plain =
+            test::renderWith(withoutMaps(onStep[0], onStep[1]), opt, "pyramid");
+        EXPECT_LT(cubeError(mapped, plain, true, true), 1e-5);
+        EXPECT_LT(cubeError(mapped, plain, false, true), 1e-5);
+        // The factors alone (0.5 and 1) would differ by far more.
+        const FrameResult factors = test::renderWith(withoutMaps(0.5, 1.0), opt, "pyramid");
+        EXPECT_GT(cubeError(factors, plain, true, true), 0.005);
+        EXPECT_GT(cubeError(factors, plain, false, true), 0.005);
+        // Between the ladder's steps (0.15: between 0.109 and 0.184; 0.7:
+        // between 0.584 and 0.776).
+        const double between = std::max(
+            cubeError(test::renderWith(withMaps(0.15, 0.7), opt, "pyramid"),
+                      test::renderWith(withoutMaps(0.15, 0.7), opt, "pyramid"), true, true),
+            cubeError(test::renderWith(withMaps(0.15, 0.7), opt, "pyramid"),
+                      test::renderWith(withoutMaps(0.15, 0.7), opt, "pyramid"), false, true));
+        std::printf("roughness map between the ladder's steps: %.2e rel. RMSE (%s)\n", between,
+                    env ? "sky" : "light");
+        EXPECT_LT(between, env ? 8e-3 : 1e-5);
+        // --roughness R: every surface's, maps included.
+        RenderOptions all = opt;
+        all.roughness = 0.3f;
+        const FrameResult fixed = test::renderWith(withoutMaps(0.5, 1.0), all, "pyramid");
+        const FrameResult over = test::renderWith(withMaps(onStep[0], onStep[1]), all, "pyramid");
+        EXPECT_LT(cubeError(over, fixed, true, true), 1e-6);
+        EXPECT_LT(cubeError(over, fixed, false, true), 1e-6);
+    }
+}
+
+// The roughness atlas holds each texel's own R: a map whose left half is
+// 0.2 and right half 0.9 (64 texels across, bilinear: a texel either side
+// of the border and of the wrap blends) gives those on each side.
+TEST(Materials, RoughnessAtlasFollowsTheMapPerTexel) {
+    Scene s = test::planeScene("marble");
+    s.mesh.texcoords = s.mesh.uvs;
+    ObjectMaterial o = objectMaterial("marble");
+    o.roughness = 1.0;
+    auto map = std::make_shared<AlbedoTexture>();
+    map->name = "halves";
+    map->image = ImageF{64, 1, 3, {}};
+    for (int x = 0; x < 64; ++x)
+        map->image.pixels.insert(map->image.pixels.end(), {0.0f, x < 32 ? 0.2f : 0.9f, 0.0f});
+    o.roughnessMap = map;
+    s.objectMaterials = {o};
+    s.mesh.materialIds.assign(s.mesh.triangles.size(), 0);
+    const int res = 256;
+    const SurfaceAtlas atlas = bakeSurfaceAtlas(s, res, true);
+    ASSERT_EQ(atlas.roughness.size(), static_cast<size_t>(res) * res);
+    EXPECT_TRUE(atlas.normal.empty());  // no normal map: none baked
+    int counted[2] = {0, 0};
+    for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) {
+            const float r = atlas.roughness[static_cast<size_t>(y) * res + x];
+            if (r == 0) continue;  // no triangle here
+            const double u = (x + 0.5) / res;
+            if (std::abs(u - 0.5) < 1.0 / 64 || u < 1.0 / 128 || u > 1 - 1.0 / 128) continue;
+            EXPECT_NEAR(r, u < 0.5 ? 0.2 : 0.9, 1e-6) << x << " " << y;
+            ++counted[u < 0.5 ? 0 : 1];
+        }
+    EXPECT_GT(counted[0], 1000);
+    EXPECT_GT(counted[1], 1000);
+    EXPECT_TRUE(bakeSurfaceAtlas(s, res, false).empty());  // --roughness R: no map read
+}
+
+// The split box of one material whose mean-free-path map (render/mfp_map.h)
+// scales the x < 0 half by `left` and the x > 0 half by `right`: a 2×1 map,
+// each half's texture coordinates at its texel's centre.
+Scene mappedBox(const char* preset, double left, double right) {
+    Scene s = splitBox(preset, preset);
+    s.mesh.materialIds.assign(s.mesh.triangles.size(), 0);
+    s.objectMaterials.resize(1);
+    s.mesh.texcoords.assign(s.mesh.positions.size(), glm::vec2(-1.0f));
+    for (const glm::uvec3& tri : s.mesh.triangles) {
+        const float x =
+            s.mesh.positions[tri[0]].x + s.mesh.positions[tri[1]].x + s.mesh.positions[tri[2]].x;
+        const glm::vec2 tc(x < 0 ? 0.25f : 0.75f, 0.5f);
+        for (int k = 0; k < 3; ++k) {
+            // Each quad has its own corners: no corner is on both halves.
+            EXPECT_TRUE(s.mesh.texcoords[tri[k]] == glm::vec2(-1.0f) ||
+                        s.mesh.texcoords[tri[k]] == tc);
+            s.mesh.texcoords[tri[k]] = tc;
+        }
+    }
+    auto map = std::make_shared<AlbedoTexture>();
+    map->name = "halves";
+    map->image = ImageF{2, 1, 3, {}};
+    for (double v : {left, right})
+        for (int c = 0; c < 3; ++c) map->image.pixels.push_back(float(v));
+    ObjectMaterial& o = s.objectMaterials[0];
+    o.mfpSteps = mfpSteps(map->image, map->name, o.medium);
+    o.mfpMap = map;
+    return s;
+}
+
+// The box all of `preset` with its mean free path × `scale` (σ / scale).
+Scene scaledBox(const char* preset, double scale) {
+    Scene s = splitBox(preset, preset);
+    for (ObjectMaterial& o : s.objectMaterials) {
+        o.medium.sigmaSPrime /= scale;
+        o.medium.sigmaA /= scale;
+    }
+    return s;
+}
+
+// A mean-free-path map scales the mean free path per texel: each half of a
+// box whose map halves it on one side and doubles it on the other renders as
+// the box all of that half's scale does (each point scatters with its
+// texel's step, over the light entering the whole solid, as a solid of two
+// materials does), in every method but volumetric (its walk fills the solid
+// with the material's own medium).
+TEST(Materials, MeanFreePathMapScalesEachTexelsMedium) {
+    const Scene mapped = mappedBox("skin1", 0.5, 2.0);
+    ASSERT_EQ(mapped.objectMaterials[0].mfpSteps.size(), 8u);
+    const Scene half = scaledBox("skin1", 0.5), twice = scaledBox("skin1", 2.0);
+    EXPECT_EQ(mapped.objectMaterials[0].mfpSteps.front().medium.sigmaA,
+              half.objectMaterials[0].medium.sigmaA);
+    RenderOptions opt = test::smallOptions(96, 512);
+    for (const std::string& method : methodNames()) {
+        if (method == "volumetric") continue;
+        const FrameResult f = test::renderWith(mapped, opt, method);
+        const FrameResult a = test::renderWith(half, opt, method);
+        const FrameResult b = test::renderWith(twice, opt, method);
+        const double el = cubeError(f, a, true, false), er = cubeError(f, b, false, false);
+        std::printf("%-12s mfp x0.5 half %.2e, mfp x2 half %.2e\n", method.c_str(), el, er);
+        double left = method == "pyramid" ? 2e-3 : 1e-4, right = left;
+        if (method == "mis") {
+            RenderOptions other = opt;
+            other.seed = opt.seed + 1;
+            left = 2 * cubeError(test::renderWith(half, other, method), a, true, false);
+            right = 2 * cubeError(test::renderWith(twice, other, method), b, false, false);
+        }
+        EXPECT_LT(el, left) << method;
+        EXPECT_LT(er, right) << method;
+        // The two scales differ there by far more.
+        EXPECT_GT(cubeError(a, b, false, false), 0.05) << method;
+    }
+}
+
+// The steps: one for a constant map, geometric between the map's extremes at
+// most kMfpStepRatio apart (kMaxMfpSteps at most), the albedo kept; each
+// texture coordinate takes its nearest step; a texel of 0 is an error.
+TEST(Materials, MeanFreePathMapSteps) {
+    const Material skin = presetMaterial("skin1");
+    auto map = [](std::vector<float> values) {
+        ImageF m{static_cast<int>(values.size()), 1, 1, values};
+        return m;
+    };
+    const std::vector<MfpStep> one = mfpSteps(map({0.7f, 0.7f}), "constant", skin);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_NEAR(one[0].scale, 0.7, 1e-6);
+    const std::vector<MfpStep> three = mfpSteps(map({1.0f, 1.4375f}), "narrow", skin);
+    ASSERT_EQ(three.size(), 3u);  // 1.4375 < 1.2²: two ratios of √1.4375
+    EXPECT_NEAR(three[1].scale, std::sqrt(1.4375), 1e-6);
+    const std::vector<MfpStep> wide = mfpSteps(map({0.1f, 10.0f}), "wide", skin);
+    ASSERT_EQ(wide.size(), static_cast<size_t>(kMaxMfpSteps));
+    const glm::dvec3 a = albedoOf(skin, ProfileModel::Dipole);
+    for (const MfpStep& st : wide) {
+        const glm::dvec3 as = albedoOf(st.medium, ProfileModel::Dipole);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(as[c], a[c], 1e-9);
+        const glm::dvec3 ratio = meanFreePathOf(st.medium) / meanFreePathOf(skin);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], st.scale, 1e-5 * st.scale);
+    }
+    ObjectMaterial o;
+    o.mfpSteps = wide;
+    auto texture = std::make_shared<AlbedoTexture>();
+    texture->image = map({0.1f, 10.0f});
+    o.mfpMap = texture;
+    EXPECT_EQ(mfpStepAt(o, glm::vec2(0.25f, 0.5f)), 0u);
+    EXPECT_EQ(mfpStepAt(o, glm::vec2(0.75f, 0.5f)), wide.size() - 1);
+    EXPECT_EQ(mfpStepAt(o, glm::vec2(0.5f, 0.5f)), 6u);  // 5.05: the nearest step in log
+    try {
+        mfpSteps(map({1.0f, 0.0f}), "holes.png", skin);
+        ADD_FAILURE() << "a texel of 0 was taken";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(),
+                     "mean free path map 'holes.png': texel (1, 0) scales by 0; it must be finite "
+                     "and > 0");
     }
 }
 

@@ -2,7 +2,8 @@
 // separate quads, one with a normal map (a PNG written here) and a smooth
 // roughness, one without a map and rough, rendered by `tsis render`: the
 // mapped quad's pixels have the map's normal and the other's the
-// geometry's, and --roughness R replaces both files' roughnesses.
+// geometry's, and --roughness R replaces both files' roughnesses; a grey
+// map_Pr is the lobe's R where it lies.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,6 +98,30 @@ TEST(SurfaceMaps, NormalMapAndRoughnessPerObjectFromTheFile) {
     EXPECT_EQ(same, 0.0);
     EXPECT_GT(differs[0], 1e-4);
     EXPECT_GT(differs[1], 1e-4);
+
+    // map_Pr: a grey PNG of 153/255 (linear: R 0.6) on the mapped quad in
+    // place of its Pr renders as Pr 0.6 does.
+    writeImage8(dir.file("rough.png"), 2, 2, 1, std::vector<uint8_t>(4, 153));
+    auto library = [&](const std::string& mapped) {
+        std::ofstream(dir.file("q.mtl"))
+            << "newmtl mapped\nKd 0.8 0.8 0.8\n"
+            << mapped << "norm tilt.png\nnewmtl plain\nKd 0.8 0.8 0.8\nPr 0.9\n";
+    };
+    library("map_Pr rough.png\n");
+    const ImageF viaMap = radiance("", "map");
+    library("Pr 0.6\n");
+    const ImageF viaPr = radiance("", "pr");
+    double mapGap = 0, apart = 0;
+    for (int y = 0; y < file.height; ++y)
+        for (int x = 0; x < file.width; ++x) {
+            if (!(coverage.at(x, y, 0) > 0.99) || position.at(x, y, 0) >= 0) continue;
+            for (int c = 0; c < 3; ++c) {
+                mapGap = std::max(mapGap, double(std::abs(viaMap.at(x, y, c) - viaPr.at(x, y, c))));
+                apart = std::max(apart, double(std::abs(viaMap.at(x, y, c) - file.at(x, y, c))));
+            }
+        }
+    EXPECT_LT(mapGap, 1e-6);
+    EXPECT_GT(apart, 1e-4);  // and not as the file's Pr 0.1
 }
 
 }  // namespace

@@ -48,16 +48,26 @@ uniform bool u_textured;
 vec3 albedoFactor(vec2 atlasUv) {
     return u_textured ? texture(u_albedo, atlasUv).rgb : vec3(1.0);
 }
-// With u_normalMapped, the normal maps' shading normal of each atlas texel
-// (render/normal_atlas.h; (0, 0, 0) where none: the geometry's normal n).
-// Nearest, not bilinear: a texel beside one without a map keeps its own.
-uniform sampler2D u_shadingNormal;
+// The surface maps of each atlas texel (render/surface_atlas.h): with
+// u_normalMapped, the normal maps' shading normal (xyz; (0, 0, 0) where none:
+// the geometry's normal n); with u_roughnessMapped, the roughness maps' R (w;
+// 0 where none: the medium's). Nearest, not bilinear: a texel beside one
+// without a map keeps its own.
+uniform sampler2D u_surfaceMaps;
 uniform bool u_normalMapped;
+uniform bool u_roughnessMapped;
 vec3 shadingNormal(vec3 n, vec2 atlasUv) {
     if (!u_normalMapped) return n;
-    ivec2 size = textureSize(u_shadingNormal, 0);
-    vec3 m = texelFetch(u_shadingNormal, clamp(ivec2(atlasUv * vec2(size)), ivec2(0), size - 1), 0).xyz;
+    ivec2 size = textureSize(u_surfaceMaps, 0);
+    vec3 m = texelFetch(u_surfaceMaps, clamp(ivec2(atlasUv * vec2(size)), ivec2(0), size - 1), 0).xyz;
     return dot(m, m) > 0.0 ? m : n;
+}
+// The roughness map's R at atlas texel index `texel` (the G-buffer normal's
+// w − 1), 0 where none.
+float mappedRoughness(int texel) {
+    if (!u_roughnessMapped || texel < 0) return 0.0;
+    int width = textureSize(u_surfaceMaps, 0).x;
+    return texelFetch(u_surfaceMaps, ivec2(texel % width, texel / width), 0).w;
 }
 
 // Unit vector from p towards light i, and the 1/d² falloff of a point light.

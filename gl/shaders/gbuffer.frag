@@ -37,10 +37,12 @@ void main() {
         if (c < 0.05) n = normalize(n + s * (0.05 - c) * v);
     }
     o_position = vec4(v_position, v_medium);
-    // With an albedo atlas, the normal's w is the pixel's atlas texel + 1 (the
-    // host reads its exit factor there, render/albedo_atlas.h), else 1.
-    vec2 texel = min(floor(v_uv * vec2(textureSize(u_albedo, 0))), vec2(textureSize(u_albedo, 0) - 1));
-    o_normal = vec4(n, u_textured ? 1.0 + texel.y * float(textureSize(u_albedo, 0).x) + texel.x : 1.0);
+    // With an albedo atlas or a roughness map, the normal's w is the pixel's
+    // atlas texel + 1 (the host reads its exit factor there,
+    // render/albedo_atlas.h; the composite its roughness), else 1.
+    vec2 size = vec2(u_textured ? textureSize(u_albedo, 0) : textureSize(u_surfaceMaps, 0));
+    vec2 texel = min(floor(v_uv * size), size - 1.0);
+    o_normal = vec4(n, u_textured || u_roughnessMapped ? 1.0 + texel.y * size.x + texel.x : 1.0);
 #if TSIS_GBUFFER_IRRADIANCE
     vec3 e = irradiance(v_position, n, mediumOf(v_medium).r);
     if (u_hasEnv != 0) {

@@ -22,41 +22,69 @@ uniform sampler2D u_normal;         // the shaded G-buffer's normals
 uniform vec3 u_eye;
 // The environment's reflection (render/env_reflection.h), with TSIS_ENV_REFLECT:
 // the residual prefiltered by the lobe (lat-long, the map's frame, row 0 =
-// up; one band of rows per roughness, the medium's layer) about the mirror
-// direction × the lobe's albedo per medium (x: √cos θo, y: medium), × the
-// map's intensity.
+// up; one band of rows per layer: each medium's roughness, then with a
+// roughness map the ladder's) about the mirror direction × the lobe's
+// albedo (x: √cos θo; rows: one per medium, then with the ladder one per
+// medium and step), × the map's intensity.
 uniform sampler2D u_envPrefiltered;
 uniform int u_envLayers;
 uniform sampler2D u_envAlbedo;
 uniform mat3 u_worldToMap;
 uniform float u_envScale;
+// The roughness ladder (u_ladderSteps > 1, render/env_reflection.h
+// ladderRoughness): step k at R = u_ladderMin + (1 − u_ladderMin)(k/(steps − 1))²,
+// prefiltered in layer u_ladderLayer + k, its albedo for medium m in row
+// u_ladderRow + m·steps + k.
+uniform int u_ladderSteps;
+uniform int u_ladderLayer;
+uniform int u_ladderRow;
+uniform float u_ladderMin;
 layout(location = 0) out vec4 o_radiance;
 
-vec3 envReflection(vec3 n, vec3 v, float tag, float layer) {
-    vec3 r = normalize(u_worldToMap * reflect(-v, n));
+// The prefiltered residual in direction uv's layer, and the albedo in row m.
+vec3 prefilteredAt(vec2 uv, float layer) {
     // Within the layer's band: its first and last rows' centres bound v.
-    vec2 uv = latLongUv(r);
     float rows = float(textureSize(u_envPrefiltered, 0).y) / float(u_envLayers);
     uv.y = (layer + clamp(uv.y, 0.5 / rows, 1.0 - 0.5 / rows)) / float(u_envLayers);
-    vec3 l = textureLod(u_envPrefiltered, uv, 0.0).rgb;
+    return textureLod(u_envPrefiltered, uv, 0.0).rgb;
+}
+float albedoAt(float s, float m) {
     vec2 size = vec2(textureSize(u_envAlbedo, 0));
+    return textureLod(u_envAlbedo, (vec2(s * (size.x - 1.0), m) + 0.5) / size, 0.0).r;
+}
+
+// `roughness` > 0: a roughness map's R, between two steps of the ladder;
+// else the medium's (its layer `layer`).
+vec3 envReflection(vec3 n, vec3 v, float tag, float layer, float roughness) {
+    vec2 uv = latLongUv(normalize(u_worldToMap * reflect(-v, n)));
     float m = float(max(int(tag + 0.5) - 1, 0));
     float s = sqrt(clamp(dot(n, v), 0.0, 1.0));
-    float a = textureLod(u_envAlbedo, (vec2(s * (size.x - 1.0), m) + 0.5) / size, 0.0).r;
-    return u_envScale * a * l;
+    if (roughness > 0.0 && u_ladderSteps > 1) {
+        float x = float(u_ladderSteps - 1) *
+                  sqrt(clamp((roughness - u_ladderMin) / (1.0 - u_ladderMin), 0.0, 1.0));
+        float k = min(floor(x), float(u_ladderSteps - 2)), t = x - k;
+        float row = float(u_ladderRow) + m * float(u_ladderSteps) + k;
+        float l0 = float(u_ladderLayer) + k;
+        return u_envScale * mix(albedoAt(s, row) * prefilteredAt(uv, l0),
+                                albedoAt(s, row + 1.0) * prefilteredAt(uv, l0 + 1.0), t);
+    }
+    return u_envScale * albedoAt(s, m) * prefilteredAt(uv, layer);
 }
 
 vec3 shade(vec4 p, ivec2 px, vec3 b) {
-    vec3 n = normalize(texelFetch(u_normal, px, 0).xyz);
+    vec4 nw = texelFetch(u_normal, px, 0);
+    vec3 n = normalize(nw.xyz);
     vec3 v = normalize(u_eye - p.xyz);
     // An open mesh seen from behind: the side that faces the eye.
     if (dot(n, v) < 0.0) n = -n;
     vec4 medium = mediumOf(p.w);
     vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
 #if TSIS_SPECULAR
-    l += specularRadiance(p.xyz, n, v, medium.b, medium.r);
+    // A roughness map's R where it covers the point, else the medium's α.
+    float r = mappedRoughness(int(nw.w + 0.5) - 1);
+    l += specularRadiance(p.xyz, n, v, r > 0.0 ? r * r : medium.b, medium.r);
 #if TSIS_ENV_REFLECT
-    l += envReflection(n, v, p.w, medium.a);
+    l += envReflection(n, v, p.w, medium.a, r);
 #endif
 #endif
     return l;

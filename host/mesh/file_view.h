@@ -50,6 +50,13 @@ struct FileMaterial {
     // as the albedo texture (linear, never sRGB), and its scale on x and y.
     std::string normalMapPath, normalMapBytes;
     double normalScale = 1.0;
+    // The roughness map (glTF metallicRoughnessTexture, its G channel; OBJ
+    // map_Pr, grey), as the normal map; R = `roughness` × its channel.
+    std::string roughnessMapPath, roughnessMapBytes;
+    int roughnessChannel = 1;
+    // The mean-free-path map (extras.tsis.mfp_texture; render/mfp_map.h), as
+    // the normal map.
+    std::string mfpMapPath, mfpMapBytes;
     std::optional<double> eta;  // KHR_materials_ior, OBJ Ni
     // The surface's GGX roughness R (physics/ggx.h): glTF roughnessFactor
     // (1 where the file gives none, as glTF says), OBJ Pr, or OBJ Ns by

@@ -39,9 +39,11 @@ struct Reader {
     const std::string& name;
     const std::string& folder;
     const ImageBytes& images;
-    KindCounts ignored;          // material features tsis does not use
-    KindCounts droppedTextures;  // base colour textures not used, by why
-    KindCounts droppedNormals;   // normal maps likewise
+    KindCounts ignored;           // material features tsis does not use
+    KindCounts droppedTextures;   // base colour textures not used, by why
+    KindCounts droppedNormals;    // normal maps likewise
+    KindCounts droppedRoughness;  // metallic-roughness textures likewise
+    KindCounts droppedMfp;        // mean-free-path maps likewise
 
     std::string materialName(size_t i) const {
         const std::string& n = model.materials[i].name;
@@ -163,6 +165,17 @@ struct Reader {
             fm.normalScale = info.scale;
     }
 
+    // The metallic-roughness texture (linear): its G channel times
+    // roughnessFactor is the lobe's R; B, the metalness, is not read.
+    void roughnessTexture(FileMaterial& fm, size_t i) {
+        const tinygltf::TextureInfo& info =
+            model.materials[i].pbrMetallicRoughness.metallicRoughnessTexture;
+        if (textureImage(info.index, info.texCoord, info.extensions, i,
+                         {"metallicRoughnessTexture", "roughnessFactor only", droppedRoughness},
+                         fm.roughnessMapPath, fm.roughnessMapBytes))
+            fm.roughnessChannel = 1;
+    }
+
     // extras: {"tsis": {...}}: tsis' own parameters, over the glTF's.
     void extras(FileMaterial& fm, size_t i) {
         const tinygltf::Value& e = model.materials[i].extras;
@@ -187,6 +200,16 @@ struct Reader {
                 fm.mfp = triple(v, i, where, true);
             } else if (key == "eta") {
                 fm.eta = number(v, i, where, true);
+            } else if (key == "mfp_texture") {
+                // A textureInfo, as glTF's own: {"index": N, "texCoord": 0}.
+                if (!v.IsObject() || !v.Has("index") || !v.Get("index").IsInt())
+                    bad(i, where, ": expected {\"index\": N}");
+                const int texCoord = v.Has("texCoord") && v.Get("texCoord").IsInt()
+                                         ? v.Get("texCoord").Get<int>()
+                                         : 0;
+                textureImage(v.Get("index").Get<int>(), texCoord, {}, i,
+                             {"extras.tsis.mfp_texture", "its mean free path alone", droppedMfp},
+                             fm.mfpMapPath, fm.mfpMapBytes);
             } else {
                 unknown.push_back(key);
             }
@@ -195,7 +218,7 @@ struct Reader {
             std::string list;
             for (const std::string& k : unknown) list += concat(list.empty() ? "" : ", ", k);
             note(name, concat("material '", materialName(i), "': extras.tsis keys ignored: ", list,
-                              " (read: preset, sigma_s, sigma_a, albedo, mfp, eta)"));
+                              " (read: preset, sigma_s, sigma_a, albedo, mfp, mfp_texture, eta)"));
         }
     }
 
@@ -258,7 +281,7 @@ struct Reader {
         // gives counts; glTF's default, 1, is rarely meant).
         if (pbr.metallicFactor > 0 && m.values.count("metallicFactor"))
             ignored.add("metallicFactor > 0 (dielectric surfaces only)");
-        if (pbr.metallicRoughnessTexture.index >= 0) ignored.add("metallicRoughnessTexture");
+        roughnessTexture(fm, i);
         normalTexture(fm, i);
         if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");
         if (m.emissiveTexture.index >= 0) ignored.add("emissiveTexture");
@@ -284,6 +307,12 @@ std::vector<FileMaterial> readMaterials(const tinygltf::Model& model, const std:
                        r.droppedTextures.list("materials"));
     if (!r.droppedNormals.empty())
         note(name, "normal maps ignored: " + r.droppedNormals.list("materials"));
+    if (!r.droppedMfp.empty())
+        note(name, "mean free path textures ignored (the material's mean free path alone): " +
+                       r.droppedMfp.list("materials"));
+    if (!r.droppedRoughness.empty())
+        note(name, "metallic-roughness textures ignored (roughnessFactor only): " +
+                       r.droppedRoughness.list("materials"));
     if (!r.ignored.empty())
         note(name, "material features ignored (materials using them): " + r.ignored.list("uses"));
     return out;

@@ -468,18 +468,20 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
       {"name": "Skin",
        "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.5, 0.4, 0.5],
                                 "baseColorTexture": {"index": 0}, "roughnessFactor": 0.25,
-                                "metallicFactor": 0.5},
+                                "metallicFactor": 0.5, "metallicRoughnessTexture": {"index": 0}},
        "normalTexture": {"index": 0, "scale": 0.5},
        "extensions": {"KHR_materials_ior": {"ior": 1.4},
                       "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.01,
                                                "attenuationColor": [0.8, 0.3, 0.2]}},
        "extras": {"tsis": {"preset": "marble", "colour": 1}}},
       {"name": "Jade", "alphaMode": "BLEND",
-       "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}},
+       "pbrMetallicRoughness": {"baseColorTexture": {"index": 1},
+                                "metallicRoughnessTexture": {"index": 0, "texCoord": 1}},
        "extensions": {"KHR_materials_clearcoat": {},
                       "KHR_materials_volume_scatter": {"multiscatterColor": [0.7, 0.8, 0.6],
                                                        "scatterAnisotropy": -0.25}},
-       "extras": {"tsis": {"albedo": [0.9, 0.9, 0.9], "mfp": [1, 2, 3], "eta": 1.5}}},
+       "extras": {"tsis": {"albedo": [0.9, 0.9, 0.9], "mfp": [1, 2, 3], "eta": 1.5,
+                           "mfp_texture": {"index": 0}}}},
       {"pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.3, 0.4, 1],
                                 "baseColorTexture": {"index": 0, "texCoord": 1}}}])";
     test::ScratchDir dir;
@@ -521,6 +523,15 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
     EXPECT_EQ(skin.normalMapBytes, skin.textureBytes);
     EXPECT_EQ(skin.normalScale, 0.5);
     EXPECT_TRUE(jade.normalMapPath.empty());
+    // The metallic-roughness texture: its bytes, R in its G channel.
+    EXPECT_EQ(skin.roughnessMapPath, path + "#image0");
+    EXPECT_EQ(skin.roughnessMapBytes, skin.textureBytes);
+    EXPECT_EQ(skin.roughnessChannel, 1);
+    EXPECT_TRUE(jade.roughnessMapPath.empty());  // TEXCOORD_1: noted
+    // extras.tsis.mfp_texture: a textureInfo, its image's bytes.
+    EXPECT_EQ(jade.mfpMapPath, path + "#image0");
+    EXPECT_EQ(jade.mfpMapBytes, skin.textureBytes);
+    EXPECT_TRUE(skin.mfpMapPath.empty());
     EXPECT_EQ(jade.roughness, 1.0);
     EXPECT_EQ(jade.multiscatterColor, glm::dvec3(0.7, 0.8, 0.6));
     EXPECT_EQ(jade.scatterAnisotropy, -0.25);
@@ -546,10 +557,13 @@ TEST(GLTF, MaterialsTexturesAndTexcoords) {
         notes,
         n +
             "material 'Skin': extras.tsis keys ignored: colour (read: preset, sigma_s, "
-            "sigma_a, albedo, mfp, eta)\n" +
+            "sigma_a, albedo, mfp, mfp_texture, eta)\n" +
             n + "material 'Jade': texture '" + dir.file("missing.png") +
             "' not found: albedo factor only\n" + n +
             "base colour textures ignored (albedo factor only): TEXCOORD_1 (only "
+            "TEXCOORD_0 is read) (1)\n" +
+            n +
+            "metallic-roughness textures ignored (roughnessFactor only): TEXCOORD_1 (only "
             "TEXCOORD_0 is read) (1)\n" +
             n +
             "material features ignored (materials using them): baseColorFactor alpha < 1 "
@@ -617,6 +631,10 @@ TEST(GLTF, BadMaterialValuesAreOneLineErrors) {
                 HasSubstr("material 'M': extras.tsis.sigma_a[1]: expected a number"));
     EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"mfp": [1, 0, 1]}}})"),
                 HasSubstr("material 'M': extras.tsis.mfp[1] 0 must be finite and > 0"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"mfp_texture": 0}}})"),
+                HasSubstr("material 'M': extras.tsis.mfp_texture: expected {\"index\": N}"));
+    EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"mfp_texture": {"index": 7}}}})"),
+                HasSubstr("material 'M': extras.tsis.mfp_texture: texture 7 does not exist"));
     EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"eta": "glass"}}})"),
                 HasSubstr("material 'M': extras.tsis.eta: expected a number"));
     EXPECT_THAT(load(R"({"name": "M", "extras": {"tsis": {"preset": 3}}})"),

@@ -18,7 +18,7 @@ using namespace meshparse;
 // these and newmtl.
 bool isRead(std::string_view key) {
     return key == "newmtl" || key == "Kd" || key == "map_Kd" || key == "Ni" || key == "Pr" ||
-           key == "Ns" || key == "norm" || key == "map_Bump" || key == "bump";
+           key == "Ns" || key == "norm" || key == "map_Bump" || key == "bump" || key == "map_Pr";
 }
 
 // Blender's exporter writes Ns = (30 (1 − R))² (its importer inverts it):
@@ -108,17 +108,20 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             } else if (!physical.back()) {
                 out.back().roughness = roughnessOfPhongExponent(v);
             }
-        } else if (key == "map_Kd" || key == "norm" || key == "map_Bump" || key == "bump") {
+        } else if (key == "map_Kd" || key == "norm" || key == "map_Bump" || key == "bump" ||
+                   key == "map_Pr") {
             FileMaterial& m = out.back();
-            const bool albedo = key == "map_Kd";
-            const char* without = albedo ? "albedo factor only" : "no normal map";
+            const bool albedo = key == "map_Kd", roughness = key == "map_Pr";
+            const char* without = albedo      ? "albedo factor only"
+                                  : roughness ? "its roughness alone"
+                                              : "no normal map";
             if (tok.size() < 2) failLine(line, "material '", m.name, "': ", key, " needs a file");
             // Options (-s, -o, -clamp, …) change how the map is laid on: not
             // supported, so the map is not used rather than used wrongly; a
             // normal map's -bm (its scale) is read.
             size_t first = 1;
             double scale = 1.0;
-            if (!albedo && tok.size() > 3 && tok[1] == "-bm") {
+            if (!albedo && !roughness && tok.size() > 3 && tok[1] == "-bm") {
                 scale = number(tok[2], line, "-bm");
                 first = 3;
             }
@@ -133,7 +136,9 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             const std::string file(
                 tok[first].data(),
                 static_cast<size_t>(tok.back().data() + tok.back().size() - tok[first].data()));
-            std::string& path = albedo ? m.texturePath : m.normalMapPath;
+            std::string& path = albedo      ? m.texturePath
+                                : roughness ? m.roughnessMapPath
+                                            : m.normalMapPath;
             path.clear();
             try {
                 path = assetFile(folder.empty() ? "." : folder, file, "texture");
@@ -148,7 +153,9 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                 path.clear();
                 continue;
             }
-            if (!albedo) {
+            if (roughness) {
+                m.roughnessChannel = 0;  // a grey map
+            } else if (!albedo) {
                 if (!std::isfinite(scale))
                     failLine(line, "material '", m.name, "': -bm ", scale, " must be finite");
                 m.normalScale = scale;
@@ -157,6 +164,9 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
             ignored.add(key);
         }
     }
+    // map_Pr is R itself unless a Pr scales it (Ns' R is not a factor).
+    for (size_t k = 0; k < out.size(); ++k)
+        if (!out[k].roughnessMapPath.empty() && !physical[k]) out[k].roughness = 1.0;
     if (outside)
         note(meshName, concat("material library '", path, "': ", outside, " ",
                               plural(outside, "statement", "statements"),
@@ -167,7 +177,7 @@ std::vector<FileMaterial> parseMTL(const std::string& text, const std::string& p
                               ") read as no index of refraction given: the default η"));
     if (!ignored.empty())
         note(meshName, concat("material library '", path, "': statements ignored: ", ignored.list(),
-                              " (read: newmtl, Kd, map_Kd, Ni, Pr, Ns, norm, map_Bump)"));
+                              " (read: newmtl, Kd, map_Kd, Ni, Pr, Ns, map_Pr, norm, map_Bump)"));
     return out;
 }
 

@@ -224,7 +224,7 @@ TEST(OBJ, MaterialsFromMtlLibraries) {
                                  "texture ignored (Kd only)\n"));
     EXPECT_THAT(notes, HasSubstr(n + mtl +
                                  ": statements ignored: Ka (1), Ks (2), illum (1) (read: newmtl, "
-                                 "Kd, map_Kd, Ni, Pr, Ns, norm, map_Bump)\n"));
+                                 "Kd, map_Kd, Ni, Pr, Ns, map_Pr, norm, map_Bump)\n"));
     EXPECT_THAT(notes, HasSubstr(n + "material library '" + dir.file("gone.mtl") + "' not found"));
     EXPECT_THAT(notes,
                 HasSubstr(n + "material 'blue' defined twice: the first definition is used\n"));
@@ -337,6 +337,18 @@ TEST(OBJ, RoughnessFromPrOrNs) {
     EXPECT_FALSE(view.materials[3].roughness.has_value());
     EXPECT_EQ(view.materials[4].roughness, 0.0);  // past 900: R = 0 (clamped when used)
     EXPECT_THAT(notes, Not(HasSubstr("statements ignored")));
+    // map_Pr: a grey roughness map, R itself (Ns' R is no factor of it) or
+    // times a Pr given in either order.
+    dir.file("a/r.png", "a map");
+    loadWithLibrary(
+        dir, obj, "newmtl map\nNs 225\nmap_Pr r.png\nnewmtl scaled\nmap_Pr r.png\nPr 0.5\n", view);
+    ASSERT_EQ(view.materials.size(), 2u);
+    for (const FileMaterial& m : view.materials) {
+        EXPECT_EQ(m.roughnessMapPath, dir.file("a/r.png")) << m.name;
+        EXPECT_EQ(m.roughnessChannel, 0) << m.name;
+    }
+    EXPECT_EQ(view.materials[0].roughness, 1.0);
+    EXPECT_EQ(view.materials[1].roughness, 0.5);
     dir.file("a/q.mtl", "newmtl m\nPr -0.5\n");
     EXPECT_THAT(errorOf([&] { loadMesh(obj, &view); }, obj),
                 HasSubstr("material 'm': Pr -0.5 must be finite and >= 0"));

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/albedo_inversion.h"
+#include "render/mfp_map.h"
 #include "util/hash.h"
 
 namespace tsis {
@@ -89,8 +90,20 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const glm::uvec3 tri = mesh.triangles[t];
         const uint32_t id = mesh.materialOf(t);
-        const uint32_t k = media.slotOfMaterial(id);
-        const glm::dvec3 b = base[k];
+        // A mean-free-path map: each texel's slot is its step's (render/mfp_map.h).
+        const ObjectMaterial* stepped = id < scene.objectMaterials.size() &&
+                                                scene.objectMaterials[id].mfpMap &&
+                                                mesh.hasTexcoords()
+                                            ? &scene.objectMaterials[id]
+                                            : nullptr;
+        const uint32_t material = media.slotOfMaterial(id);
+        auto texcoordAt = [&](double s, double r) {
+            return float(1 - s - r) * mesh.texcoords[tri[0]] + float(s) * mesh.texcoords[tri[1]] +
+                   float(r) * mesh.texcoords[tri[2]];
+        };
+        auto slotAt = [&](double s, double r) {
+            return stepped ? media.slotOfStep(id, mfpStepAt(*stepped, texcoordAt(s, r))) : material;
+        };
         const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
                                               e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
         const double det = e1.x * e2.y - e1.y * e2.x;
@@ -120,15 +133,14 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
                     const double near =
                         std::min({segmentDistance(c, p0, p1), segmentDistance(c, p1, p2),
                                   segmentDistance(c, p2, p0)});
-                    if (near < 1.0 && near < slotDistance[i]) slot[i] = k, slotDistance[i] = near;
+                    if (near < 1.0 && near < slotDistance[i])
+                        slot[i] = slotAt(s, r), slotDistance[i] = near;
                     continue;
                 }
-                glm::vec2 tc(0.0f);
-                if (mesh.hasTexcoords())
-                    tc = float(1 - s - r) * mesh.texcoords[tri[0]] +
-                         float(s) * mesh.texcoords[tri[1]] + float(r) * mesh.texcoords[tri[2]];
+                const glm::vec2 tc = mesh.hasTexcoords() ? texcoordAt(s, r) : glm::vec2(0.0f);
                 const glm::dvec3 albedo = surfaceAlbedo(scene, id, tc, defaultAlbedo);
-                factor[i] = glm::vec3(glm::sqrt(albedo / b));
+                const uint32_t k = slotAt(s, r);
+                factor[i] = glm::vec3(glm::sqrt(albedo / base[k]));
                 if (!slot.empty()) slot[i] = k, slotDistance[i] = 0;
                 covered[i] = 1;
             }

@@ -13,6 +13,11 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
+double ladderRoughness(int k) {
+    const double x = static_cast<double>(k) / (kRoughnessLadderSteps - 1);
+    return kMinRoughness + (1.0 - kMinRoughness) * x * x;
+}
+
 std::vector<float> prefilterReflection(const EnvironmentMap& map, double roughness, int width) {
     const int height = width / 2;
     // The source: the residual averaged down to at most 256 × 128 (its

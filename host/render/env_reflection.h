@@ -20,6 +20,13 @@ constexpr int kReflectionMapWidth = 64;
 // (denser where the albedo turns fastest, at grazing view).
 constexpr int kReflectionAlbedoEntries = 64;
 
+// With a roughness map (render/surface_atlas.h) R varies per texel: the
+// composite blends the two nearest of a ladder of prefiltered layers, step
+// k at ladderRoughness(k), denser at low R where the lobe narrows fastest
+// (the shader, radiance.frag, inverts the same formula).
+constexpr int kRoughnessLadderSteps = 9;
+double ladderRoughness(int k);
+
 // The residual prefiltered by the lobe at `roughness`: for each direction r
 // of a width × width/2 lat-long grid (map frame, row 0 = up), the mean of
 // the residual weighted by D(r·h)·max(0, r·l) dω with h = (l + r)/|l + r|

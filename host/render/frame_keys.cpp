@@ -23,6 +23,8 @@ void hashMaterials(Hasher& h, const Scene& scene) {
         h.add(o.albedo).add(o.textureScale);
         if (o.texture)
             h.add(o.texture->name).add(o.texture->image.width).add(o.texture->image.height);
+        if (o.mfpMap) h.add(o.mfpMap->name).add(o.mfpMap->image.width).add(o.mfpMap->image.height);
+        for (const MfpStep& step : o.mfpSteps) h.add(step.scale);
     }
 }
 

@@ -16,10 +16,10 @@
 #include "render/frame_graph.h"
 #include "render/frame_resources.h"
 #include "render/frame_stats.h"
-#include "render/normal_atlas.h"
 #include "render/profiles.h"
 #include "render/render_options.h"
 #include "render/scene_media.h"
+#include "render/surface_atlas.h"
 #include "scene/projection.h"
 #include "scene/scene.h"
 
@@ -38,8 +38,8 @@ struct FrameContext {
     const SceneMedia* media = nullptr;
     // The albedo factor per atlas texel (render/albedo_atlas.h; empty: none).
     const AlbedoAtlas* albedo = nullptr;
-    // The normal maps' shading normal per atlas texel (render/normal_atlas.h; empty: none).
-    const NormalAtlas* normals = nullptr;
+    // The normal and roughness maps per atlas texel (render/surface_atlas.h; empty: none).
+    const SurfaceAtlas* surface = nullptr;
     const RenderOptions* options = nullptr;
     ClRuntime* cl = nullptr;
     FrameStats* stats = nullptr;  // setup-time values; passes report through Resources

@@ -8,6 +8,7 @@
 
 #include "physics/ggx.h"
 #include "render/albedo_inversion.h"
+#include "render/mfp_map.h"
 #include "util/error.h"
 #include "util/note.h"
 
@@ -160,21 +161,39 @@ ObjectMaterial fromFile(const FileMaterial& f, const Material& fallback,
     }
     o.medium.name = name;
     o.albedo = albedoOf(o.medium, model);
-    if (!f.normalMapPath.empty()) {
+    // The surface's maps: linear, never sRGB; one that cannot be read is a
+    // note and the material goes without it.
+    auto map = [&](const std::string& path, const std::string& bytes,
+                   const char* without) -> std::shared_ptr<AlbedoTexture> {
+        if (path.empty()) return nullptr;
         try {
             auto t = std::make_shared<AlbedoTexture>();
-            t->name = f.normalMapPath;
-            t->image = readColorTexture(f.normalMapPath, f.normalMapBytes, false);
-            if (isGrey(t->image))  // an OBJ's bump is often a height map
-                note(file, concat("material '", name, "': normal map '", f.normalMapPath,
-                                  "' is grey (a height map?): not used (tsis reads tangent-space "
-                                  "normal maps)"));
-            else
-                o.normalMap = std::move(t);
-            o.normalScale = f.normalScale;
+            t->name = path;
+            t->image = readColorTexture(path, bytes, false);
+            return t;
         } catch (const Error& e) {
-            note(file, concat("material '", name, "': ", e.what(), ": no normal map"));
+            note(file, concat("material '", name, "': ", e.what(), ": ", without));
+            return nullptr;
         }
+    };
+    if (auto t = map(f.normalMapPath, f.normalMapBytes, "no normal map")) {
+        if (isGrey(t->image))  // an OBJ's bump is often a height map
+            note(file, concat("material '", name, "': normal map '", f.normalMapPath,
+                              "' is grey (a height map?): not used (tsis reads tangent-space "
+                              "normal maps)"));
+        else
+            o.normalMap = std::move(t);
+        o.normalScale = f.normalScale;
+    }
+    o.roughnessMap = map(f.roughnessMapPath, f.roughnessMapBytes, "its roughness factor alone");
+    o.roughnessChannel = f.roughnessChannel;
+    if (auto t = map(f.mfpMapPath, f.mfpMapBytes, "its mean free path alone")) {
+        try {
+            o.mfpSteps = mfpSteps(t->image, t->name, o.medium);
+        } catch (const Error& e) {
+            fail("mesh '", file, "': material '", name, "': ", e.what());
+        }
+        o.mfpMap = std::move(t);
     }
     if (f.roughness) {
         const double r = *f.roughness;

@@ -177,7 +177,7 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     exitancePerB_.assign(media, 1.0);
     for (size_t m = 0; m < media; ++m) {
         const size_t slot = sm.slotOfMedium[m];
-        const Material& mat = ctx.scene->materialOf(sm.slotMaterial[slot]);
+        const Material& mat = sm.slotMedium(*ctx.scene, slot);
         mediaIn[m].material = mat;
         // Exitance per unit B: Jensen's Ft/π·B lets out c·B, the normalised term B.
         exitancePerB_[m] = exitScale(ctx.options->exit, mat.eta) / normalizedExitScale(mat.eta);

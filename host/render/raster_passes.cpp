@@ -172,7 +172,8 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
         [this, &ctx, meshHash, h, media](FrameGraph::Resources& res) {
             materials_.updateMedia(media);
             materials_.updateAlbedo(ctx.albedo->factor, ctx.atlasResolution, ctx.albedo->key);
-            materials_.updateNormals(ctx.normals->normal, ctx.atlasResolution, ctx.normals->key);
+            materials_.updateSurface(ctx.surface->normal, ctx.surface->roughness,
+                                     ctx.atlasResolution, ctx.surface->key);
             uploadMesh(ctx.scene->mesh, meshHash);
             res.write(h.mesh) = gpuMesh_.get();
         });
@@ -191,7 +192,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             const int lod = ctx.options->lightLodTriangles;
             const GpuMesh* depth = maps ? nullptr : depthMesh(ctx.scene->mesh, lod, res.stats());
             const uint64_t shading =
-                Hasher(eta).add(ctx.albedo->key).add(ctx.normals->key).digest();
+                Hasher(eta).add(ctx.albedo->key).add(ctx.surface->key).digest();
             lights_.resize(lights.size());
             const std::vector<size_t> changed = changedViews(
                 lights.size(), viewKeys_,
@@ -233,7 +234,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     lights.size(), scatterKeys_,
                     [&](size_t i) {
                         return lightViewKey(lights[i], meshHash_, resolution, true,
-                                            ctx.normals->key, 0);
+                                            ctx.surface->key, 0);
                     },
                     [&](size_t i) {
                         updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius,
@@ -317,7 +318,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                                      (graph.isRead(ctx.pointUvs) ? GBufferPass::kUv : 0u);
             Hasher key;
             key.add(meshHash_).add(ctx.width).add(ctx.height).add(outputs).add(ctx.albedo->key);
-            key.add(ctx.normals->key);
+            key.add(ctx.surface->key);
             key.add(ctx.viewProj);
             if (irradiance) key.add(lighting).add(eta);
             // The composite's samples' G-buffer, when it is to be drawn too,
@@ -415,42 +416,63 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
     const RenderOptions& o = *ctx.options;
     if (!env || !o.specular) return {};
     Timer t;
-    // One band of rows per distinct roughness, stacked (layer 0 on top).
+    // One band of rows per distinct roughness, stacked (layer 0 on top), then
+    // with a roughness map the ladder's steps; the albedo table likewise.
     const MediumRoughness roughness = mediumRoughness(ctx);
+    const bool ladder = !ctx.surface->roughness.empty();
+    std::vector<float> layerRoughness = roughness.layers;
+    const std::vector<float>& etas = ctx.media->etaOfMedium;
+    std::vector<float> rowEta = etas, rowRoughness = roughness.ofMedium;
+    if (ladder) {
+        for (int k = 0; k < kRoughnessLadderSteps; ++k)
+            layerRoughness.push_back(static_cast<float>(ladderRoughness(k)));
+        for (float eta : etas)
+            for (int k = 0; k < kRoughnessLadderSteps; ++k) {
+                rowEta.push_back(eta);
+                rowRoughness.push_back(static_cast<float>(ladderRoughness(k)));
+            }
+    }
     Hasher mapHash(env.map->hash);
-    for (float r : roughness.layers) mapHash.add(r);
+    for (float r : layerRoughness) mapHash.add(r);
     const uint64_t mapKey = mapHash.digest();
     const int w = kReflectionMapWidth;
-    const auto layers = static_cast<int>(roughness.layers.size());
+    const auto layers = static_cast<int>(layerRoughness.size());
     if (!envPrefiltered_ || mapKey != envPrefilteredKey_) {
         if (!envPrefiltered_ || envPrefiltered_->height() != layers * w / 2) {
             envPrefiltered_ = std::make_unique<FloatTexture>(w, layers * w / 2);
             filterLinear(*envPrefiltered_, true);
         }
         std::vector<float> bands;
-        for (float r : roughness.layers) {
+        for (float r : layerRoughness) {
             const std::vector<float> band = prefilterReflection(*env.map, r, w);
             bands.insert(bands.end(), band.begin(), band.end());
         }
         envPrefiltered_->upload(bands.data());
         envPrefilteredKey_ = mapKey;
     }
-    const std::vector<float>& etas = ctx.media->etaOfMedium;
     Hasher albedoKey;
-    for (float r : roughness.ofMedium) albedoKey.add(r);
-    for (float eta : etas) albedoKey.add(eta);
+    for (float r : rowRoughness) albedoKey.add(r);
+    for (float eta : rowEta) albedoKey.add(eta);
     if (!envAlbedo_ || albedoKey.digest() != envAlbedoKey_) {
-        const int rows = static_cast<int>(etas.size());
+        const int rows = static_cast<int>(rowEta.size());
         if (!envAlbedo_ || envAlbedo_->height() != rows) {
             envAlbedo_ = std::make_unique<FloatTexture>(kReflectionAlbedoEntries, rows);
             filterLinear(*envAlbedo_, false);
         }
-        envAlbedo_->upload(reflectionAlbedoTable(etas, roughness.ofMedium).data());
+        envAlbedo_->upload(reflectionAlbedoTable(rowEta, rowRoughness).data());
         envAlbedoKey_ = albedoKey.digest();
     }
     stats.set("env_reflection_ms", t.ms());
-    return {envPrefiltered_->id(), envAlbedo_->id(), layers,
-            glm::transpose(glm::mat3(env.toWorld())), static_cast<float>(env.intensity)};
+    EnvReflectionTextures out{envPrefiltered_->id(), envAlbedo_->id(), layers,
+                              glm::transpose(glm::mat3(env.toWorld())),
+                              static_cast<float>(env.intensity)};
+    if (ladder) {
+        out.ladderSteps = kRoughnessLadderSteps;
+        out.ladderLayer = static_cast<int>(roughness.layers.size());
+        out.ladderRow = static_cast<int>(etas.size());
+        out.ladderMin = static_cast<float>(kMinRoughness);
+    }
+    return out;
 }
 
 DisplayBackground RasterPasses::displayBackground(const FrameContext& ctx) {

@@ -270,8 +270,9 @@ std::vector<RenderParam> makeParams() {
                &O::background, parseBackground, backgroundName, Background::Env),
         fileOrNumber({"roughness",
                       "R  the surface's GGX roughness (alpha = R^2), 0.05 to 1, for every "
-                      "object; file: each object's from its file (glTF roughnessFactor, OBJ "
-                      "Pr or Ns), 0.3 where it has none",
+                      "object; file: each object's from its file (glTF roughnessFactor and "
+                      "metallic-roughness texture, OBJ Pr or Ns and map_Pr), 0.3 where it has "
+                      "none",
                       kEvery, kDisplay},
                      &O::roughness, {0.05, 1}),
         flag({"no-specular", "turn off the surface reflection (the GGX lobe)", kEvery, kDisplay},

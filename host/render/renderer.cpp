@@ -201,20 +201,21 @@ const AlbedoAtlas& Renderer::albedoAtlas(const Scene& scene, const SceneMedia& m
     return albedo_;
 }
 
-const NormalAtlas& Renderer::normalAtlas(const Scene& scene, const RenderOptions& opt,
-                                         uint64_t meshKey) {
+const SurfaceAtlas& Renderer::surfaceAtlas(const Scene& scene, const RenderOptions& opt,
+                                           uint64_t meshKey) {
+    const bool fileRoughness = opt.roughness < 0;
     Hasher h(meshKey);
-    h.add(opt.atlasResolution);
+    h.add(opt.atlasResolution).add(fileRoughness);
     for (const ObjectMaterial& o : scene.objectMaterials) {
-        h.add(o.normalScale);
-        if (o.normalMap)
-            h.add(o.normalMap->name).add(o.normalMap->image.width).add(o.normalMap->image.height);
+        h.add(o.normalScale).add(o.roughness).add(o.roughnessChannel);
+        for (const auto& map : {o.normalMap, o.roughnessMap})
+            if (map) h.add(map->name).add(map->image.width).add(map->image.height);
     }
-    if (h.digest() != normalsOf_) {
-        normals_ = bakeNormalAtlas(scene, opt.atlasResolution);
-        normalsOf_ = h.digest();
+    if (h.digest() != surfaceOf_) {
+        surface_ = bakeSurfaceAtlas(scene, opt.atlasResolution, fileRoughness);
+        surfaceOf_ = h.digest();
     }
-    return normals_;
+    return surface_;
 }
 
 const SceneMedia& Renderer::media(const Scene& scene, uint64_t meshKey) {
@@ -253,8 +254,7 @@ const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderO
         addsTransport(opt) || opt.keepAovs || !ctx.albedo->empty() ||
         !raster_.lightingCurrent(ctx.lighting))
         return nullptr;
-    return method(opt.method, 0)
-        .atlasRadiosity(materialContext(ctx, scene.materialOf(sm.slotMaterial[0])));
+    return method(opt.method, 0).atlasRadiosity(materialContext(ctx, sm.slotMedium(scene, 0)));
 }
 
 std::vector<uint8_t> FrameResult::displayPixels(int& channels) const {
@@ -305,9 +305,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     const SceneMedia& sm = media(scene, mesh);
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
-    ctx.normals = &normalAtlas(scene, opt, mesh);
+    ctx.surface = &surfaceAtlas(scene, opt, mesh);
     const uint64_t lighting =
-        Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).add(ctx.normals->key).digest();
+        Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).add(ctx.surface->key).digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();
     ctx.lighting = lighting;
     const uint64_t view = Hasher().add(ctx.viewProj).add(opt.width).add(opt.height).digest();
@@ -340,7 +340,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     const AtlasRadiosity* copy = atlasRadiosity(scene, opt, ctx, missed.has_value());
     stats.set("radiosity_lookup_gl", copy ? 1.0 : 0.0);
     for (size_t k = 0; k < sm.slots() && !copy; ++k) {
-        runs.push_back(materialContext(ctx, scene.materialOf(sm.slotMaterial[k])));
+        runs.push_back(materialContext(ctx, sm.slotMedium(scene, k)));
         runs[k].points = points[k];
         if (k > 0) runs[k].radiosity = staging_.declareRadiosity(graph, k);
         method(opt.method, k).addPasses(graph, runs[k]);
@@ -365,8 +365,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
         transport_->setBackgroundFits(backgroundFits_ && !opt.progressive);
         std::vector<KeyedProfile> profiles;
         for (size_t k = 0; k < sm.slots(); ++k)
-            profiles.push_back(
-                materialContext(ctx, scene.materialOf(sm.slotMaterial[k])).profile());
+            profiles.push_back(materialContext(ctx, sm.slotMedium(scene, k)).profile());
         transport_->addPass(graph, ctx, std::move(profiles), radiosity);
     }
     if (opt.progressive)

@@ -94,9 +94,10 @@ class Renderer {
     // The albedo factors (baked again when the mesh, a material or the atlas changed).
     const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
                                    const RenderOptions& opt, uint64_t meshKey);
-    // The normal maps' shading normals (baked again when the mesh, a normal
-    // map or the atlas changed).
-    const NormalAtlas& normalAtlas(const Scene& scene, const RenderOptions& opt, uint64_t meshKey);
+    // The normal and roughness maps per atlas texel (baked again when the
+    // mesh, a map, --roughness or the atlas changed).
+    const SurfaceAtlas& surfaceAtlas(const Scene& scene, const RenderOptions& opt,
+                                     uint64_t meshKey);
     // The method's copy of B over the atlas for this frame (Method::
     // atlasRadiosity), where the frame can read B from it on the GL side:
     // lighting unchanged, one material, nothing added to B on the CL side
@@ -126,8 +127,8 @@ class Renderer {
     std::unique_ptr<SceneMedia> media_;
     AlbedoAtlas albedo_;
     uint64_t albedoOf_ = 0;
-    NormalAtlas normals_;
-    uint64_t normalsOf_ = 0;
+    SurfaceAtlas surface_;
+    uint64_t surfaceOf_ = 0;
     uint64_t lastView_ = 0;  // the last frame's view and size (FrameContext::cameraMoved)
 };
 

@@ -2,7 +2,8 @@
 // frame runs its method once per distinct material ("slot") and keeps, for
 // every point, the run of the material of its own triangle, over the entry
 // points of its whole medium (docs/design.md §2 "Materials": a solid of
-// several materials). One material: one slot, the frame as it always was.
+// several materials; a material's mean-free-path map, one slot per step,
+// render/mfp_map.h). One material: one slot, the frame as it always was.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,10 @@ namespace tsis {
 struct SceneMedia {
     Media media;
     std::vector<uint32_t> slotMaterial;  // the file material of each slot (Mesh::materialIds)
+    // The step of its material's mean-free-path map each slot scatters with
+    // (render/mfp_map.h); kNoStep: the material's medium.
+    static constexpr uint32_t kNoStep = ~0u;
+    std::vector<uint32_t> slotStep;
     std::vector<uint32_t> slotOfMedium;  // the slot of each medium's first triangle
     // The slot of each file material (Mesh::materialIds), and of
     // kNoFileMaterial last; materials no triangle uses: 0.
@@ -31,6 +36,12 @@ struct SceneMedia {
     uint32_t fileMaterialOfMedium(size_t m) const;
     // The slot of file material `id` (kNoFileMaterial: the scene's material).
     uint32_t slotOfMaterial(uint32_t id) const;
+    // The slot of step `step` of file material `id`'s mean-free-path map.
+    uint32_t slotOfStep(uint32_t id, size_t step) const;
+    // The medium slot k scatters in.
+    const Material& slotMedium(const Scene& scene, size_t k) const;
+    // The slots of each file material's map steps (empty: no map).
+    std::vector<std::vector<uint32_t>> stepSlotsOfId;
 };
 
 SceneMedia sceneMedia(const Scene& scene, Media media);

@@ -32,8 +32,7 @@ double mediaMeanFreePath(const FrameContext& ctx) {
     double ell = INFINITY;
     const SceneMedia& sm = *ctx.media;
     for (size_t m = 0; m < sm.etaOfMedium.size(); ++m)
-        ell = std::min(
-            ell, smallestMeanFreePath(ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]])));
+        ell = std::min(ell, smallestMeanFreePath(sm.slotMedium(*ctx.scene, sm.slotOfMedium[m])));
     return ell;
 }
 
@@ -207,8 +206,8 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
             const SceneMedia& sm = *ctx.media;
             std::vector<TsisScatterMedium> media;
             for (size_t m = 0; m < sm.etaOfMedium.size(); ++m)
-                media.push_back(scatterMedium(
-                    ctx.scene->materialOf(sm.slotMaterial[sm.slotOfMedium[m]]), ctx.options->exit));
+                media.push_back(scatterMedium(sm.slotMedium(*ctx.scene, sm.slotOfMedium[m]),
+                                              ctx.options->exit));
             const size_t mediaBytes = media.size() * sizeof(TsisScatterMedium);
             cl::Buffer& mediaBuffer = media_.reserve(cl_.context(), mediaBytes);
             queue.enqueueWriteBuffer(mediaBuffer, CL_TRUE, 0, mediaBytes, media.data());

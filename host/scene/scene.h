@@ -40,6 +40,13 @@ struct AlbedoTexture {
     ImageF image;
 };
 
+// One step of a mean-free-path map (render/mfp_map.h): the material's
+// medium with its mean free path × `scale`.
+struct MfpStep {
+    double scale = 1.0;
+    Material medium;
+};
+
 // The material of the triangles that carry one file material (issue 20,
 // docs/design.md §2 "Materials"): the medium light scatters in, and the
 // albedo its surface shows — the medium's own total reflectance unless a
@@ -55,9 +62,18 @@ struct ObjectMaterial {
     double roughness = -1.0;
     // A tangent-space normal map (+x along the texture's u, +y up the image,
     // glTF's convention; linear RGB), its x and y scaled by normalScale;
-    // null: none (render/normal_atlas.h bakes it per atlas texel).
+    // null: none (render/surface_atlas.h bakes it per atlas texel).
     std::shared_ptr<const AlbedoTexture> normalMap;
     double normalScale = 1.0;
+    // A roughness map (linear): R = roughness (1 when none given) × its
+    // channel `roughnessChannel` (glTF's metallic-roughness texture: G, 1;
+    // OBJ map_Pr, a grey map: 0); null: none (render/surface_atlas.h).
+    std::shared_ptr<const AlbedoTexture> roughnessMap;
+    int roughnessChannel = 1;
+    // A mean-free-path map (linear; render/mfp_map.h) and the steps it is
+    // quantised to; null and empty: none (`medium` everywhere).
+    std::shared_ptr<const AlbedoTexture> mfpMap;
+    std::vector<MfpStep> mfpSteps;
 };
 
 struct Scene {
