@@ -451,7 +451,8 @@ TEST(Materials, RoughnessAtlasFollowsTheMapPerTexel) {
     s.objectMaterials = {o};
     s.mesh.materialIds.assign(s.mesh.triangles.size(), 0);
     const int res = 256;
-    const SurfaceAtlas atlas = bakeSurfaceAtlas(s, res, true);
+    const Media media = findMedia(s.mesh);
+    const SurfaceAtlas atlas = bakeSurfaceAtlas(s, media, res, true);
     ASSERT_EQ(atlas.roughness.size(), static_cast<size_t>(res) * res);
     EXPECT_TRUE(atlas.normal.empty());  // no normal map: none baked
     int counted[2] = {0, 0};
@@ -466,7 +467,7 @@ TEST(Materials, RoughnessAtlasFollowsTheMapPerTexel) {
         }
     EXPECT_GT(counted[0], 1000);
     EXPECT_GT(counted[1], 1000);
-    EXPECT_TRUE(bakeSurfaceAtlas(s, res, false).empty());  // --roughness R: no map read
+    EXPECT_TRUE(bakeSurfaceAtlas(s, media, res, false).empty());  // --roughness R: no map read
 }
 
 // The split box of one material whose mean-free-path map (render/mfp_map.h)
@@ -583,6 +584,131 @@ TEST(Materials, MeanFreePathMapSteps) {
                      "mean free path map 'holes.png': texel (1, 0) scales by 0; it must be finite "
                      "and > 0");
     }
+}
+
+// Each triangle of one solid reflects with its own material's roughness
+// (the media table holds one R per medium, so the surface atlas carries R
+// per texel where a medium holds several): each half of a split box of R
+// 0.2875 and 0.584 (two of the ladder's steps) renders as the box all of
+// that R, under a light and a sky.
+TEST(Materials, EachTriangleOfOneSolidReflectsWithItsOwnRoughness) {
+    const double r[2] = {ladderRoughness(4), ladderRoughness(6)};
+    auto box = [&](double left, double right, bool env) {
+        Scene s = splitBox("marble", "marble");
+        s.objectMaterials[0].roughness = left;
+        s.objectMaterials[1].roughness = right;
+        if (env) {
+            const int w = 32, h = 16;
+            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
+            for (int y = 0; y < h; ++y)
+                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
+            s.env.map = splitEnvironment("sky", w, h, 3, sky);
+        }
+        return s;
+    };
+    RenderOptions opt = test::smallOptions(96, 256, 64);
+    opt.aa = 1;
+    for (bool env : {false, true}) {
+        SCOPED_TRACE(env ? "a sky as well" : "a light");
+        const FrameResult both = test::renderWith(box(r[0], r[1], env), opt, "pyramid");
+        const FrameResult left = test::renderWith(box(r[0], r[0], env), opt, "pyramid");
+        const FrameResult right = test::renderWith(box(r[1], r[1], env), opt, "pyramid");
+        EXPECT_LT(cubeError(both, left, true, true), 1e-5);
+        EXPECT_LT(cubeError(both, right, false, true), 1e-5);
+        EXPECT_GT(cubeError(left, right, false, true), 1e-3);  // the R shows
+    }
+}
+
+// A corrugated sheet y = A sin(2πx/λ) (λ 4 mm, slopes to ±25°, 24 mm
+// square), as displaced geometry (`displaced`) or flat (y = 0) with the
+// slopes in a normal map (x along the texture's u) or without one.
+Scene corrugatedSheet(bool displaced, bool mapped) {
+    const double half = 12, lambda = 4, slope = std::tan(25.0 * M_PI / 180.0);
+    const double amplitude = slope * lambda / (2 * M_PI);
+    const int nx = 240, nz = 24;
+    auto height = [&](double x) { return amplitude * std::sin(2 * M_PI * x / lambda); };
+    auto slopeAt = [&](double x) { return slope * std::cos(2 * M_PI * x / lambda); };
+    Mesh m;
+    m.name = "corrugated";
+    for (int j = 0; j <= nz; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            const double x = -half + 2 * half * i / nx, z = -half + 2 * half * j / nz;
+            m.positions.emplace_back(x, displaced ? height(x) : 0.0, z);
+            m.normals.push_back(displaced ? glm::vec3(glm::normalize(glm::dvec3(-slopeAt(x), 1, 0)))
+                                          : glm::vec3(0, 1, 0));
+        }
+    for (int j = 0; j < nz; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const unsigned a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+            m.triangles.emplace_back(a, c, b);
+            m.triangles.emplace_back(b, c, d);
+        }
+    AtlasOptions atlas;
+    atlas.resolution = 1024;
+    atlas.useCache = false;
+    Scene s;
+    s.mesh = buildAtlas(m, atlas);
+    s.material = presetMaterial("marble");
+    s.mesh.texcoords.clear();
+    for (const glm::vec3& p : s.mesh.positions)
+        s.mesh.texcoords.emplace_back((p.x + half) / (2 * half), (p.z + half) / (2 * half));
+    if (mapped) {
+        ObjectMaterial o = objectMaterial("marble");
+        auto map = std::make_shared<AlbedoTexture>();
+        map->name = "slopes";
+        const int w = 960;  // 160 texels a period
+        map->image = ImageF{w, 1, 3, {}};
+        for (int k = 0; k < w; ++k) {
+            const glm::dvec3 n =
+                glm::normalize(glm::dvec3(-slopeAt(-half + 2 * half * (k + 0.5) / w), 0, 1));
+            for (int c = 0; c < 3; ++c) map->image.pixels.push_back(float(0.5 * (n[c] + 1)));
+        }
+        o.normalMap = map;
+        s.objectMaterials = {o};
+        s.mesh.materialIds.assign(s.mesh.triangles.size(), 0);
+    }
+    s.lights = {{Light::Type::Directional, glm::normalize(glm::vec3(-1, -1, 0)), glm::vec3(1.0f)}};
+    s.camera.eye = glm::vec3(0, 40, 0);
+    s.camera.target = glm::vec3(0);
+    s.camera.up = glm::vec3(0, 0, -1);
+    s.camera.fovYDegrees = 20;  // ±7 mm of the sheet's centre
+    return s;
+}
+
+// The normal map against the geometry it stands for: a flat sheet whose
+// normal map holds a corrugation's slopes renders as the corrugated sheet
+// does, far closer than the flat sheet without the map (the map's entry and
+// exit cosines, lobe and shading are the geometry's; what it cannot give is
+// the geometry's extra area, up to 1/cos 25° = 1.10, and its parallax).
+TEST(Materials, NormalMapStandsForDisplacedGeometry) {
+    RenderOptions opt = test::smallOptions(128, 1024);
+    opt.aa = 1;
+    const FrameResult geometry = test::renderWith(corrugatedSheet(true, false), opt, "pyramid");
+    const FrameResult mapped = test::renderWith(corrugatedSheet(false, true), opt, "pyramid");
+    const FrameResult flat = test::renderWith(corrugatedSheet(false, false), opt, "pyramid");
+    auto error = [&](const FrameResult& f, bool radiance) {
+        double sum2 = 0, sum = 0;
+        size_t n = 0;
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x) {
+                if (!(geometry.coverage.at(x, y, 0) > 0.99 && f.coverage.at(x, y, 0) > 0.99))
+                    continue;
+                for (int c = 0; c < 3; ++c) {
+                    const float a = (radiance ? f.radiance : f.radiosity).at(x, y, c);
+                    const float b = (radiance ? geometry.radiance : geometry.radiosity).at(x, y, c);
+                    sum2 += double(a - b) * (a - b), sum += b, ++n;
+                }
+            }
+        return std::sqrt(sum2 / double(n)) / (sum / double(n));
+    };
+    const double mappedB = error(mapped, false), flatB = error(flat, false);
+    const double mappedL = error(mapped, true), flatL = error(flat, true);
+    std::printf(
+        "against the displaced geometry, rel. RMSE: normal map B %.4f L %.4f, "
+        "flat B %.4f L %.4f\n",
+        mappedB, mappedL, flatB, flatL);
+    EXPECT_LT(mappedB, 0.3 * flatB);
+    EXPECT_LT(mappedL, 0.2 * flatL);
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // roughness, one without a map and rough, rendered by `tsis render`: the
 // mapped quad's pixels have the map's normal and the other's the
 // geometry's, and --roughness R replaces both files' roughnesses; a grey
-// map_Pr is the lobe's R where it lies.
+// map_Pr is the lobe's R where it lies; the same scene as a glTF (a
+// metallic-roughness texture) renders the same image.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +32,50 @@ void quad(std::ofstream& obj, double x0, int first, const char* material) {
     };
     obj << "f " << corner(1) << " " << corner(4) << " " << corner(3) << "\nf " << corner(1) << " "
         << corner(3) << " " << corner(2) << "\n";
+}
+
+// The two quads as a glTF beside tilt.png and rough.png: "mapped" with the
+// normal map and R = 1 × rough.png's G, "plain" with roughnessFactor 0.9;
+// each quad's corners, texture coordinates and triangles as quad() writes
+// them (TEXCOORD_0's v from the top, OBJ's vt's from the bottom).
+void writeGltfQuads(const ScratchDir& dir) {
+    std::string bin;
+    auto put = [&](const auto& v) { bin.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    for (double x0 : {-10.0, 2.0})
+        for (int k = 0; k < 4; ++k) {
+            const int i = k == 1 || k == 2, j = k >= 2;
+            for (float f : {float(x0 + 8 * i), 0.0f, float(-4 + 8 * j), 0.0f, 1.0f, 0.0f, float(i),
+                            float(1 - j)})
+                put(f);
+        }
+    for (int q = 0; q < 2; ++q)
+        for (int c : {0, 3, 2, 0, 2, 1}) put(static_cast<uint16_t>(4 * q + c));
+    std::ofstream(dir.file("q.bin"), std::ios::binary) << bin;
+    std::ofstream(dir.file("q.gltf")) << R"({"asset": {"version": "2.0"}, "scene": 0,
+      "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [
+        {"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0},
+        {"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 4, "material": 1}]}],
+      "materials": [
+        {"name": "mapped", "normalTexture": {"index": 0},
+         "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0,
+                                  "metallicRoughnessTexture": {"index": 1}}},
+        {"name": "plain", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1],
+                                                   "metallicFactor": 0, "roughnessFactor": 0.9}}],
+      "textures": [{"source": 0}, {"source": 1}],
+      "images": [{"uri": "tilt.png"}, {"uri": "rough.png"}],
+      "buffers": [{"uri": "q.bin", "byteLength": )"
+                                      << bin.size() << R"(}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 256, "byteStride": 32},
+                      {"buffer": 0, "byteOffset": 256, "byteLength": 12},
+                      {"buffer": 0, "byteOffset": 268, "byteLength": 12}],
+      "accessors": [
+        {"bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+         "min": [-10, 0, -4], "max": [10, 0, 4]},
+        {"bufferView": 0, "byteOffset": 12, "componentType": 5126, "count": 8, "type": "VEC3"},
+        {"bufferView": 0, "byteOffset": 24, "componentType": 5126, "count": 8, "type": "VEC2"},
+        {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+        {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
 }
 
 TEST(SurfaceMaps, NormalMapAndRoughnessPerObjectFromTheFile) {
@@ -122,6 +167,24 @@ TEST(SurfaceMaps, NormalMapAndRoughnessPerObjectFromTheFile) {
         }
     EXPECT_LT(mapGap, 1e-6);
     EXPECT_GT(apart, 1e-4);  // and not as the file's Pr 0.1
+
+    // The same scene as a glTF (the maps as textures of the file, R 0.6 as a
+    // metallic-roughness texture's G): the same image.
+    writeGltfQuads(dir);
+    const RunResult g =
+        runTsis("render --mesh " + dir.file("q.gltf") + common.substr(common.find(" --size-mm")) +
+                "--aov " + dir.file("gltf") + " -o " + dir.file("gltf.png"));
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const ImageF viaGltf = readImageF(dir.file("gltf/radiance.exr"));
+    double gltfGap = 0, peak = 0;
+    for (int y = 0; y < file.height; ++y)
+        for (int x = 0; x < file.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                gltfGap =
+                    std::max(gltfGap, double(std::abs(viaGltf.at(x, y, c) - viaPr.at(x, y, c))));
+                peak = std::max(peak, double(viaPr.at(x, y, c)));
+            }
+    EXPECT_LT(gltfGap, 1e-5 * peak);
 }
 
 }  // namespace

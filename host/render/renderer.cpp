@@ -201,8 +201,8 @@ const AlbedoAtlas& Renderer::albedoAtlas(const Scene& scene, const SceneMedia& m
     return albedo_;
 }
 
-const SurfaceAtlas& Renderer::surfaceAtlas(const Scene& scene, const RenderOptions& opt,
-                                           uint64_t meshKey) {
+const SurfaceAtlas& Renderer::surfaceAtlas(const Scene& scene, const Media& media,
+                                           const RenderOptions& opt, uint64_t meshKey) {
     const bool fileRoughness = opt.roughness < 0;
     Hasher h(meshKey);
     h.add(opt.atlasResolution).add(fileRoughness);
@@ -212,7 +212,7 @@ const SurfaceAtlas& Renderer::surfaceAtlas(const Scene& scene, const RenderOptio
             if (map) h.add(map->name).add(map->image.width).add(map->image.height);
     }
     if (h.digest() != surfaceOf_) {
-        surface_ = bakeSurfaceAtlas(scene, opt.atlasResolution, fileRoughness);
+        surface_ = bakeSurfaceAtlas(scene, media, opt.atlasResolution, fileRoughness);
         surfaceOf_ = h.digest();
     }
     return surface_;
@@ -305,7 +305,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     const SceneMedia& sm = media(scene, mesh);
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);
-    ctx.surface = &surfaceAtlas(scene, opt, mesh);
+    ctx.surface = &surfaceAtlas(scene, sm.media, opt, mesh);
     const uint64_t lighting =
         Hasher(lightingKey(scene, opt, mesh)).add(ctx.albedo->key).add(ctx.surface->key).digest();
     if (!opt.reuseLighting) raster_.invalidateLighting();

@@ -94,10 +94,11 @@ class Renderer {
     // The albedo factors (baked again when the mesh, a material or the atlas changed).
     const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
                                    const RenderOptions& opt, uint64_t meshKey);
-    // The normal and roughness maps per atlas texel (baked again when the
-    // mesh, a map, --roughness or the atlas changed).
-    const SurfaceAtlas& surfaceAtlas(const Scene& scene, const RenderOptions& opt,
-                                     uint64_t meshKey);
+    // The normal and roughness maps per atlas texel, and R per texel where a
+    // medium holds several (baked again when the mesh, a map, a roughness,
+    // --roughness or the atlas changed).
+    const SurfaceAtlas& surfaceAtlas(const Scene& scene, const Media& media,
+                                     const RenderOptions& opt, uint64_t meshKey);
     // The method's copy of B over the atlas for this frame (Method::
     // atlasRadiosity), where the frame can read B from it on the GL side:
     // lighting unchanged, one material, nothing added to B on the CL side

@@ -6,6 +6,7 @@
 
 #include "physics/ggx.h"
 #include "render/albedo_atlas.h"
+#include "render/render_options.h"
 #include "util/hash.h"
 
 namespace tsis {
@@ -81,7 +82,8 @@ glm::vec3 shadingNormalAt(const Mesh& mesh, const std::vector<glm::vec4>& tangen
 
 }  // namespace
 
-SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, int resolution, bool fileRoughness) {
+SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, const Media& media, int resolution,
+                              bool fileRoughness) {
     const Mesh& mesh = scene.mesh;
     SurfaceAtlas atlas;
     atlas.resolution = resolution;
@@ -89,26 +91,43 @@ SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, int resolution, bool fileRough
         const uint32_t id = mesh.materialOf(t);
         return id < scene.objectMaterials.size() ? &scene.objectMaterials[id] : nullptr;
     };
+    // The maps need the file's texture coordinates; R per triangle does not.
+    const bool maps = mesh.hasTexcoords();
     auto roughnessMapped = [&](const ObjectMaterial* m) {
-        return fileRoughness && m && m->roughnessMap;
+        return fileRoughness && maps && m && m->roughnessMap;
     };
+    // A triangle's own R without a map: its material's (the default where none).
+    auto ownRoughness = [&](const ObjectMaterial* m) {
+        return static_cast<float>(surfaceRoughness(-1.0f, m ? m->roughness : -1.0));
+    };
+    // R per texel where a map gives it, or where one medium holds triangles
+    // of several R (the media table holds one R per medium: its first
+    // triangle's).
     bool normals = false, roughness = false;
+    std::vector<float> firstOfMedium(media.count, -1.0f);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const ObjectMaterial* m = materialOf(t);
-        normals = normals || (m && m->normalMap);
+        normals = normals || (maps && m && m->normalMap);
         roughness = roughness || roughnessMapped(m);
+        const uint32_t v = mesh.triangles[t][0];
+        const uint32_t medium = v < media.ofVertex.size() ? media.ofVertex[v] : 0;
+        if (!fileRoughness || medium >= firstOfMedium.size()) continue;
+        if (firstOfMedium[medium] < 0) firstOfMedium[medium] = ownRoughness(m);
+        roughness = roughness || firstOfMedium[medium] != ownRoughness(m);
     }
-    if (!(normals || roughness) || !mesh.hasTexcoords()) return atlas;
+    if (!(normals || roughness)) return atlas;
 
     const std::vector<glm::vec4> tangents =
         normals ? vertexTangents(mesh) : std::vector<glm::vec4>();
     const size_t n = static_cast<size_t>(resolution) * resolution;
     if (normals) atlas.normal.assign(n, glm::vec3(0.0f));
     if (roughness) atlas.roughness.assign(n, 0.0f);
+    // The texels some triangle covers (mapped or not): the gutters are the rest.
+    std::vector<char> covered(roughness ? n : 0, 0);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         const ObjectMaterial* m = materialOf(t);
-        const bool normalMapped = m && m->normalMap, roughMapped = roughnessMapped(m);
-        if (!normalMapped && !roughMapped) continue;
+        const bool normalMapped = maps && m && m->normalMap, roughMapped = roughnessMapped(m);
+        if (!normalMapped && covered.empty()) continue;
         const glm::uvec3 tri = mesh.triangles[t];
         const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
                                               e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
@@ -129,8 +148,13 @@ SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, int resolution, bool fileRough
                 if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) continue;
                 const double w[3] = {1 - s - r, s, r};
                 glm::vec2 tc(0.0f);
-                for (int k = 0; k < 3; ++k) tc += float(w[k]) * mesh.texcoords[tri[k]];
+                if (maps)
+                    for (int k = 0; k < 3; ++k) tc += float(w[k]) * mesh.texcoords[tri[k]];
                 const size_t i = static_cast<size_t>(y) * resolution + x;
+                if (!covered.empty()) {
+                    covered[i] = 1;
+                    atlas.roughness[i] = ownRoughness(m);
+                }
                 if (roughMapped) {
                     // glTF: roughnessFactor × the texture's G (OBJ: the grey map).
                     const double factor = m->roughness >= 0 ? m->roughness : 1.0;
@@ -143,13 +167,13 @@ SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, int resolution, bool fileRough
     }
     // The gutters a few texels round each chart, where GL's rasterisation of
     // a pixel at a chart's edge may land, take their covered neighbours' R
-    // (else that pixel's lobe would be its material's factor alone).
+    // (else that pixel's lobe would be its medium's).
     for (int ring = 0; ring < 4 && !atlas.roughness.empty(); ++ring) {
         std::vector<float> next = atlas.roughness;
         for (int y = 0; y < resolution; ++y)
             for (int x = 0; x < resolution; ++x) {
                 const size_t i = static_cast<size_t>(y) * resolution + x;
-                if (atlas.roughness[i] > 0) continue;
+                if (covered[i] || atlas.roughness[i] > 0) continue;
                 float sum = 0;
                 int count = 0;
                 for (int dy = -1; dy <= 1; ++dy)

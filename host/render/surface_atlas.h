@@ -16,6 +16,7 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "mesh/media.h"
 #include "scene/scene.h"
 
 namespace tsis {
@@ -26,9 +27,10 @@ struct SurfaceAtlas {
     // where no normal-mapped triangle covers it (the geometry's normal
     // there). Empty: no material has a normal map.
     std::vector<glm::vec3> normal;
-    // The lobe's roughness R per texel, likewise; 0 where no roughness-mapped
-    // triangle covers it (the material's R there). Empty: no roughness map
-    // is used (none, or --roughness R replaces them).
+    // The lobe's roughness R per texel, likewise (the map's, else the
+    // triangle's material's); 0 where no triangle covers it (the medium's
+    // R there). Empty: no roughness map is used and each medium's triangles
+    // share one R (or --roughness R replaces them all).
     std::vector<float> roughness;
     uint64_t key = 0;  // changes with whatever changed the normals or roughness
     bool empty() const { return normal.empty() && roughness.empty(); }
@@ -43,9 +45,12 @@ struct SurfaceAtlas {
 // splitting of corners that disagree). Zero where no triangle gives one.
 std::vector<glm::vec4> vertexTangents(const Mesh& mesh);
 
-// The shading normals and roughness of `scene` at `resolution`: each empty
-// when no triangle's material has such a map (or the mesh no texture
-// coordinates); roughness maps only with `fileRoughness` (--roughness file).
-SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, int resolution, bool fileRoughness);
+// The shading normals and roughness of `scene` (its solids `media`) at
+// `resolution`: the normals empty when no triangle's material has a normal
+// map, the roughness when none has a roughness map and no medium holds
+// triangles of several roughnesses, both when the mesh has no texture
+// coordinates; the file's roughness only with `fileRoughness` (--roughness file).
+SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, const Media& media, int resolution,
+                              bool fileRoughness);
 
 }  // namespace tsis
