@@ -188,6 +188,15 @@ TEST(Materials, EachTriangleOfOneSolidScattersWithItsOwnMaterial) {
     }
 }
 
+// A sky bright above and dark below: a lobe's width shows in its reflection.
+std::shared_ptr<const EnvironmentMap> halfSky() {
+    const int w = 32, h = 16;
+    std::vector<float> sky(static_cast<size_t>(w) * h * 3);
+    for (int y = 0; y < h; ++y)
+        std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
+    return splitEnvironment("sky", w, h, 3, sky);
+}
+
 // Each object's surface has its file's roughness (ObjectMaterial::roughness)
 // in the lights' lobe and in the environment's reflection: each cube renders
 // as it does when every surface has its roughness; --roughness R replaces
@@ -202,13 +211,7 @@ TEST(Materials, EachObjectReflectsWithItsOwnRoughness) {
     for (bool env : {false, true}) {
         SCOPED_TRACE(env ? "a sky as well" : "a light");
         Scene scene = files;
-        if (env) {
-            const int w = 32, h = 16;
-            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
-            for (int y = 0; y < h; ++y)  // bright above, dark below: the lobe's width shows
-                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
-            scene.env.map = splitEnvironment("sky", w, h, 3, sky);
-        }
+        if (env) scene.env.map = halfSky();
         const FrameResult both = test::renderWith(scene, opt, "pyramid");
         RenderOptions all = opt;
         all.roughness = 0.15f;
@@ -383,13 +386,7 @@ TEST(Materials, RoughnessMapSetsTheLobePerTexel) {
     for (bool env : {false, true}) {
         SCOPED_TRACE(env ? "a sky as well" : "a light");
         Scene scene = files;
-        if (env) {
-            const int w = 32, h = 16;
-            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
-            for (int y = 0; y < h; ++y)  // bright above, dark below: the lobe's width shows
-                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
-            scene.env.map = splitEnvironment("sky", w, h, 3, sky);
-        }
+        if (env) scene.env.map = halfSky();
         // The maps: R = 0.5 × G on the left cube, 1 × G on the right.
         auto withMaps = [&](double left, double right) {
             Scene s = scene;
@@ -597,13 +594,7 @@ TEST(Materials, EachTriangleOfOneSolidReflectsWithItsOwnRoughness) {
         Scene s = splitBox("marble", "marble");
         s.objectMaterials[0].roughness = left;
         s.objectMaterials[1].roughness = right;
-        if (env) {
-            const int w = 32, h = 16;
-            std::vector<float> sky(static_cast<size_t>(w) * h * 3);
-            for (int y = 0; y < h; ++y)
-                std::fill_n(&sky[static_cast<size_t>(y) * w * 3], w * 3, y < h / 2 ? 0.4f : 0.02f);
-            s.env.map = splitEnvironment("sky", w, h, 3, sky);
-        }
+        if (env) s.env.map = halfSky();
         return s;
     };
     RenderOptions opt = test::smallOptions(96, 256, 64);
