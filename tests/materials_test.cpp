@@ -546,7 +546,7 @@ TEST(Materials, MeanFreePathMapScalesEachTexelsMedium) {
 // texture coordinate takes its nearest step; a texel of 0 is an error.
 TEST(Materials, MeanFreePathMapSteps) {
     const Material skin = presetMaterial("skin1");
-    auto map = [](std::vector<float> values) {
+    auto map = [](const std::vector<float>& values) {
         ImageF m{static_cast<int>(values.size()), 1, 1, values};
         return m;
     };
