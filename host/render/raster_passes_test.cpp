@@ -296,5 +296,31 @@ TEST(Composite, UnclearedTargetsLeaveNoEarlierFrameBehind) {
     }
 }
 
+// --aa-method fxaa reads the centres' marks, made when the G-buffer changes
+// and kept while only the lights do: a renderer that drew another view, then
+// this view, then this view under a moved light draws that last frame as a
+// fresh renderer does, byte for byte (with the display straight from the
+// centres and through the tone map's pass).
+TEST(Composite, FxaaKeepsTheMarksWhileOnlyTheLightMoves) {
+    Scene scene = test::torusScene("marble", 10.0);
+    Scene other = scene;
+    other.camera.eye = glm::vec3(-4, 9, 9);
+    RenderOptions opt = test::smallOptions(96, 256);
+    opt.method = "pyramid";
+    opt.aaMethod = AaMethod::Fxaa;
+    for (bool autoExposure : {false, true}) {
+        SCOPED_TRACE(autoExposure);
+        opt.autoExposure = autoExposure;
+        Renderer reused;
+        reused.render(other, opt);
+        reused.render(scene, opt);
+        Scene moved = scene;
+        moved.lights[0].vec = glm::vec3(10, -5, 8);
+        const FrameResult a = Renderer().render(moved, opt), b = reused.render(moved, opt);
+        EXPECT_EQ(b.stats.number("lighting_reused"), 0.0);  // the light views drawn again
+        EXPECT_EQ(a.rgb8, b.rgb8);
+    }
+}
+
 }  // namespace
 }  // namespace tsis
