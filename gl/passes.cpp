@@ -322,28 +322,28 @@ CompositePass::~CompositePass() {
 void CompositePass::updateEdgePoints(uint64_t key, const RenderTarget& target, int index) {
     const int w = target.width(), h = target.height();
     const std::vector<unsigned char> marks = target.readRGBA8(index);
-    auto at = [&](int x, int y, int c) {
-        return marks[(size_t(y) * size_t(w) + size_t(x)) * 4 + size_t(c)] != 0;
-    };
+    const size_t width = static_cast<size_t>(w);
     // Coverage dilated along each row, then the 3×3 test as three rows' look-ups.
-    std::vector<unsigned char> rowNear(size_t(w) * size_t(h), 0);
-    for (int y = 0; y < h; ++y)
+    std::vector<unsigned char> rowNear(width * static_cast<size_t>(h), 0);
+    for (int y = 0; y < h; ++y) {
+        const unsigned char* m = &marks[static_cast<size_t>(y) * width * 4];
+        unsigned char* near = &rowNear[static_cast<size_t>(y) * width];
         for (int x = 0; x < w; ++x)
-            if (at(x, y, 1))
-                for (int u = std::max(0, x - 1); u <= std::min(w - 1, x + 1); ++u)
-                    rowNear[size_t(y) * size_t(w) + size_t(u)] = 1;
-    auto besideCovered = [&](int x, int y) {
-        for (int v = std::max(0, y - 1); v <= std::min(h - 1, y + 1); ++v)
-            if (rowNear[size_t(v) * size_t(w) + size_t(x)]) return true;
-        return false;
-    };
+            if (m[x * 4 + 1]) near[std::max(0, x - 1)] = near[x] = near[std::min(w - 1, x + 1)] = 1;
+    }
     // The list as a texture of slots, pixel e's at (e mod kEdgeColumns, e div
     // kEdgeColumns), rows in steps of 8 (fewer re-made targets); the slots
     // past the list repeat its last pixel (shaded, never read).
     std::vector<glm::vec2> points;
-    for (int y = 0; y < h; ++y)
+    for (int y = 0; y < h; ++y) {
+        const unsigned char* m = &marks[static_cast<size_t>(y) * width * 4];
+        const unsigned char* above = &rowNear[static_cast<size_t>(std::max(0, y - 1)) * width];
+        const unsigned char* row = &rowNear[static_cast<size_t>(y) * width];
+        const unsigned char* below = &rowNear[static_cast<size_t>(std::min(h - 1, y + 1)) * width];
         for (int x = 0; x < w; ++x)
-            if (at(x, y, 1) ? at(x, y, 0) : besideCovered(x, y)) points.emplace_back(x, y);
+            if (m[x * 4 + 1] ? m[x * 4] != 0 : (above[x] | row[x] | below[x]) != 0)
+                points.emplace_back(x, y);
+    }
     edgeCount_ = static_cast<GLsizei>(points.size());
     edgesKey_ = key;
     const int rows = std::max(1, (edgeCount_ + kEdgeColumns * 8 - 1) / (kEdgeColumns * 8)) * 8;

@@ -153,12 +153,19 @@ layout(location = 1) out vec4 o_edge;
 
 // A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
 // depth jump passes through it or beside it.
+// (sameSurface against each neighbour, the centre's distance taken once and
+// the centre itself, always its own surface, not read again.)
 bool edgePixel(ivec2 px, vec4 p) {
     ivec2 size = textureSize(u_framePosition, 0);
+    float dp = distance(p.xyz, u_eye);
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 k = clamp(px + ivec2(dx, dy), ivec2(0), size - 1);
-            if (!sameSurface(p, texelFetch(u_framePosition, k, 0))) return true;
+            if (dx == 0 && dy == 0) continue;
+            vec4 q = texelFetch(u_framePosition, clamp(px + ivec2(dx, dy), ivec2(0), size - 1), 0);
+            if ((p.w > 0.0) != (q.w > 0.0)) return true;
+            if (p.w == 0.0) continue;
+            float dq = distance(q.xyz, u_eye);
+            if (!(abs(dp - dq) <= 0.02 * max(dp, dq))) return true;
         }
     return false;
 }
