@@ -282,6 +282,11 @@ struct Reader {
         if (pbr.metallicFactor > 0 && m.values.count("metallicFactor"))
             ignored.add("metallicFactor > 0 (dielectric surfaces only)");
         roughnessTexture(fm, i);
+        // With the texture the metalness is the factor × its B: a factor left
+        // at glTF's default 1 lets the texture make metal.
+        if (!fm.roughnessMapPath.empty() && pbr.metallicFactor > 0 &&
+            !m.values.count("metallicFactor"))
+            ignored.add("metalness (the metallic-roughness texture's B; dielectric surfaces only)");
         normalTexture(fm, i);
         if (m.occlusionTexture.index >= 0) ignored.add("occlusionTexture");
         if (m.emissiveTexture.index >= 0) ignored.add("emissiveTexture");

@@ -611,6 +611,27 @@ TEST(GLTF, ImageInABufferViewKeepsItsBytes) {
     EXPECT_EQ(view.materials[0].textureBytes.substr(0, 4), "\x89PNG");
 }
 
+// A metallic-roughness texture's B is the metalness where the file leaves
+// metallicFactor at glTF's 1: noted (tsis' surfaces are dielectric); with a
+// factor of 0 it is no metal, and says nothing.
+TEST(GLTF, MetalnessInTheRoughnessTextureIsNoted) {
+    auto notes = [](const std::string& pbr) {
+        FileView view;
+        testing::internal::CaptureStderr();
+        parseGLTF(materialScene(R"([{"pbrMetallicRoughness": {"metallicRoughnessTexture": )"
+                                R"({"index": 0})" +
+                                    pbr + "}}, {}]",
+                                R"([{"source": 0}])",
+                                R"([{"bufferView": 4, "mimeType": "image/png"}])", "", true),
+                  "m.gltf", "", &view);
+        EXPECT_FALSE(view.materials.at(0).roughnessMapPath.empty());
+        return testing::internal::GetCapturedStderr();
+    };
+    EXPECT_THAT(notes(""), testing::HasSubstr("metalness (the metallic-roughness texture's B; "
+                                              "dielectric surfaces only) (1)"));
+    EXPECT_THAT(notes(R"(, "metallicFactor": 0)"), testing::Not(testing::HasSubstr("metal")));
+}
+
 TEST(GLTF, BadMaterialValuesAreOneLineErrors) {
     auto load = [](const std::string& material) {
         FileView view;
