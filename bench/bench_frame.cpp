@@ -393,8 +393,11 @@ int run(const BenchArgs& a) {
         std::stringstream text;
         text << in.rdbuf();
         std::string md = text.str();
+        // That section alone: the sections after it (the next "## ") stay.
         const size_t at = md.find(kCompositeHeading);
-        md = (at == std::string::npos ? md : md.substr(0, at)) + section;
+        const size_t next = at == std::string::npos ? at : md.find("\n## ", at + 1);
+        md = (at == std::string::npos ? md : md.substr(0, at)) + section +
+             (next == std::string::npos ? "" : md.substr(next));
         writeResult("frame.md", md);
         std::printf("%s", section.c_str());
         return 0;
