@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
 #include "util/error.h"
@@ -39,6 +40,25 @@ void rasterUVTriangles(const Mesh& mesh, int resolution,
                 if (inside) fn(t, x, y);
             }
     }
+}
+
+void forEachTexelNear(const Mesh& mesh, const glm::uvec3& tri, int resolution, double reach,
+                      const std::function<void(int, int, double, double)>& fn) {
+    const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
+                                          e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
+    const double det = e1.x * e2.y - e1.y * e2.x;
+    if (det == 0) return;
+    const glm::dvec2 lo = glm::min(a, glm::min(a + e1, a + e2)) * double(resolution);
+    const glm::dvec2 hi = glm::max(a, glm::max(a + e1, a + e2)) * double(resolution);
+    const int x0 = std::max(0, static_cast<int>(std::floor(lo.x - reach)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y - reach)));
+    const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.x + reach - 0.5)));
+    const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.y + reach - 0.5)));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const glm::dvec2 d = glm::dvec2((x + 0.5) / resolution, (y + 0.5) / resolution) - a;
+            fn(x, y, (d.x * e2.y - d.y * e2.x) / det, (e1.x * d.y - e1.y * d.x) / det);
+        }
 }
 
 UnionFind uvCharts(const Mesh& mesh) {

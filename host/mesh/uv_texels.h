@@ -17,6 +17,16 @@ namespace tsis {
 void rasterUVTriangles(const Mesh& mesh, int resolution,
                        const std::function<void(size_t tri, int x, int y)>& fn);
 
+// Calls fn(x, y, s, r) for every texel of a res² atlas whose centre lies
+// within `reach` texels of triangle `tri`'s UV bounding box (0.5: the
+// texels the box touches), with the centre's barycentrics (s, r) towards
+// the triangle's corners 1 and 2 — inside where s, r ≥ 0 and s + r ≤ 1 (the
+// caller's test, with its own tolerance); nothing for a triangle without UV
+// area. Unlike rasterUVTriangles, a centre on an edge is every touching
+// triangle's (the per-texel bakes keep the last).
+void forEachTexelNear(const Mesh& mesh, const glm::uvec3& tri, int resolution, double reach,
+                      const std::function<void(int x, int y, double s, double r)>& fn);
+
 // The mesh's UV charts: its vertices joined when a triangle shares them (a
 // chart's id is its root, the smallest vertex index in it).
 UnionFind uvCharts(const Mesh& mesh);

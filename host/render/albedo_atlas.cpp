@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "mesh/uv_texels.h"
 #include "render/albedo_inversion.h"
 #include "render/mfp_map.h"
 #include "util/hash.h"
@@ -91,11 +92,7 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
         const glm::uvec3 tri = mesh.triangles[t];
         const uint32_t id = mesh.materialOf(t);
         // A mean-free-path map: each texel's slot is its step's (render/mfp_map.h).
-        const ObjectMaterial* stepped = id < scene.objectMaterials.size() &&
-                                                scene.objectMaterials[id].mfpMap &&
-                                                mesh.hasTexcoords()
-                                            ? &scene.objectMaterials[id]
-                                            : nullptr;
+        const ObjectMaterial* stepped = media.hasSteps(id) ? &scene.objectMaterials[id] : nullptr;
         const uint32_t material = media.slotOfMaterial(id);
         auto texcoordAt = [&](double s, double r) {
             return float(1 - s - r) * mesh.texcoords[tri[0]] + float(s) * mesh.texcoords[tri[1]] +
@@ -104,46 +101,36 @@ AlbedoAtlas bakeAlbedoAtlas(const Scene& scene, const SceneMedia& media, int res
         auto slotAt = [&](double s, double r) {
             return stepped ? media.slotOfStep(id, mfpStepAt(*stepped, texcoordAt(s, r))) : material;
         };
+        // The triangle's corners in texels, for the distance to its edges.
         const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
                                               e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
-        const double det = e1.x * e2.y - e1.y * e2.x;
-        if (det == 0) continue;
-        glm::dvec2 lo = glm::min(a, glm::min(a + e1, a + e2)) * double(resolution);
-        glm::dvec2 hi = glm::max(a, glm::max(a + e1, a + e2)) * double(resolution);
+        const glm::dvec2 p0 = a * double(resolution), p1 = (a + e1) * double(resolution),
+                         p2 = (a + e2) * double(resolution);
         // With slots, a texel's width further: those the triangle only
         // touches (a pixel's texel at a chart's edge) take the nearest
         // triangle's slot, not a neighbour's of another chart.
         const double reach = slot.empty() ? 0.5 : 1.5;
-        const int x0 = std::max(0, static_cast<int>(std::floor(lo.x - reach)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(lo.y - reach)));
-        const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.x + reach - 0.5)));
-        const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.y + reach - 0.5)));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                // Barycentrics of the texel centre; a hair outside counts (edges).
+        forEachTexelNear(mesh, tri, resolution, reach, [&](int x, int y, double s, double r) {
+            const size_t i = static_cast<size_t>(y) * resolution + x;
+            // A hair outside counts (edges).
+            if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) {
+                if (slot.empty()) return;
                 const glm::dvec2 d = glm::dvec2((x + 0.5) / resolution, (y + 0.5) / resolution) - a;
-                const double s = (d.x * e2.y - d.y * e2.x) / det;
-                const double r = (e1.x * d.y - e1.y * d.x) / det;
-                const size_t i = static_cast<size_t>(y) * resolution + x;
-                if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) {
-                    if (slot.empty()) continue;
-                    const glm::dvec2 c = (a + d) * double(resolution), p0 = a * double(resolution),
-                                     p1 = (a + e1) * double(resolution),
-                                     p2 = (a + e2) * double(resolution);
-                    const double near =
-                        std::min({segmentDistance(c, p0, p1), segmentDistance(c, p1, p2),
-                                  segmentDistance(c, p2, p0)});
-                    if (near < 1.0 && near < slotDistance[i])
-                        slot[i] = slotAt(s, r), slotDistance[i] = near;
-                    continue;
-                }
-                const glm::vec2 tc = mesh.hasTexcoords() ? texcoordAt(s, r) : glm::vec2(0.0f);
-                const glm::dvec3 albedo = surfaceAlbedo(scene, id, tc, defaultAlbedo);
-                const uint32_t k = slotAt(s, r);
-                factor[i] = glm::vec3(glm::sqrt(albedo / base[k]));
-                if (!slot.empty()) slot[i] = k, slotDistance[i] = 0;
-                covered[i] = 1;
+                const glm::dvec2 c = (a + d) * double(resolution);
+                const double near =
+                    std::min({segmentDistance(c, p0, p1), segmentDistance(c, p1, p2),
+                              segmentDistance(c, p2, p0)});
+                if (near < 1.0 && near < slotDistance[i])
+                    slot[i] = slotAt(s, r), slotDistance[i] = near;
+                return;
             }
+            const glm::vec2 tc = mesh.hasTexcoords() ? texcoordAt(s, r) : glm::vec2(0.0f);
+            const glm::dvec3 albedo = surfaceAlbedo(scene, id, tc, defaultAlbedo);
+            const uint32_t k = slotAt(s, r);
+            factor[i] = glm::vec3(glm::sqrt(albedo / base[k]));
+            if (!slot.empty()) slot[i] = k, slotDistance[i] = 0;
+            covered[i] = 1;
+        });
     }
     // Gutters: a few rings of dilation from covered texels.
     for (int ring = 0; ring < 4; ++ring) {

@@ -19,15 +19,22 @@ uint32_t SceneMedia::slotOfMaterial(uint32_t id) const {
 }
 
 uint32_t SceneMedia::slotOfStep(uint32_t id, size_t step) const {
-    if (id >= stepSlotsOfId.size() || stepSlotsOfId[id].empty()) return slotOfMaterial(id);
+    if (!hasSteps(id)) return slotOfMaterial(id);
     return stepSlotsOfId[id][std::min(step, stepSlotsOfId[id].size() - 1)];
 }
 
+namespace {
+
+// The medium of file material `id`, or of its map's step `step`.
+const Material& mediumOf(const Scene& scene, uint32_t id, uint32_t step) {
+    return step == SceneMedia::kNoStep ? scene.materialOf(id)
+                                       : scene.objectMaterials[id].mfpSteps[step].medium;
+}
+
+}  // namespace
+
 const Material& SceneMedia::slotMedium(const Scene& scene, size_t k) const {
-    const uint32_t id = slotMaterial[k];
-    if (k < slotStep.size() && slotStep[k] != kNoStep)
-        return scene.objectMaterials[id].mfpSteps[slotStep[k]].medium;
-    return scene.materialOf(id);
+    return mediumOf(scene, slotMaterial[k], slotStep[k]);
 }
 
 SceneMedia sceneMedia(const Scene& scene, Media media) {
@@ -35,14 +42,10 @@ SceneMedia sceneMedia(const Scene& scene, Media media) {
     s.media = std::move(media);
     // Two materials with the same medium share a slot (a texture or an
     // albedo apart, they scatter alike); a map's step is a material of its own.
-    auto mediumOf = [&](uint32_t id, uint32_t step) -> const Material& {
-        return step == SceneMedia::kNoStep ? scene.materialOf(id)
-                                           : scene.objectMaterials[id].mfpSteps[step].medium;
-    };
     auto slotOf = [&](uint32_t id, uint32_t step = SceneMedia::kNoStep) {
-        const Material& mat = mediumOf(id, step);
+        const Material& mat = mediumOf(scene, id, step);
         for (size_t k = 0; k < s.slotMaterial.size(); ++k) {
-            const Material& o = mediumOf(s.slotMaterial[k], s.slotStep[k]);
+            const Material& o = s.slotMedium(scene, k);
             if (o.sigmaSPrime == mat.sigmaSPrime && o.sigmaA == mat.sigmaA && o.eta == mat.eta)
                 return static_cast<uint32_t>(k);
         }

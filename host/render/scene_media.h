@@ -36,7 +36,11 @@ struct SceneMedia {
     uint32_t fileMaterialOfMedium(size_t m) const;
     // The slot of file material `id` (kNoFileMaterial: the scene's material).
     uint32_t slotOfMaterial(uint32_t id) const;
-    // The slot of step `step` of file material `id`'s mean-free-path map.
+    // Whether file material `id`'s texels scatter with its mean-free-path
+    // map's steps, and the slot of step `step` (the material's without).
+    bool hasSteps(uint32_t id) const {
+        return id < stepSlotsOfId.size() && !stepSlotsOfId[id].empty();
+    }
     uint32_t slotOfStep(uint32_t id, size_t step) const;
     // The medium slot k scatters in.
     const Material& slotMedium(const Scene& scene, size_t k) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "mesh/uv_texels.h"
 #include "physics/ggx.h"
 #include "render/albedo_atlas.h"
 #include "render/render_options.h"
@@ -129,41 +130,26 @@ SurfaceAtlas bakeSurfaceAtlas(const Scene& scene, const Media& media, int resolu
         const bool normalMapped = maps && m && m->normalMap, roughMapped = roughnessMapped(m);
         if (!normalMapped && covered.empty()) continue;
         const glm::uvec3 tri = mesh.triangles[t];
-        const glm::dvec2 a(mesh.uvs[tri[0]]), e1 = glm::dvec2(mesh.uvs[tri[1]]) - a,
-                                              e2 = glm::dvec2(mesh.uvs[tri[2]]) - a;
-        const double det = e1.x * e2.y - e1.y * e2.x;
-        if (det == 0) continue;
-        const glm::dvec2 lo = glm::min(a, glm::min(a + e1, a + e2)) * double(resolution);
-        const glm::dvec2 hi = glm::max(a, glm::max(a + e1, a + e2)) * double(resolution);
-        const int x0 = std::max(0, static_cast<int>(std::floor(lo.x - 0.5)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(lo.y - 0.5)));
-        const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.x)));
-        const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(hi.y)));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                // The texel centre's barycentrics; a hair outside counts (edges).
-                const glm::dvec2 d = glm::dvec2((x + 0.5) / resolution, (y + 0.5) / resolution) - a;
-                const double s = (d.x * e2.y - d.y * e2.x) / det;
-                const double r = (e1.x * d.y - e1.y * d.x) / det;
-                if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) continue;
-                const double w[3] = {1 - s - r, s, r};
-                glm::vec2 tc(0.0f);
-                if (maps)
-                    for (int k = 0; k < 3; ++k) tc += float(w[k]) * mesh.texcoords[tri[k]];
-                const size_t i = static_cast<size_t>(y) * resolution + x;
-                if (!covered.empty()) {
-                    covered[i] = 1;
-                    atlas.roughness[i] = ownRoughness(m);
-                }
-                if (roughMapped) {
-                    // glTF: roughnessFactor × the texture's G (OBJ: the grey map).
-                    const double factor = m->roughness >= 0 ? m->roughness : 1.0;
-                    const double g = sampleTexture(m->roughnessMap->image, tc)[m->roughnessChannel];
-                    atlas.roughness[i] =
-                        static_cast<float>(std::clamp(factor * g, kMinRoughness, 1.0));
-                }
-                if (normalMapped) atlas.normal[i] = shadingNormalAt(mesh, tangents, tri, w, tc, *m);
+        forEachTexelNear(mesh, tri, resolution, 0.5, [&](int x, int y, double s, double r) {
+            // A hair outside counts (edges).
+            if (s < -1e-9 || r < -1e-9 || s + r > 1 + 1e-9) return;
+            const double w[3] = {1 - s - r, s, r};
+            glm::vec2 tc(0.0f);
+            if (maps)
+                for (int k = 0; k < 3; ++k) tc += float(w[k]) * mesh.texcoords[tri[k]];
+            const size_t i = static_cast<size_t>(y) * resolution + x;
+            if (!covered.empty()) {
+                covered[i] = 1;
+                atlas.roughness[i] = ownRoughness(m);
             }
+            if (roughMapped) {
+                // glTF: roughnessFactor × the texture's G (OBJ: the grey map).
+                const double factor = m->roughness >= 0 ? m->roughness : 1.0;
+                const double g = sampleTexture(m->roughnessMap->image, tc)[m->roughnessChannel];
+                atlas.roughness[i] = static_cast<float>(std::clamp(factor * g, kMinRoughness, 1.0));
+            }
+            if (normalMapped) atlas.normal[i] = shadingNormalAt(mesh, tangents, tri, w, tc, *m);
+        });
     }
     // The gutters a few texels round each chart, where GL's rasterisation of
     // a pixel at a chart's edge may land, take their covered neighbours' R
