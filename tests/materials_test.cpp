@@ -438,6 +438,24 @@ TEST(Materials, RoughnessMapSetsTheLobePerTexel) {
     }
 }
 
+// The environment's prefiltered bands are kept per roughness while the map
+// stays: a renderer that drew the cubes at R 0.15 / 0.8 and then draws them
+// at 0.8 / 0.4 (one band kept, one filtered) draws what a fresh one does.
+TEST(Materials, PrefilteredBandsKeptPerRoughness) {
+    Scene before = twoCubes("marble", "marble");
+    before.env.map = halfSky();
+    before.objectMaterials[0].roughness = 0.15;
+    before.objectMaterials[1].roughness = 0.8;
+    Scene after = before;
+    after.objectMaterials[0].roughness = 0.8;
+    after.objectMaterials[1].roughness = 0.4;
+    RenderOptions opt = test::smallOptions(64, 256, 64);
+    opt.method = "pyramid";
+    Renderer reused;
+    reused.render(before, opt);
+    EXPECT_EQ(reused.render(after, opt).rgb8, Renderer().render(after, opt).rgb8);
+}
+
 // The roughness atlas holds each texel's own R: a map whose left half is
 // 0.2 and right half 0.9 (64 texels across, bilinear: a texel either side
 // of the border and of the wrap blends) gives those on each side.

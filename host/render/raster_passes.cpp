@@ -442,10 +442,13 @@ EnvReflectionTextures RasterPasses::environmentReflection(const FrameContext& ct
             envPrefiltered_ = std::make_unique<FloatTexture>(w, layers * w / 2);
             filterLinear(*envPrefiltered_, true);
         }
+        if (envBandsOf_ != env.map->hash) envBands_.clear(), envBandsOf_ = env.map->hash;
         std::vector<float> bands;
         for (float r : layerRoughness) {
-            const std::vector<float> band = prefilterReflection(*env.map, r, w);
-            bands.insert(bands.end(), band.begin(), band.end());
+            auto band = envBands_.find(r);
+            if (band == envBands_.end())
+                band = envBands_.emplace(r, prefilterReflection(*env.map, r, w)).first;
+            bands.insert(bands.end(), band->second.begin(), band->second.end());
         }
         envPrefiltered_->upload(bands.data());
         envPrefilteredKey_ = mapKey;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -129,6 +130,10 @@ class RasterPasses {
     uint64_t envTextureKey_ = 0;  // transfer and lighting the texture holds
     std::unique_ptr<FloatTexture> envPrefiltered_, envAlbedo_;
     uint64_t envPrefilteredKey_ = 0, envAlbedoKey_ = 0;
+    // The map's prefiltered bands by roughness (of the map envBandsOf_): a
+    // changed layer list filters only the roughnesses it did not hold.
+    std::map<float, std::vector<float>> envBands_;
+    uint64_t envBandsOf_ = 0;
     std::unique_ptr<FloatTexture> envBackground_;
     uint64_t envBackgroundKey_ = 0;
     std::unique_ptr<GpuMesh> gpuMesh_;
