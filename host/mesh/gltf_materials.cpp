@@ -170,10 +170,9 @@ struct Reader {
     void roughnessTexture(FileMaterial& fm, size_t i) {
         const tinygltf::TextureInfo& info =
             model.materials[i].pbrMetallicRoughness.metallicRoughnessTexture;
-        if (textureImage(info.index, info.texCoord, info.extensions, i,
-                         {"metallicRoughnessTexture", "roughnessFactor only", droppedRoughness},
-                         fm.roughnessMapPath, fm.roughnessMapBytes))
-            fm.roughnessChannel = 1;
+        textureImage(info.index, info.texCoord, info.extensions, i,
+                     {"metallicRoughnessTexture", "roughnessFactor only", droppedRoughness},
+                     fm.roughnessMapPath, fm.roughnessMapBytes);  // R in G: roughnessChannel's 1
     }
 
     // extras: {"tsis": {...}}: tsis' own parameters, over the glTF's.
