@@ -14,6 +14,8 @@ rounds=${2:-3}
 frames=${3:-10}
 out=bench/results/model_frame.md
 bench=$build/bench/bench_frame
+# The notes below the table (what changed when) stay.
+notes=$(awk '/^\|/ {last = NR} {line[NR] = $0} END {for (i = last + 1; i <= NR; ++i) print line[i]}' "$out" 2>/dev/null || true)
 run() { "$bench" --side-by-side --frames "$frames" "$@" 2>/dev/null | grep '^TSIS'; }
 field() { sed -n "s/.*$1=\([0-9.]*\).*/\1/p"; }
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
@@ -46,4 +48,5 @@ for scene in "--mesh builtin:default" "--mesh cow --material marble"; do
   ratios() { awk "BEGIN {printf \"%.3f / %.3f\", $1 / $2, $3 / $2}"; }
   echo "| \`$scene\` | $ln / $lo / $ls | $(ratios "$ln" "$lo" "$ls") | $cn / $co / $cs | $(ratios "$cn" "$co" "$cs") |" >> "$out"
 done
+if [[ -n "${notes//[[:space:]]/}" ]]; then printf '%s\n' "$notes" >> "$out"; fi
 cat "$out"

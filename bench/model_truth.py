@@ -191,8 +191,15 @@ def table(tsis, only):
     if only:
         return
     path = os.path.join(ROOT, "bench", "results", "model_truth.md")
+    # The notes below the table (what changed when) stay.
+    notes = ""
+    if os.path.exists(path):
+        lines = open(path).read().split("\n")
+        rows = [i for i, line in enumerate(lines) if line.startswith("|")]
+        if rows:
+            notes = "\n".join(lines[rows[-1] + 1:]).rstrip("\n")
     with open(path, "w") as f:
-        f.write("\n".join(md) + "\n")
+        f.write("\n".join(md) + "\n" + (notes + "\n" if notes.strip() else ""))
     print("wrote", path)
 
 

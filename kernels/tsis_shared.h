@@ -104,9 +104,13 @@ TSIS_CHECK_OFFSET(TsisInterpolatedPixel, weights, 20);
 #define TSIS_MAX_LIGHTS 8
 /* Work-items summing one patch of the object transport (patch_flux.cl). */
 #define TSIS_PATCH_GROUP 64
-/* Of its rounds over the patch's texels, every this many give the light's
- * direction. */
-#define TSIS_PATCH_DIRECTION_EVERY 4
+/* Of a patch's texels, this many give the light's direction (at most
+ * TSIS_PATCH_GROUP). */
+#define TSIS_PATCH_DIRECTION_SAMPLES 32
+/* The object transport's walks enter with sin²θ of the refracted direction
+ * uniform over the refracted cone, [0, 1/η²]; the fit's slope in it is about
+ * its mean, 1/(2η²), which the frame's patch sums subtract (patch_flux.cl). */
+#define TSIS_ENTRY_MEAN_SIN2(eta) (0.5f / ((eta) * (eta)))
 
 /* Luminance weights (Rec. 709) used for importance: Y(Phi). */
 #define TSIS_LUMA_R 0.2126f

@@ -34,8 +34,6 @@ PatchTransferOptions transferOptions(uint32_t seed) {
     };
     read("TSIS_TRANSPORT_PATCHES", o.patches, 1, 4096);
     read("TSIS_TRANSPORT_PHOTONS", o.photons, 1, 1 << 20);
-    if (const char* v = std::getenv("TSIS_TRANSPORT_ENTRY_SIN"))
-        o.entrySin = std::clamp(parseNumber("TSIS_TRANSPORT_ENTRY_SIN", v), 0.05, 0.95);
 
     return o;
 }
@@ -132,26 +130,37 @@ TransportGrid transportGrid(const PatchTransfer& t, int m) {
 
 std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
                                        const std::vector<glm::vec3>& flux,
-                                       const std::vector<glm::vec3>& direction,
+                                       const std::vector<glm::vec4>& direction,
                                        double exitancePerB) {
     const int first = t.mediumStart[static_cast<size_t>(m)];
     const int last = t.mediumStart[static_cast<size_t>(m) + 1];
     const auto k = static_cast<size_t>(last - first);
-    std::vector<glm::dvec3> sum(k, glm::dvec3(0.0));
+    // Per entry patch: its flux, the mean tangential direction of the light
+    // entering it and that direction's mean square less the walks' (w).
+    struct Entry {
+        glm::dvec3 phi, s;
+        double dq = 0;
+        size_t i = 0;
+    };
+    std::vector<Entry> entries;
     for (size_t i = 0; i < k; ++i) {
         const glm::dvec3 phi(flux[static_cast<size_t>(first) + i]);
         if (phi == glm::dvec3(0.0)) continue;
-        // The mean tangential direction of the light entering the patch.
         const double y = kLuma.x * phi.x + kLuma.y * phi.y + kLuma.z * phi.z;
-        const glm::dvec3 s =
-            y > 0 ? glm::dvec3(direction[static_cast<size_t>(first) + i]) / y : glm::dvec3(0.0);
-        const size_t row = t.blockStart[static_cast<size_t>(m)] + i * k;
+        const glm::dvec4 dir(direction[static_cast<size_t>(first) + i]);
+        entries.push_back(
+            {phi, y > 0 ? glm::dvec3(dir) / y : glm::dvec3(0.0), y > 0 ? dir.w / y : 0.0, i});
+    }
+    std::vector<glm::dvec3> sum(k, glm::dvec3(0.0));
+    for (const Entry& e : entries) {
+        const size_t row = t.blockStart[static_cast<size_t>(m)] + e.i * k;
         for (size_t j = 0; j < k; ++j) {
             const glm::vec3* g = &t.gradient[(row + j) * 3];
-            const glm::dvec3 d(t.delta[row + j]);
-            sum[j] += phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), s),
-                                       d.y + glm::dot(glm::dvec3(g[1]), s),
-                                       d.z + glm::dot(glm::dvec3(g[2]), s));
+            const glm::dvec3 d =
+                glm::dvec3(t.delta[row + j]) + glm::dvec3(t.angular[row + j]) * e.dq;
+            sum[j] += e.phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), e.s),
+                                         d.y + glm::dot(glm::dvec3(g[1]), e.s),
+                                         d.z + glm::dot(glm::dvec3(g[2]), e.s));
         }
     }
     std::vector<glm::vec3> out(k);
@@ -266,16 +275,44 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
     grids_.clear();
     if (patches == 0) return;  // nothing covered: no correction
     std::vector<int> start(patches + 1, 0), list(tx.size());
+    std::vector<size_t> of(tx.size());  // each list entry's SurfaceTexels index
     for (int p : transfer_.texelPatch) ++start[static_cast<size_t>(p) + 1];
     for (size_t p = 0; p < patches; ++p) start[p + 1] += start[p];
     std::vector<int> fill(start.begin(), start.end() - 1);
-    for (size_t k = 0; k < tx.size(); ++k)
-        list[static_cast<size_t>(fill[static_cast<size_t>(transfer_.texelPatch[k])]++)] =
-            tx.texel[k];
+    for (size_t k = 0; k < tx.size(); ++k) {
+        const auto at = static_cast<size_t>(fill[static_cast<size_t>(transfer_.texelPatch[k])]++);
+        list[at] = tx.texel[k];
+        of[at] = k;
+    }
     q.enqueueWriteBuffer(start_.reserve(cl_.context(), start.size() * sizeof(int)), CL_TRUE, 0,
                          start.size() * sizeof(int), start.data());
     q.enqueueWriteBuffer(texels_.reserve(cl_.context(), std::max<size_t>(list.size(), 1) * 4),
                          CL_TRUE, 0, list.size() * sizeof(int), list.data());
+    // The texels that give each patch's light direction, evenly along its
+    // list (atlas order: spread over the patch), with their position (w: the
+    // medium) and normal side by side: the kernel's cost was reading those
+    // from two atlases at random.
+    constexpr size_t kSamples = TSIS_PATCH_DIRECTION_SAMPLES;
+    std::vector<int> sampleTexel(patches * kSamples, -1);
+    std::vector<float> sampleGeometry(patches * kSamples * 8, 0.0f);
+    for (size_t p = 0; p < patches; ++p) {
+        const int n = start[p + 1] - start[p];
+        const int ns = std::min<int>(n, static_cast<int>(kSamples));
+        for (int i = 0; i < ns; ++i) {
+            const auto at = static_cast<size_t>(start[p] + (2 * i + 1) * n / (2 * ns));
+            const size_t k = of[at], j = p * kSamples + static_cast<size_t>(i);
+            sampleTexel[j] = list[at];
+            const glm::vec3 x = tx.position[k], nrm = glm::normalize(tx.normal[k]);
+            std::copy_n(&x.x, 3, &sampleGeometry[j * 8]);
+            sampleGeometry[j * 8 + 3] = static_cast<float>(tx.medium[k]);
+            std::copy_n(&nrm.x, 3, &sampleGeometry[j * 8 + 4]);
+        }
+    }
+    q.enqueueWriteBuffer(sampleTexels_.reserve(cl_.context(), sampleTexel.size() * sizeof(int)),
+                         CL_TRUE, 0, sampleTexel.size() * sizeof(int), sampleTexel.data());
+    q.enqueueWriteBuffer(
+        sampleGeometry_.reserve(cl_.context(), sampleGeometry.size() * sizeof(float)), CL_TRUE, 0,
+        sampleGeometry.size() * sizeof(float), sampleGeometry.data());
     // The grids follow the patches alone (not the materials): a switch back
     // and forth between materials finds them made.
     grids_.clear();
@@ -382,18 +419,20 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                                      sm.etaOfMedium.data());
                 cl::Buffer& out = flux_.reserve(cl_.context(), patches * 16);
                 cl::Buffer& dirOut = direction_.reserve(cl_.context(), patches * 16);
-                setKernelArgs(kernel_, flux.buffer, res.read(ctx.positionAtlas).buffer,
-                              res.read(ctx.normalAtlas).buffer, etaBuffer, lightBuffer,
-                              static_cast<int>(lights.size() / 8), start_.buffer, texels_.buffer,
-                              static_cast<int>(patches), out, dirOut);
+                setKernelArgs(kernel_, flux.buffer, sampleTexels_.buffer, sampleGeometry_.buffer,
+                              etaBuffer, lightBuffer, static_cast<int>(lights.size() / 8),
+                              start_.buffer, texels_.buffer, static_cast<int>(patches), out,
+                              dirOut);
                 enqueue1D(q, kernel_, patches * TSIS_PATCH_GROUP, TSIS_PATCH_GROUP, nullptr);
                 std::vector<float> sums(patches * 4), dirs(patches * 4);
                 q.enqueueReadBuffer(out, CL_TRUE, 0, patches * 16, sums.data());
                 q.enqueueReadBuffer(dirOut, CL_TRUE, 0, patches * 16, dirs.data());
-                std::vector<glm::vec3> phi(patches), dir(patches);
+                std::vector<glm::vec3> phi(patches);
+                std::vector<glm::vec4> dir(patches);
                 for (size_t p = 0; p < patches; ++p) {
                     phi[p] = glm::vec3(sums[p * 4], sums[p * 4 + 1], sums[p * 4 + 2]);
-                    dir[p] = glm::vec3(dirs[p * 4], dirs[p * 4 + 1], dirs[p * 4 + 2]);
+                    dir[p] =
+                        glm::vec4(dirs[p * 4], dirs[p * 4 + 1], dirs[p * 4 + 2], dirs[p * 4 + 3]);
                 }
                 for (size_t m = 0; m < grids_.size(); ++m) {
                     TransportGrid& g = grids_[m];
@@ -420,7 +459,8 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
             for (size_t k = 0; k < static_cast<size_t>(points.count); ++k) {
                 const float tag = points.host[k * 4 + 3];
                 const int m = static_cast<int>(std::lround(tag)) - 1;
-                if (m < 0 || static_cast<size_t>(m) >= grids_.size() || grids_[m].value.empty())
+                if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
+                    grids_[static_cast<size_t>(m)].value.empty())
                     continue;
                 glm::vec3 add = grids_[static_cast<size_t>(m)].at(
                     glm::vec3(points.host[k * 4], points.host[k * 4 + 1], points.host[k * 4 + 2]));

@@ -15,6 +15,7 @@
 #include <future>
 #include <glm/ext/vector_int3.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -47,14 +48,15 @@ struct TransportGrid {
 // at most kMaxGridCells a side).
 TransportGrid transportGrid(const PatchTransfer& t, int m);
 
-// Per patch of medium m, the flux to add as radiosity: Σ_i (Δ(i, j) + G(i, j)·s_i)·flux_i
-// over the exitance per unit B of the medium (the grid divides by the patches'
-// areas), s_i the luminance-weighted
-// mean tangential direction of the light entering patch i (`direction`: its
-// sum over the patch's texels, weighted by their flux's luminance).
+// Per patch of medium m, the flux to add as radiosity:
+// Σ_i (Δ(i, j) + G(i, j)·s_i + H(i, j)·(q_i − μ))·flux_i over the exitance per
+// unit B of the medium (the grid divides by the patches' areas), s_i the
+// luminance-weighted mean tangential direction of the light entering patch i
+// and q_i − μ its mean square less the walks' (`direction`: xyz and w, their
+// sums over the patch's texels, weighted by their flux's luminance).
 std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
                                        const std::vector<glm::vec3>& flux,
-                                       const std::vector<glm::vec3>& direction,
+                                       const std::vector<glm::vec4>& direction,
                                        double exitancePerB);
 
 class ObjectTransport {
@@ -100,7 +102,8 @@ class ObjectTransport {
 
     ClRuntime& cl_;
     cl::Kernel kernel_;
-    GrowingBuffer start_, texels_, flux_, direction_, lights_, etas_;
+    GrowingBuffer start_, texels_, sampleTexels_, sampleGeometry_, flux_, direction_, lights_,
+        etas_;
     PatchTransfer transfer_;
     bool fitted_ = false;
     std::vector<TransportGrid> grids_;

@@ -210,6 +210,7 @@ void makePatches(const SurfaceTexels& tx, size_t mediaCount, int budget, PatchTr
     }
     t.delta.assign(offset, glm::vec3(0.0f));
     t.gradient.assign(offset * 3, glm::vec3(0.0f));
+    t.angular.assign(offset, glm::vec3(0.0f));
 }
 
 // Each patch's texels and their area CDF, to draw entry points.
@@ -246,17 +247,27 @@ glm::dvec3 tangentAt(const glm::dvec3& n, double phi) {
 }
 
 // Row `patch` of the walk's transfer, channel c: exit flux per patch of the
-// medium (counted from its first) per unit flux entering, and its gradient
-// in the tangential direction of entry.
+// medium (counted from its first) per unit flux entering, its gradient in the
+// tangential part of the direction of entry and its slope in that part's square.
+struct WalkRow {
+    std::vector<double> row, angular;
+    std::vector<glm::dvec3> gradient;
+    explicit WalkRow(size_t k) : row(k, 0.0), angular(k, 0.0), gradient(k, glm::dvec3(0.0)) {}
+};
 void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchTexels& pt,
              const PatchIndex& index, const Material& mat, int first, int patch, int channel,
-             const PatchTransferOptions& opt, std::vector<double>& row,
-             std::vector<glm::dvec3>& gradient) {
+             const PatchTransferOptions& opt, WalkRow& out) {
     const double sigmaT = mat.sigmaSPrime[channel] + mat.sigmaA[channel];
     const double albedo = mat.sigmaSPrime[channel] / sigmaT;
     const double eps = boundary.epsilon();
     const double invEta = 1.0 / mat.eta;
-    const double sinE = opt.entrySin, cosE = std::sqrt(1.0 - sinE * sinE);
+    const double top = opt.entrySin > 0 ? opt.entrySin : invEta;
+    const double qTop = top * top, qMean = 0.5 * qTop;
+    const int pairs = (opt.photons + 1) / 2;
+    // Pairs take the strata of q in an order unrelated to their azimuths'
+    // (a stride coprime to their count), so the two slopes do not mix.
+    int stride = pairs / 2 + 1;
+    while (std::gcd(stride, pairs) != 1) ++stride;
     for (int k = 0; k < opt.photons; ++k) {
         Rng rng(opt.seed, (static_cast<uint64_t>(patch) * 3 + static_cast<uint64_t>(channel)) *
                                   static_cast<uint64_t>(opt.photons) +
@@ -264,10 +275,14 @@ void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchT
         const auto t = static_cast<size_t>(
             drawTexel(pt, static_cast<size_t>(patch), (k + rng.uniform()) / opt.photons));
         const glm::dvec3 n = glm::normalize(glm::dvec3(tx.normal[t]));
-        // Azimuths in antithetic pairs: the gradient's estimate loses the
-        // mean's variance.
-        const int pair = k / 2, pairs = (opt.photons + 1) / 2;
+        // Azimuths in antithetic pairs at one angle: the gradient's estimate
+        // loses the mean's variance.
+        const int pair = k / 2;
         const double phi = 2.0 * M_PI * (pair + rng.uniform()) / pairs + (k % 2 ? M_PI : 0.0);
+        const double q =
+            qTop * (static_cast<double>((static_cast<long long>(pair) * stride) % pairs) + 0.5) /
+            pairs;
+        const double sinE = std::sqrt(q), cosE = std::sqrt(1.0 - q);
         const glm::dvec3 tangent = tangentAt(n, phi);
         glm::dvec3 pos = glm::dvec3(tx.position[t]) - n * eps;
         glm::dvec3 dir = -n * cosE + tangent * sinE;
@@ -298,16 +313,22 @@ void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchT
             if (scatterings == 0 && opt.excludeUnscattered) break;
             // With --single-scatter the frame adds Jensen's L⁽¹⁾ itself.
             if (scatterings == 1 && opt.excludeSingle) break;
-            const int j = index.nearest(glm::vec3(hit.position), glm::vec3(hit.normal));
-            row[static_cast<size_t>(j - first)] += w;
-            gradient[static_cast<size_t>(j - first)] += w * tangent;
+            const auto j = static_cast<size_t>(
+                index.nearest(glm::vec3(hit.position), glm::vec3(hit.normal)) - first);
+            out.row[j] += w;
+            out.gradient[j] += w * sinE * tangent;
+            out.angular[j] += w * (q - qMean);
             break;
         }
     }
-    // T(s) ≈ T0 + G·s over s = sin θe·t: E[w·t] = G·sin θe·E[t tᵀ] = G·sin θe / 2.
     if (opt.photons == 0) return;  // the model alone (tests)
-    for (double& v : row) v /= opt.photons;
-    for (glm::dvec3& g : gradient) g *= 2.0 / (sinE * opt.photons);
+    // T ≈ T0 + G·s + H·(q − μ), s = sin θe·t, q = |s|² uniform on [0, qTop]:
+    // E[w·s] = G·E[s sᵀ] = G·μ/2 and E[w·(q − μ)] = H·Var q = H·qTop²/12.
+    for (size_t j = 0; j < out.row.size(); ++j) {
+        out.row[j] /= opt.photons;
+        out.gradient[j] *= 2.0 / (qMean * opt.photons);
+        out.angular[j] *= 12.0 / (qTop * qTop * opt.photons);
+    }
 }
 
 // Row `patch` of the model's transfer (rgb): the profile's exitance at the
@@ -373,16 +394,17 @@ PatchTransfer fitPatchTransfer(const Mesh& mesh, const SurfaceTexels& texels,
             glm::vec3* grad = &t.gradient[(t.blockStart[static_cast<size_t>(m)] +
                                            (p - static_cast<size_t>(first)) * k) *
                                           3];
+            glm::vec3* angular = &t.angular[static_cast<size_t>(out - t.delta.data())];
             for (int c = 0; c < 3; ++c) {
-                std::vector<double> walk(k, 0.0);
-                std::vector<glm::dvec3> g(k, glm::dvec3(0.0));
+                WalkRow walk(k);
                 walkRow(boundary, texels, pt, indices[static_cast<size_t>(m)],
                         media[static_cast<size_t>(m)].material, first, static_cast<int>(p), c, opt,
-                        walk, g);
+                        walk);
                 for (size_t j = 0; j < k; ++j) {
-                    grad[j * 3 + static_cast<size_t>(c)] = glm::vec3(g[j]);
-                    out[j][c] = static_cast<float>(walk[j] - model[j][c]);
-                    truthSum[c] += walk[j];
+                    grad[j * 3 + static_cast<size_t>(c)] = glm::vec3(walk.gradient[j]);
+                    angular[j][c] = static_cast<float>(walk.angular[j]);
+                    out[j][c] = static_cast<float>(walk.row[j] - model[j][c]);
+                    truthSum[c] += walk.row[j];
                     modelSum[c] += model[j][c];
                 }
             }
@@ -440,6 +462,7 @@ std::string serializePatchTransfer(const PatchTransfer& t) {
     put(s, t.texelPatch);
     put(s, t.delta);
     put(s, t.gradient);
+    put(s, t.angular);
     put(s, t.blockStart);
     put(s, t.truthOut);
     put(s, t.modelOut);
@@ -465,8 +488,8 @@ bool parsePatchTransfer(const std::string& s, uint64_t key, size_t texels, Patch
           get(s, at, t.radius, most) && get(s, at, t.medium, most) &&
           get(s, at, t.mediumStart, most) && get(s, at, t.texelPatch, most) &&
           get(s, at, t.delta, most) && get(s, at, t.gradient, most) &&
-          get(s, at, t.blockStart, most) && get(s, at, t.truthOut, most) &&
-          get(s, at, t.modelOut, most)))
+          get(s, at, t.angular, most) && get(s, at, t.blockStart, most) &&
+          get(s, at, t.truthOut, most) && get(s, at, t.modelOut, most)))
         return false;
     // Consistent counts, or the file is not for these texels.
     const size_t k = t.centre.size();
@@ -480,7 +503,7 @@ bool parsePatchTransfer(const std::string& s, uint64_t key, size_t texels, Patch
         if (a < 0 || b < a || static_cast<size_t>(b) > k || t.blockStart[m] != cells) return false;
         cells += static_cast<size_t>(b - a) * static_cast<size_t>(b - a);
     }
-    if (t.delta.size() != cells || t.gradient.size() != 3 * cells ||
+    if (t.delta.size() != cells || t.gradient.size() != 3 * cells || t.angular.size() != cells ||
         static_cast<size_t>(t.mediumStart.back()) != k)
         return false;
     for (int p : t.texelPatch)

@@ -12,10 +12,13 @@
 // along a refracted direction d = −n·cos θe + t·sin θe (t a random unit
 // tangent), random-walking in the homogeneous medium (isotropic, σs = σs′)
 // behind the smooth dielectric boundary (Fresnel and total internal
-// reflection) until they leave; where they leave is their exit patch. Their
-// mean is the transfer T0; its first moment in t the gradient G with respect
-// to the tangential part s of the direction of travel, T(s) ≈ T0 + G·s (light
-// entering obliquely goes on forwards: a back-lit object's rim). Model: the
+// reflection) until they leave; where they leave is their exit patch. The
+// entry angle spans the refracted cone (sin²θe uniform on [0, 1/η²]). Their
+// mean is the transfer T0; its first moment in the tangential part s = t·sin θe
+// of the direction of travel the gradient G, and its slope in q = |s|² about
+// q's mean μ the angular term H: T(s) ≈ T0 + G·s + H·(q − μ) (light entering
+// obliquely goes on forwards, a back-lit object's rim; light entering steeply
+// goes deeper, which a thin part lets through). Model: the
 // profile's exitance at every texel of the medium from entry points drawn the
 // same way. All are "exitant flux in patch j per unit flux entering patch i".
 #pragma once
@@ -33,7 +36,7 @@
 namespace tsis {
 
 // Bump when the fit or its file changes.
-constexpr int kPatchTransferVersion = 4;
+constexpr int kPatchTransferVersion = 5;
 
 // The covered texels of the geometry atlas, on the host.
 struct SurfaceTexels {
@@ -54,7 +57,7 @@ struct TransferMedium {
 
 struct PatchTransferOptions {
     int patches = 384;      // in all media together
-    int photons = 1024;     // per patch and channel
+    int photons = 4096;     // per patch and channel
     int modelSamples = 16;  // entry points per patch for the model's transfer
     // Leave out the paths that leave unscattered (across a thin part): they
     // leave along the light's direction, not diffusely.
@@ -62,7 +65,9 @@ struct PatchTransferOptions {
     // Leave out the paths that leave after one scattering (--single-scatter
     // adds that term for the light's own entry).
     bool excludeSingle = false;
-    double entrySin = 0.7;  // sin θe of the walks' entry
+    // The top of sin θe's range (tests); 0: 1/η, the refracted cone's edge,
+    // which the frame's μ (TSIS_ENTRY_MEAN_SIN2) assumes.
+    double entrySin = 0.0;
     uint32_t seed = 1;
 };
 
@@ -78,6 +83,8 @@ struct PatchTransfer {
     std::vector<glm::vec3> delta;
     // The same layout, three vec3 per pair: G per channel (world frame).
     std::vector<glm::vec3> gradient;
+    // The same layout as delta: H (rgb), the slope in q = |s|² about its mean.
+    std::vector<glm::vec3> angular;
     std::vector<size_t> blockStart;
     // Per medium, the mean over its patches of Σ_j T(i, j): the share of the
     // entered light that leaves, by the walk and by the model.
@@ -91,6 +98,9 @@ struct PatchTransfer {
         const size_t k = static_cast<size_t>(mediumStart[m + 1] - mediumStart[m]);
         return delta[blockStart[m] + static_cast<size_t>(i - mediumStart[m]) * k +
                      static_cast<size_t>(j - mediumStart[m])];
+    }
+    const glm::vec3& angularAt(int m, int i, int j) const {
+        return angular[static_cast<size_t>(&at(m, i, j) - delta.data())];
     }
     // G of channel c from patch i to patch j of medium m.
     const glm::vec3& gradientAt(int m, int i, int j, int c) const {

@@ -8,6 +8,7 @@
 #include "mesh/builtin.h"
 #include "mesh/mesh.h"
 #include "physics/dipole.h"
+#include "support/atlas_meshes.h"
 
 namespace tsis {
 namespace {
@@ -153,6 +154,56 @@ TEST(PatchTransfer, TheSameInputsGiveTheSameFit) {
     const PatchTransfer b = fitPatchTransfer(mesh, tx, {md}, small(10, 64), 5);
     EXPECT_EQ(a.delta, b.delta);
     EXPECT_EQ(a.gradient, b.gradient);
+}
+
+// The walks' entry spans the refracted cone and the fit keeps the transfer's
+// slope in q = |s|² = sin²θ of the direction of travel (H): the full cone's
+// fit, taken at q near 0 (steep entry) and near 1/η² (grazing), gives what a
+// fit of entries at only that angle gives, to the near face and through a
+// 2 mm slab of skin1 to the far face, where the cone's mean alone does not.
+TEST(PatchTransfer, TheAngularTermFollowsTheEntryAngle) {
+    const Mesh slab = test::boxMesh(20, 20, 2);
+    SurfaceTexels tx;
+    constexpr int n = 40;
+    constexpr float h = 0.5f;
+    for (float z : {0.0f, 2.0f})
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                tx.position.emplace_back(h * (float(i) + 0.5f), h * (float(j) + 0.5f), z);
+                tx.normal.emplace_back(0.0f, 0.0f, z > 0 ? 1.0f : -1.0f);
+                tx.area.push_back(h * h);
+                tx.medium.push_back(0);
+                tx.texel.push_back(static_cast<int>(tx.texel.size()));
+            }
+    const Material m = presetMaterial("skin1");
+    const std::vector<TransferMedium> media = {medium(m, 40.0)};
+    const PatchTransfer cone = fitPatchTransfer(slab, tx, media, small(18, 8000), 4);
+    const double mu = 0.5 / (m.eta * m.eta);
+    // Entries within a narrow band of steep angles: sin θ in [0, 0.1].
+    PatchTransferOptions steepOpt = small(18, 8000);
+    steepOpt.entrySin = 0.1;
+    const PatchTransfer steep = fitPatchTransfer(slab, tx, media, steepOpt, 4);
+    // Per face of the exit (near: +z), Δ out of every top patch summed.
+    for (int c = 0; c < 3; ++c)
+        for (float side : {1.0f, -1.0f}) {
+            double fitted = 0, walked = 0, mean = 0;
+            for (int i = 0; i < cone.patches(); ++i) {
+                if (cone.normal[static_cast<size_t>(i)].z < 0.9f) continue;
+                for (int j = 0; j < cone.patches(); ++j) {
+                    if (cone.normal[static_cast<size_t>(j)].z * side < 0.9f) continue;
+                    // Δ at q = 0.005 (the narrow fit's mean) from the cone's fit.
+                    fitted += cone.at(0, i, j)[c] + cone.angularAt(0, i, j)[c] * (0.005 - mu);
+                    walked += steep.at(0, i, j)[c];
+                    mean += cone.at(0, i, j)[c];
+                }
+            }
+            // Within half the cone mean's miss, and 3 % (the walks' noise and
+            // what is not linear in q).
+            EXPECT_LT(std::abs(fitted - walked),
+                      0.5 * std::abs(mean - walked) + 0.03 * std::abs(walked))
+                << "channel " << c << (side > 0 ? " near" : " far") << " face: fitted " << fitted
+                << ", walked " << walked << ", the cone's mean " << mean;
+        }
 }
 
 }  // namespace
