@@ -168,6 +168,33 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
     return out;
 }
 
+const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uint64_t lighting) {
+    if (!fitted_ || lighting == 0 || lighting != lightingOf_ || grids_.empty()) return nullptr;
+    const uint64_t key = Hasher(copy.radiosityKey).add(copy.positionsKey).add(gridsMade_).digest();
+    if (key != correctedOf_) {
+        const std::vector<float>& pos = *copy.positions;
+        correctedB_ = *copy.radiosity;
+        parallelFor(correctedB_.size() / 4, 16384, [&](size_t begin, size_t end) {
+            for (size_t t = begin; t < end; ++t) {
+                const int m = static_cast<int>(std::lround(pos[t * 4 + 3])) - 1;
+                if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
+                    grids_[static_cast<size_t>(m)].value.empty())
+                    continue;
+                const glm::vec3 add = grids_[static_cast<size_t>(m)].at(
+                    glm::vec3(pos[t * 4], pos[t * 4 + 1], pos[t * 4 + 2]));
+                // Not clamped here: the lookup clamps after interpolating,
+                // as the CL side does at the point.
+                for (size_t c = 0; c < 3; ++c) correctedB_[t * 4 + c] += add[c];
+            }
+        });
+        corrected_ = copy;
+        corrected_.radiosity = &correctedB_;
+        corrected_.radiosityKey = key;
+        correctedOf_ = key;
+    }
+    return &corrected_;
+}
+
 ObjectTransport::ObjectTransport(ClRuntime& cl)
     : cl_(cl), kernel_(cl.kernel("patch_flux.cl", "tsis_patch_flux")) {}
 
@@ -262,6 +289,7 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     geometryOf_ = geometry;
     inputsKey_ = inputs.digest();
     fluxOf_ = 0;
+    lightingOf_ = 0;
     install(*request, res);
     return true;
 }
@@ -402,6 +430,7 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
         },
         [this, &ctx, profiles = std::move(slotProfiles), radiosity](FrameGraph::Resources& res) {
             const AtlasCl& flux = res.read(ctx.fluxAtlas);
+            lightingOf_ = 0;
             if (!fit(ctx, profiles, res.read(ctx.positionAtlas), res.read(ctx.normalAtlas), res))
                 return;  // made in the background: this frame has no correction
             const auto patches = static_cast<size_t>(transfer_.patches());
@@ -453,7 +482,9 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                     }
                 }
                 fluxOf_ = flux.version;
+                ++gridsMade_;
             }
+            lightingOf_ = ctx.lighting;
             const SurfacePoints& points = res.read(ctx.points);
             std::vector<float>& rgba = res.write(radiosity).rgba;
             for (size_t k = 0; k < static_cast<size_t>(points.count); ++k) {

@@ -67,6 +67,12 @@ class ObjectTransport {
     void addPass(FrameGraph& graph, const FrameContext& ctx, std::vector<KeyedProfile> slotProfiles,
                  FrameGraphId<RadiosityImage> radiosity);
     const PatchTransfer* transfer() const { return fitted_ ? &transfer_ : nullptr; }
+    // The method's copy of B over the atlas with the correction added at
+    // every texel that holds a surface (covered or its chart's ring), for
+    // the GL side's lookup of a frame that only moved the camera (the pass
+    // adds it at the points on the CL side); null unless the last frame's
+    // pass corrected for this lighting (`lighting`: FrameContext::lighting).
+    const AtlasRadiosity* corrected(const AtlasRadiosity& copy, uint64_t lighting);
 
     // With background fits, a fit neither made before nor on disk is made on
     // a thread of its own, one at a time (the newest request next), and the
@@ -111,6 +117,11 @@ class ObjectTransport {
     static constexpr size_t kCachedGrids = 8;
     std::vector<std::pair<uint64_t, TransportGrid>> gridCache_;
     std::vector<double> exitancePerB_;  // per medium
+    // The lighting the grids hold the correction of (0: none), and a count
+    // of their updates; the corrected copy and what it was made from.
+    uint64_t lightingOf_ = 0, gridsMade_ = 0, correctedOf_ = 0;
+    std::vector<float> correctedB_;
+    AtlasRadiosity corrected_;
     uint64_t geometryOf_ = 0, fitKey_ = 0, fluxOf_ = 0, inputsKey_ = 0;
     bool background_ = false;
     std::shared_ptr<FitRequest> waiting_;  // the request frames wait for

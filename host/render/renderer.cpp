@@ -250,11 +250,15 @@ int autoLightResolution(const Scene& scene) {
 const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
                                                const FrameContext& ctx, bool residual) {
     const SceneMedia& sm = *ctx.media;
-    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) ||
-        addsTransport(opt) || opt.keepAovs || !ctx.albedo->empty() ||
-        !raster_.lightingCurrent(ctx.lighting))
+    if (sm.slots() != 1 || residual || opt.progressive || addsSingleScatter(opt) || opt.keepAovs ||
+        !ctx.albedo->empty() || !raster_.lightingCurrent(ctx.lighting))
         return nullptr;
-    return method(opt.method, 0).atlasRadiosity(materialContext(ctx, sm.slotMedium(scene, 0)));
+    const AtlasRadiosity* copy =
+        method(opt.method, 0).atlasRadiosity(materialContext(ctx, sm.slotMedium(scene, 0)));
+    // With the object's transport, the copy with its correction (when the
+    // last frame made it for this lighting).
+    if (!copy || !addsTransport(opt)) return copy;
+    return transport_ ? transport_->corrected(*copy, ctx.lighting) : nullptr;
 }
 
 std::vector<uint8_t> FrameResult::displayPixels(int& channels) const {
@@ -359,8 +363,9 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
         if (!singleScatter_) singleScatter_ = std::make_unique<SingleScatter>(cl_);
         singleScatter_->addPass(graph, ctx, gl, radiosity);
     }
-    // The object's own transport, likewise for every method but volumetric.
-    if (addsTransport(opt)) {
+    // The object's own transport, likewise for every method but volumetric
+    // (on the GL side's lookup, in the copy it reads).
+    if (addsTransport(opt) && !copy) {
         if (!transport_) transport_ = std::make_unique<ObjectTransport>(cl_);
         transport_->setBackgroundFits(backgroundFits_ && !opt.progressive);
         std::vector<KeyedProfile> profiles;
