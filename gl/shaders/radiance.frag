@@ -78,7 +78,10 @@ vec3 shade(vec4 p, ivec2 px, vec3 b) {
     // An open mesh seen from behind: the side that faces the eye.
     if (dot(n, v) < 0.0) n = -n;
     vec4 medium = mediumOf(p.w);
-    vec3 l = fresnelT(medium.r, dot(n, v)) / PI * b * medium.g;
+    // B ≥ 0 where it is read: the GL side's lookup interpolates a copy whose
+    // texels may hold the object transport's correction below 0 (the CL
+    // side clamps at the point).
+    vec3 l = fresnelT(medium.r, dot(n, v)) / PI * max(b, vec3(0.0)) * medium.g;
 #if TSIS_SPECULAR
     // A roughness map's R where it covers the point, else the medium's α.
     float r = mappedRoughness(int(nw.w + 0.5) - 1);

@@ -57,9 +57,7 @@ void main() {
     }
     // Its own texels all at weight 0 (on the far edge of its cell): their mean.
     vec4 v = weights > 0.0 ? sum / weights : all4 / n;
-    // B ≥ 0 after the interpolation, as the CL side clamps at the point: a
-    // copy with the object transport's correction may hold texels below 0.
-    o_b = vec4(max(v.xyz, vec3(0.0)), 1.0);
+    o_b = vec4(v.xyz, 1.0);
 }
 #else
 uniform sampler2D u_b;  // the lookup's output, this pass' target (a texture barrier between)

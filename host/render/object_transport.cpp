@@ -182,8 +182,8 @@ const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uin
                     continue;
                 const glm::vec3 add = grids_[static_cast<size_t>(m)].at(
                     glm::vec3(pos[t * 4], pos[t * 4 + 1], pos[t * 4 + 2]));
-                // Not clamped here: the lookup clamps after interpolating,
-                // as the CL side does at the point.
+                // Not clamped here: the composite clamps B after the
+                // lookup's interpolation, as the CL side does at the point.
                 for (size_t c = 0; c < 3; ++c) correctedB_[t * 4 + c] += add[c];
             }
         });
