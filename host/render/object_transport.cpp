@@ -327,7 +327,9 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
         const int n = start[p + 1] - start[p];
         const int ns = std::min<int>(n, static_cast<int>(kSamples));
         for (int i = 0; i < ns; ++i) {
-            const auto at = static_cast<size_t>(start[p] + (2 * i + 1) * n / (2 * ns));
+            const size_t at = static_cast<size_t>(start[p]) + static_cast<size_t>(2 * i + 1) *
+                                                                  static_cast<size_t>(n) /
+                                                                  static_cast<size_t>(2 * ns);
             const size_t k = of[at], j = p * kSamples + static_cast<size_t>(i);
             sampleTexel[j] = list[at];
             const glm::vec3 x = tx.position[k], nrm = glm::normalize(tx.normal[k]);
