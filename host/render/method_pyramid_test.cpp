@@ -274,5 +274,28 @@ TEST(Pyramid, PreparedCameraMovesReadTheCopyFromTheFirstMove) {
     }
 }
 
+// With the object's transport the preparation makes the copy with its
+// correction as well: the first move reads it on the GL side without making
+// it (stat transport_copy_made 0), the unprepared renderer's first GL move
+// makes it (1), and the two frames are the same bytes.
+TEST(Pyramid, PreparedCameraMovesMakeTheTransportsCopyToo) {
+    const test::ScopedEnv photons("TSIS_TRANSPORT_PHOTONS", "1024");
+    const CameraMoves m;
+    RenderOptions opt = frameSequenceOptions();
+    opt.keepAovs = false;
+    opt.transport = Transport::Object;
+    Renderer prepared, plain;
+    prepared.render(m.a, opt);
+    ASSERT_TRUE(prepared.prepareCameraMoves(m.a, opt));
+    const FrameResult first = prepared.render(m.turned, opt);
+    EXPECT_EQ(first.stats.number("radiosity_lookup_gl"), 1);
+    EXPECT_EQ(first.stats.number("transport_copy_made"), 0);
+    for (const Scene* s : {&m.a, &m.turned}) plain.render(*s, opt);
+    const FrameResult second = plain.render(m.again, opt);
+    EXPECT_EQ(second.stats.number("radiosity_lookup_gl"), 1);
+    EXPECT_EQ(second.stats.number("transport_copy_made"), 1);
+    EXPECT_EQ(plain.render(m.turned, opt).rgb8, first.rgb8);
+}
+
 }  // namespace
 }  // namespace tsis

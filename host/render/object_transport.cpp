@@ -169,9 +169,11 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
 }
 
 const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uint64_t lighting) {
+    madeCopy_ = false;
     if (!fitted_ || lighting == 0 || lighting != lightingOf_ || grids_.empty()) return nullptr;
     const uint64_t key = Hasher(copy.radiosityKey).add(copy.positionsKey).add(gridsMade_).digest();
-    if (key != correctedOf_) {
+    madeCopy_ = key != correctedOf_;
+    if (madeCopy_) {
         const std::vector<float>& pos = *copy.positions;
         correctedB_ = *copy.radiosity;
         parallelFor(correctedB_.size() / 4, 16384, [&](size_t begin, size_t end) {

@@ -73,6 +73,8 @@ class ObjectTransport {
     // adds it at the points on the CL side); null unless the last frame's
     // pass corrected for this lighting (`lighting`: FrameContext::lighting).
     const AtlasRadiosity* corrected(const AtlasRadiosity& copy, uint64_t lighting);
+    // Whether the last corrected() made its copy (stat transport_copy_made).
+    bool madeCorrectedCopy() const { return madeCopy_; }
 
     // With background fits, a fit neither made before nor on disk is made on
     // a thread of its own, one at a time (the newest request next), and the
@@ -120,6 +122,7 @@ class ObjectTransport {
     // The lighting the grids hold the correction of (0: none), and a count
     // of their updates; the corrected copy and what it was made from.
     uint64_t lightingOf_ = 0, gridsMade_ = 0, correctedOf_ = 0;
+    bool madeCopy_ = false;
     std::vector<float> correctedB_;
     AtlasRadiosity corrected_;
     uint64_t geometryOf_ = 0, fitKey_ = 0, fluxOf_ = 0, inputsKey_ = 0;

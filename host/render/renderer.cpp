@@ -168,6 +168,10 @@ bool Renderer::prepareCameraMoves(const Scene& scene, const RenderOptions& optio
     RenderOptions copy = options;
     copy.pyramidCache = PyramidCache::Texture;
     render(scene, copy);
+    // With the object's transport, once more: that frame reads the copy on
+    // the GL side, so the copy with the correction in it is made here too
+    // (10–12 ms), not in the first camera move.
+    if (addsTransport(options)) render(scene, copy);
     return true;
 }
 
@@ -343,6 +347,8 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     // over the atlas on the GL side (docs/design.md §6): no run at all.
     const AtlasRadiosity* copy = atlasRadiosity(scene, opt, ctx, missed.has_value());
     stats.set("radiosity_lookup_gl", copy ? 1.0 : 0.0);
+    if (copy && addsTransport(opt))
+        stats.set("transport_copy_made", transport_->madeCorrectedCopy() ? 1.0 : 0.0);
     for (size_t k = 0; k < sm.slots() && !copy; ++k) {
         runs.push_back(materialContext(ctx, sm.slotMedium(scene, k)));
         runs[k].points = points[k];
