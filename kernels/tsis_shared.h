@@ -108,8 +108,10 @@ TSIS_CHECK_OFFSET(TsisInterpolatedPixel, weights, 20);
  * TSIS_PATCH_GROUP). */
 #define TSIS_PATCH_DIRECTION_SAMPLES 32
 /* The object transport's walks enter with sin²θ of the refracted direction
- * uniform over the refracted cone, [0, 1/η²]; the fit's slope in it is about
- * its mean, 1/(2η²), which the frame's patch sums subtract (patch_flux.cl). */
+ * uniform over the refracted cone, [0, 1/η²] (host/volumetric/
+ * patch_transfer.cpp); the fit's slope in it is about its mean, 1/(2η²),
+ * which the frame's patch sums subtract (patch_flux.cl). */
+#define TSIS_ENTRY_TOP_SIN2(eta) ((1.0f / (eta)) * (1.0f / (eta)))
 #define TSIS_ENTRY_MEAN_SIN2(eta) (0.5f / ((eta) * (eta)))
 
 /* Luminance weights (Rec. 709) used for importance: Y(Phi). */

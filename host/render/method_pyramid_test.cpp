@@ -234,6 +234,14 @@ INSTANTIATE_TEST_SUITE_P(Pyramid, CameraMovesOnTheGlSide,
                                                                           : "ObjectTransport");
                          });
 
+// The first camera move of a renderer prepared for it (prepareCameraMoves
+// after the first view).
+FrameResult preparedFirstMove(Renderer& renderer, const CameraMoves& m, const RenderOptions& opt) {
+    renderer.render(m.a, opt);
+    EXPECT_TRUE(renderer.prepareCameraMoves(m.a, opt));
+    return renderer.render(m.turned, opt);
+}
+
 // prepareCameraMoves makes the copy the first camera move would: that move
 // then reads it on the GL side at once (no run of the method), with the
 // frame a renderer gives once the copy exists, byte for byte; a light move
@@ -243,9 +251,7 @@ TEST(Pyramid, PreparedCameraMovesReadTheCopyFromTheFirstMove) {
     RenderOptions opt = frameSequenceOptions();
     opt.keepAovs = false;
     Renderer prepared, plain;
-    prepared.render(m.a, opt);
-    ASSERT_TRUE(prepared.prepareCameraMoves(m.a, opt));
-    const FrameResult first = prepared.render(m.turned, opt);
+    const FrameResult first = preparedFirstMove(prepared, m, opt);
     EXPECT_EQ(first.stats.number("radiosity_lookup_gl"), 1);
     EXPECT_EQ(first.stats.number("pyramid_from_atlas"), 1);
     // The plain renderer's first move makes the copy, its second reads it.
@@ -285,9 +291,7 @@ TEST(Pyramid, PreparedCameraMovesMakeTheTransportsCopyToo) {
     opt.keepAovs = false;
     opt.transport = Transport::Object;
     Renderer prepared, plain;
-    prepared.render(m.a, opt);
-    ASSERT_TRUE(prepared.prepareCameraMoves(m.a, opt));
-    const FrameResult first = prepared.render(m.turned, opt);
+    const FrameResult first = preparedFirstMove(prepared, m, opt);
     EXPECT_EQ(first.stats.number("radiosity_lookup_gl"), 1);
     EXPECT_EQ(first.stats.number("transport_copy_made"), 0);
     for (const Scene* s : {&m.a, &m.turned}) plain.render(*s, opt);

@@ -168,6 +168,14 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
     return out;
 }
 
+const TransportGrid* ObjectTransport::gridOfTag(float tag) const {
+    const int m = static_cast<int>(std::lround(tag)) - 1;
+    if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
+        grids_[static_cast<size_t>(m)].value.empty())
+        return nullptr;
+    return &grids_[static_cast<size_t>(m)];
+}
+
 const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uint64_t lighting) {
     madeCopy_ = false;
     if (!fitted_ || lighting == 0 || lighting != lightingOf_ || grids_.empty()) return nullptr;
@@ -178,12 +186,9 @@ const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uin
         correctedB_ = *copy.radiosity;
         parallelFor(correctedB_.size() / 4, 16384, [&](size_t begin, size_t end) {
             for (size_t t = begin; t < end; ++t) {
-                const int m = static_cast<int>(std::lround(pos[t * 4 + 3])) - 1;
-                if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
-                    grids_[static_cast<size_t>(m)].value.empty())
-                    continue;
-                const glm::vec3 add = grids_[static_cast<size_t>(m)].at(
-                    glm::vec3(pos[t * 4], pos[t * 4 + 1], pos[t * 4 + 2]));
+                const TransportGrid* g = gridOfTag(pos[t * 4 + 3]);
+                if (!g) continue;
+                const glm::vec3 add = g->at(glm::vec3(pos[t * 4], pos[t * 4 + 1], pos[t * 4 + 2]));
                 // Not clamped here: the composite clamps B after the
                 // lookup's interpolation, as the CL side does at the point.
                 for (size_t c = 0; c < 3; ++c) correctedB_[t * 4 + c] += add[c];
@@ -291,7 +296,6 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     geometryOf_ = geometry;
     inputsKey_ = inputs.digest();
     fluxOf_ = 0;
-    lightingOf_ = 0;
     install(*request, res);
     return true;
 }
@@ -492,12 +496,9 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
             const SurfacePoints& points = res.read(ctx.points);
             std::vector<float>& rgba = res.write(radiosity).rgba;
             for (size_t k = 0; k < static_cast<size_t>(points.count); ++k) {
-                const float tag = points.host[k * 4 + 3];
-                const int m = static_cast<int>(std::lround(tag)) - 1;
-                if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
-                    grids_[static_cast<size_t>(m)].value.empty())
-                    continue;
-                glm::vec3 add = grids_[static_cast<size_t>(m)].at(
+                const TransportGrid* g = gridOfTag(points.host[k * 4 + 3]);
+                if (!g) continue;
+                glm::vec3 add = g->at(
                     glm::vec3(points.host[k * 4], points.host[k * 4 + 1], points.host[k * 4 + 2]));
                 if (!points.exitAlbedo.empty())
                     add *= glm::vec3(points.exitAlbedo[k * 3], points.exitAlbedo[k * 3 + 1],

@@ -107,6 +107,9 @@ class ObjectTransport {
     void startBackgroundFit(std::shared_ptr<FitRequest> request);
     // transfer_ fitted for `request`: the patches' texel lists and the grids.
     void install(const FitRequest& request, FrameGraph::Resources& res);
+    // The grid of the medium a point's tag (1 + medium) names; null for
+    // none, or a medium without a correction.
+    const TransportGrid* gridOfTag(float tag) const;
 
     ClRuntime& cl_;
     cl::Kernel kernel_;

@@ -14,6 +14,7 @@
 #include <numeric>
 
 #include "physics/fresnel.h"
+#include "tsis_shared.h"
 #include "util/cache_dir.h"
 #include "util/error.h"
 #include "util/hash.h"
@@ -261,8 +262,9 @@ void walkRow(const MeshBoundary& boundary, const SurfaceTexels& tx, const PatchT
     const double albedo = mat.sigmaSPrime[channel] / sigmaT;
     const double eps = boundary.epsilon();
     const double invEta = 1.0 / mat.eta;
-    const double top = opt.entrySin > 0 ? opt.entrySin : invEta;
-    const double qTop = top * top, qMean = 0.5 * qTop;
+    const double qTop =
+        opt.entrySin > 0 ? opt.entrySin * opt.entrySin : TSIS_ENTRY_TOP_SIN2(mat.eta);
+    const double qMean = 0.5 * qTop;
     const int pairs = (opt.photons + 1) / 2;
     // Pairs take the strata of q in an order unrelated to their azimuths'
     // (a stride coprime to their count), so the two slopes do not mix.

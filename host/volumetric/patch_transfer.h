@@ -66,7 +66,7 @@ struct PatchTransferOptions {
     // adds that term for the light's own entry).
     bool excludeSingle = false;
     // The top of sin θe's range (tests); 0: 1/η, the refracted cone's edge,
-    // which the frame's μ (TSIS_ENTRY_MEAN_SIN2) assumes.
+    // TSIS_ENTRY_TOP_SIN2, which the frame's μ (TSIS_ENTRY_MEAN_SIN2) assumes.
     double entrySin = 0.0;
     uint32_t seed = 1;
 };
