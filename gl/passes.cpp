@@ -295,7 +295,8 @@ CompositePass::CompositePass()
       backgroundProgram_("fullscreen.vert", "resolve.frag",
                          "#define TSIS_TONE_MAP 1\n#define TSIS_BACKGROUND 1\n"),
       reduceProgram_("fullscreen.vert", "reduce.frag"),
-      fxaaProgram_("edge_points.vert", "fxaa.frag") {
+      fxaaProgram_("fullscreen.vert", "fxaa.frag"),
+      fxaaScatterProgram_("edge_points.vert", "fxaa.frag", "#define TSIS_FXAA_SCATTER 1\n") {
     glGenVertexArrays(1, &emptyVao_);
     // Depth read as a value (RenderTarget's depth compares, as a shadow map).
     glGenSamplers(1, &depthSampler_);
@@ -563,17 +564,24 @@ void CompositePass::fxaa() {
                        GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
     // Only the edge pixels (the centres' marks, as --aa's samples): a
     // full-screen pass costs llvmpipe ~10 ms at 512² (every 4×4 block runs
-    // the search as far as its farthest pixel).
+    // the search as far as its farthest pixel). Filtered packed, then copied
+    // out by a point each (fxaa.frag).
     if (edgeCount_ > 0) {
-        fxaaTarget_->bind();
+        glBindVertexArray(emptyVao_);
+        ensureTarget(fxaaPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
+        fxaaPacked_->bind();
         fxaaProgram_.use();
-        fxaaProgram_.set("u_frameSize", glm::vec2(w, h));
         bindTexture(fxaaProgram_, "u_display", 0, display_->color(0));
         glBindSampler(0, linearSampler_);
         bindTexture(fxaaProgram_, "u_edgePixels", 10, edgePixels_->id());
-        glBindVertexArray(emptyVao_);
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindSampler(0, 0);
+        fxaaTarget_->bind();
+        fxaaScatterProgram_.use();
+        fxaaScatterProgram_.set("u_frameSize", glm::vec2(w, h));
+        bindTexture(fxaaScatterProgram_, "u_packed", 0, fxaaPacked_->color(0));
+        bindTexture(fxaaScatterProgram_, "u_edgePixels", 10, edgePixels_->id());
+        glDrawArrays(GL_POINTS, 0, edgeCount_);
     }
     display_ = fxaaTarget_.get();
     checkGl("CompositePass::fxaa");

@@ -313,14 +313,14 @@ class CompositePass {
     // centres) marking the pixels to supersample
     ShaderVariants centrePrograms_, samplePrograms_;
     ShaderProgram resolveProgram_, resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_,
-        backgroundProgram_, reduceProgram_, fxaaProgram_;
+        backgroundProgram_, reduceProgram_, fxaaProgram_, fxaaScatterProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded.
     // direct: the display colour, the log luminance and the mask, of
     // radiance() with a display scale.
     std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
-        colorTarget_, fxaaTarget_;
+        colorTarget_, fxaaTarget_, fxaaPacked_;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1

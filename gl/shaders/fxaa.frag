@@ -6,8 +6,23 @@
 // features get a blend from their 3×3 contrast (the sub-pixel term).
 // u_display is sRGB in RGBA8 (alpha: the coverage, or 1), read through a
 // bilinear sampler.
-uniform sampler2D u_display;
+//
+// Two passes over the edge pixels (CompositePass::fxaa), as --aa's samples:
+// the filter packed, edge e at its slot (e mod width, e div width) of
+// u_edgePixels' size, then with TSIS_FXAA_SCATTER a point per edge pixel
+// (edge_points.vert) copies its slot there. llvmpipe shades whole 4×4
+// blocks: points running the search itself paid it sixteen times.
 layout(location = 0) out vec4 o_color;
+#ifdef TSIS_FXAA_SCATTER
+uniform sampler2D u_packed;
+flat in ivec2 v_slot;
+
+void main() {
+    o_color = texelFetch(u_packed, v_slot, 0);
+}
+#else
+uniform sampler2D u_display;
+uniform sampler2D u_edgePixels;  // pixel e's (x, y) at texel (e mod width, e div width)
 
 // Below this local contrast (absolute, or of the brightest luma) nothing is done.
 const float kEdgeMin = 1.0 / 24.0;
@@ -48,7 +63,7 @@ vec4 straightAlphaAt(vec2 uv) {
 
 void main() {
     vec2 texel = 1.0 / vec2(textureSize(u_display, 0));
-    vec2 uv = gl_FragCoord.xy * texel;
+    vec2 uv = (texelFetch(u_edgePixels, ivec2(gl_FragCoord.xy), 0).xy + 0.5) * texel;
     vec4 centre = textureLod(u_display, uv, 0.0);
     float lC = lumaOf(centre.rgb);
     float lN = lumaAt(uv + vec2(0.0, texel.y)), lS = lumaAt(uv - vec2(0.0, texel.y));
@@ -113,3 +128,4 @@ void main() {
     vec2 at = uv + (alongX ? vec2(0.0, offset * across) : vec2(offset * across, 0.0));
     o_color = straightAlphaAt(at);
 }
+#endif
