@@ -18,6 +18,7 @@ namespace tsis {
     X(BindBuffer, BINDBUFFER)                           \
     X(BindBufferBase, BINDBUFFERBASE)                   \
     X(BindFramebuffer, BINDFRAMEBUFFER)                 \
+    X(BindImageTexture, BINDIMAGETEXTURE)               \
     X(BindSampler, BINDSAMPLER)                         \
     X(BindTexture, BINDTEXTURE)                         \
     X(BindVertexArray, BINDVERTEXARRAY)                 \
@@ -70,6 +71,7 @@ namespace tsis {
     X(GetString, GETSTRING)                             \
     X(GetUniformLocation, GETUNIFORMLOCATION)           \
     X(LinkProgram, LINKPROGRAM)                         \
+    X(MemoryBarrier, MEMORYBARRIER)                     \
     X(PixelStorei, PIXELSTOREI)                         \
     X(ProgramUniform1f, PROGRAMUNIFORM1F)               \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)               \

@@ -295,8 +295,7 @@ CompositePass::CompositePass()
       backgroundProgram_("fullscreen.vert", "resolve.frag",
                          "#define TSIS_TONE_MAP 1\n#define TSIS_BACKGROUND 1\n"),
       reduceProgram_("fullscreen.vert", "reduce.frag"),
-      fxaaProgram_("fullscreen.vert", "fxaa.frag"),
-      fxaaScatterProgram_("edge_points.vert", "fxaa.frag", "#define TSIS_FXAA_SCATTER 1\n") {
+      fxaaProgram_("fullscreen.vert", "fxaa.frag") {
     glGenVertexArrays(1, &emptyVao_);
     // Depth read as a value (RenderTarget's depth compares, as a shadow map).
     glGenSamplers(1, &depthSampler_);
@@ -309,11 +308,18 @@ CompositePass::CompositePass()
     glSamplerParameteri(linearSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    // The G-buffer's neighbours at constant offsets (radiance.frag's edge marks).
+    glGenSamplers(1, &clampSampler_);
+    glSamplerParameteri(clampSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(clampSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(clampSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(clampSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 CompositePass::~CompositePass() {
     if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
     if (linearSampler_) glDeleteSamplers(1, &linearSampler_);
+    if (clampSampler_) glDeleteSamplers(1, &clampSampler_);
 }
 
 // The centre pass' marks read back and listed: the covered pixels it marked
@@ -424,9 +430,11 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     if (direct) setDisplayUniforms(centre, *displayScale, w, h);
     bindTexture(centre, "u_radiosity", 0, radiosityTexture);
     bindTexture(centre, "u_framePosition", 1, frameGbuffer.color(0));
+    glBindSampler(1, clampSampler_);
     bindTexture(centre, "u_normal", 2, frameGbuffer.color(1));
     bindBackgroundMap();
     drawFullScreenWhere(GL_GREATER);
+    glBindSampler(1, 0);
     if (findEdges) updateEdgePoints(edgesKey, *target, markIndex);
     if (aa > 1) {
         // Only the marked pixels' samples are drawn, and only they are read.
@@ -564,8 +572,8 @@ void CompositePass::fxaa() {
                        GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
     // Only the edge pixels (the centres' marks, as --aa's samples): a
     // full-screen pass costs llvmpipe ~10 ms at 512² (every 4×4 block runs
-    // the search as far as its farthest pixel). Filtered packed, then copied
-    // out by a point each (fxaa.frag).
+    // the search as far as its farthest pixel). Filtered packed, each edge
+    // pixel stored into the copy (fxaa.frag).
     if (edgeCount_ > 0) {
         glBindVertexArray(emptyVao_);
         ensureTarget(fxaaPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
@@ -574,14 +582,12 @@ void CompositePass::fxaa() {
         bindTexture(fxaaProgram_, "u_display", 0, display_->color(0));
         glBindSampler(0, linearSampler_);
         bindTexture(fxaaProgram_, "u_edgePixels", 10, edgePixels_->id());
+        glBindImageTexture(0, fxaaTarget_->color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        fxaaProgram_.set("u_out", 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindSampler(0, 0);
-        fxaaTarget_->bind();
-        fxaaScatterProgram_.use();
-        fxaaScatterProgram_.set("u_frameSize", glm::vec2(w, h));
-        bindTexture(fxaaScatterProgram_, "u_packed", 0, fxaaPacked_->color(0));
-        bindTexture(fxaaScatterProgram_, "u_edgePixels", 10, edgePixels_->id());
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                        GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     }
     display_ = fxaaTarget_.get();
     checkGl("CompositePass::fxaa");

@@ -313,7 +313,7 @@ class CompositePass {
     // centres) marking the pixels to supersample
     ShaderVariants centrePrograms_, samplePrograms_;
     ShaderProgram resolveProgram_, resolveEdgesProgram_, toneMapProgram_, toneMapEdgesProgram_,
-        backgroundProgram_, reduceProgram_, fxaaProgram_, fxaaScatterProgram_;
+        backgroundProgram_, reduceProgram_, fxaaProgram_;
     std::unique_ptr<FloatTexture> radiosity_;
     // centre: radiance and the supersampled pixels' mask (attachment 1); its
     // depth the frame G-buffer's, so that only covered pixels are shaded.
@@ -332,7 +332,7 @@ class CompositePass {
     // The display's uniforms of the tone curve and background on `p`.
     void setDisplayUniforms(const ShaderProgram& p, float scale, int width, int height) const;
     void bindBackgroundMap() const;  // the env map on its unit, for the next draws
-    GLuint emptyVao_ = 0, depthSampler_ = 0, linearSampler_ = 0;
+    GLuint emptyVao_ = 0, depthSampler_ = 0, linearSampler_ = 0, clampSampler_ = 0;
     // The supersampled pixels, (x, y) in a texture of slots (the samples'
     // packed layout; the resolve's points read it by gl_VertexID), listed
     // again only when the G-buffer changed: the marks follow the camera, not

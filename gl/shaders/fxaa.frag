@@ -7,21 +7,13 @@
 // u_display is sRGB in RGBA8 (alpha: the coverage, or 1), read through a
 // bilinear sampler.
 //
-// Two passes over the edge pixels (CompositePass::fxaa), as --aa's samples:
-// the filter packed, edge e at its slot (e mod width, e div width) of
-// u_edgePixels' size, then with TSIS_FXAA_SCATTER a point per edge pixel
-// (edge_points.vert) copies its slot there. llvmpipe shades whole 4×4
-// blocks: points running the search itself paid it sixteen times.
-layout(location = 0) out vec4 o_color;
-#ifdef TSIS_FXAA_SCATTER
-uniform sampler2D u_packed;
-flat in ivec2 v_slot;
-
-void main() {
-    o_color = texelFetch(u_packed, v_slot, 0);
-}
-#else
+// One pass over the edge pixels only (CompositePass::fxaa), packed as
+// --aa's samples: edge e at its slot (e mod width, e div width) of
+// u_edgePixels' size, its colour stored at its pixel of u_out (the display's
+// copy). llvmpipe shades whole 4×4 blocks: a point per pixel running the
+// search paid it sixteen times.
 uniform sampler2D u_display;
+layout(rgba8) uniform writeonly image2D u_out;
 uniform sampler2D u_edgePixels;  // pixel e's (x, y) at texel (e mod width, e div width)
 
 // Below this local contrast (absolute, or of the brightest luma) nothing is done.
@@ -63,7 +55,8 @@ vec4 straightAlphaAt(vec2 uv) {
 
 void main() {
     vec2 texel = 1.0 / vec2(textureSize(u_display, 0));
-    vec2 uv = (texelFetch(u_edgePixels, ivec2(gl_FragCoord.xy), 0).xy + 0.5) * texel;
+    ivec2 pixel = ivec2(texelFetch(u_edgePixels, ivec2(gl_FragCoord.xy), 0).xy);
+    vec2 uv = (vec2(pixel) + 0.5) * texel;
     vec4 centre = textureLod(u_display, uv, 0.0);
     float lC = lumaOf(centre.rgb);
     float lN = lumaAt(uv + vec2(0.0, texel.y)), lS = lumaAt(uv - vec2(0.0, texel.y));
@@ -71,10 +64,7 @@ void main() {
     float lo = min(lC, min(min(lN, lS), min(lE, lW)));
     float hi = max(lC, max(max(lN, lS), max(lE, lW)));
     float range = hi - lo;
-    if (range < max(kEdgeMin, hi * kEdgeRelative)) {
-        o_color = centre;
-        return;
-    }
+    if (range < max(kEdgeMin, hi * kEdgeRelative)) return;  // the copy's is right
     float lNE = lumaAt(uv + texel), lSW = lumaAt(uv - texel);
     float lNW = lumaAt(uv + vec2(-texel.x, texel.y)), lSE = lumaAt(uv + vec2(texel.x, -texel.y));
     // The edge runs along x where the luma changes most across y.
@@ -126,6 +116,5 @@ void main() {
     float sub = smoothstep(0.0, 1.0, clamp(abs(mean - lC) / range, 0.0, 1.0));
     offset = max(offset, sub * sub * kSubpixel);
     vec2 at = uv + (alongX ? vec2(0.0, offset * across) : vec2(offset * across, 0.0));
-    o_color = straightAlphaAt(at);
+    imageStore(u_out, pixel, straightAlphaAt(at));
 }
-#endif

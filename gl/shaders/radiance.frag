@@ -158,19 +158,26 @@ layout(location = 1) out vec4 o_edge;
 // depth jump passes through it or beside it.
 // (sameSurface against each neighbour, the centre's distance taken once and
 // the centre itself, always its own surface, not read again.)
+// u_framePosition is read here through a nearest, clamped sampler
+// (CompositePass): constant offsets, no per-read clamp.
+bool edgeTo(vec4 p, float dp, vec4 q) {
+    if ((p.w > 0.0) != (q.w > 0.0)) return true;
+    if (p.w == 0.0) return false;
+    float dq = distance(q.xyz, u_eye);
+    return !(abs(dp - dq) <= 0.02 * max(dp, dq));
+}
+
 bool edgePixel(ivec2 px, vec4 p) {
-    ivec2 size = textureSize(u_framePosition, 0);
+    vec2 uv = gl_FragCoord.xy / vec2(textureSize(u_framePosition, 0));
     float dp = distance(p.xyz, u_eye);
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            if (dx == 0 && dy == 0) continue;
-            vec4 q = texelFetch(u_framePosition, clamp(px + ivec2(dx, dy), ivec2(0), size - 1), 0);
-            if ((p.w > 0.0) != (q.w > 0.0)) return true;
-            if (p.w == 0.0) continue;
-            float dq = distance(q.xyz, u_eye);
-            if (!(abs(dp - dq) <= 0.02 * max(dp, dq))) return true;
-        }
-    return false;
+    return edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(-1, -1))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(0, -1))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(1, -1))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(-1, 0))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(1, 0))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(-1, 1))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(0, 1))) ||
+           edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(1, 1)));
 }
 
 void main() {
