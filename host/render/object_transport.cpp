@@ -151,18 +151,22 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
         entries.push_back(
             {phi, y > 0 ? glm::dvec3(dir) / y : glm::dvec3(0.0), y > 0 ? dir.w / y : 0.0, i});
     }
+    // Columns in chunks over the cores, each summed over the entries in order
+    // (the same bytes for any thread count).
     std::vector<glm::dvec3> sum(k, glm::dvec3(0.0));
-    for (const Entry& e : entries) {
-        const size_t row = t.blockStart[static_cast<size_t>(m)] + e.i * k;
-        for (size_t j = 0; j < k; ++j) {
-            const glm::vec3* g = &t.gradient[(row + j) * 3];
-            const glm::dvec3 d =
-                glm::dvec3(t.delta[row + j]) + glm::dvec3(t.angular[row + j]) * e.dq;
-            sum[j] += e.phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), e.s),
-                                         d.y + glm::dot(glm::dvec3(g[1]), e.s),
-                                         d.z + glm::dot(glm::dvec3(g[2]), e.s));
+    parallelFor(k, 64, [&](size_t begin, size_t end) {
+        for (const Entry& e : entries) {
+            const size_t row = t.blockStart[static_cast<size_t>(m)] + e.i * k;
+            for (size_t j = begin; j < end; ++j) {
+                const glm::vec3* g = &t.gradient[(row + j) * 3];
+                const glm::dvec3 d =
+                    glm::dvec3(t.delta[row + j]) + glm::dvec3(t.angular[row + j]) * e.dq;
+                sum[j] += e.phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), e.s),
+                                             d.y + glm::dot(glm::dvec3(g[1]), e.s),
+                                             d.z + glm::dot(glm::dvec3(g[2]), e.s));
+            }
         }
-    }
+    });
     std::vector<glm::vec3> out(k);
     for (size_t j = 0; j < k; ++j) out[j] = glm::vec3(sum[j] / exitancePerB);
     return out;
@@ -477,17 +481,20 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                     const std::vector<glm::vec3> c =
                         patchCorrection(transfer_, static_cast<int>(m), phi, dir, exitancePerB_[m]);
                     const int first = transfer_.mediumStart[m];
-                    for (size_t n = 0; n < g.nodes(); ++n) {
-                        glm::vec3 v(0.0f);
-                        for (int k = 0; k < TransportGrid::kTaps; ++k) {
-                            const int p =
-                                g.patch[n * TransportGrid::kTaps + static_cast<size_t>(k)];
-                            if (p >= 0)
-                                v += g.weight[n * TransportGrid::kTaps + static_cast<size_t>(k)] *
-                                     c[static_cast<size_t>(p - first)];
+                    parallelFor(g.nodes(), 8192, [&](size_t begin, size_t end) {
+                        for (size_t n = begin; n < end; ++n) {
+                            glm::vec3 v(0.0f);
+                            for (int k = 0; k < TransportGrid::kTaps; ++k) {
+                                const int p =
+                                    g.patch[n * TransportGrid::kTaps + static_cast<size_t>(k)];
+                                if (p >= 0)
+                                    v += g.weight[n * TransportGrid::kTaps +
+                                                  static_cast<size_t>(k)] *
+                                         c[static_cast<size_t>(p - first)];
+                            }
+                            g.value[n] = v;
                         }
-                        g.value[n] = v;
-                    }
+                    });
                 }
                 fluxOf_ = flux.version;
                 ++gridsMade_;
@@ -495,17 +502,19 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
             lightingOf_ = ctx.lighting;
             const SurfacePoints& points = res.read(ctx.points);
             std::vector<float>& rgba = res.write(radiosity).rgba;
-            for (size_t k = 0; k < static_cast<size_t>(points.count); ++k) {
-                const TransportGrid* g = gridOfTag(points.host[k * 4 + 3]);
-                if (!g) continue;
-                glm::vec3 add = g->at(
-                    glm::vec3(points.host[k * 4], points.host[k * 4 + 1], points.host[k * 4 + 2]));
-                if (!points.exitAlbedo.empty())
-                    add *= glm::vec3(points.exitAlbedo[k * 3], points.exitAlbedo[k * 3 + 1],
-                                     points.exitAlbedo[k * 3 + 2]);
-                float* b = &rgba[static_cast<size_t>(points.pixel[k]) * 4];
-                for (int c = 0; c < 3; ++c) b[c] = std::max(0.0f, b[c] + add[c]);
-            }
+            parallelFor(static_cast<size_t>(points.count), 8192, [&](size_t begin, size_t end) {
+                for (size_t k = begin; k < end; ++k) {
+                    const TransportGrid* g = gridOfTag(points.host[k * 4 + 3]);
+                    if (!g) continue;
+                    glm::vec3 add = g->at(glm::vec3(points.host[k * 4], points.host[k * 4 + 1],
+                                                    points.host[k * 4 + 2]));
+                    if (!points.exitAlbedo.empty())
+                        add *= glm::vec3(points.exitAlbedo[k * 3], points.exitAlbedo[k * 3 + 1],
+                                         points.exitAlbedo[k * 3 + 2]);
+                    float* b = &rgba[static_cast<size_t>(points.pixel[k]) * 4];
+                    for (int c = 0; c < 3; ++c) b[c] = std::max(0.0f, b[c] + add[c]);
+                }
+            });
             res.stats().set("transport_patches", static_cast<double>(patches));
         });
 }
