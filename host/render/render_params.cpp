@@ -224,6 +224,11 @@ std::vector<RenderParam> makeParams() {
                 "2N, …; tsis.distributed) whose spp-weighted mean is the whole frame",
                 M{"volumetric"}, kRadiosity},
                &O::sppOffset, {0, 1 << 19}),
+        number({"max-scatterings",
+                "N  end each path at its N-th scattering (1: single scattering alone, the "
+                "term --single-scatter models; 0 = every order)",
+                M{"volumetric"}, kRadiosity},
+               &O::maxScatterings, {1, 1 << 20, false, "every order"}),
         choice({"estimator",
                 "E  camera (paths from each pixel, connected to the lights) or light (photons "
                 "from the lights, connected to the pinhole; --spp N: N × the covered pixels "

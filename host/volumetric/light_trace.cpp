@@ -126,6 +126,7 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
             SpectralWeight w(rng);
             w.scale(e.power * fresnelTransmittance(m.eta, cosI));
             glm::dvec3 pos = hit.position - hit.normal * eps;
+            int scatterings = 0;
             for (int event = 0; event < kMaxEvents; ++event) {
                 SurfaceHit surface;
                 const bool bounded = boundary.intersect(pos, dir, kInfinity, surface);
@@ -146,6 +147,7 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
                         add(p, w.value() * kPhase * transmittance(m, out.paths[k].distance) *
                                    out.paths[k].irradiance * (scale / solidAngle));
                     }
+                    if (++scatterings == scene.maxScatterings) break;
                     const glm::dvec3 v = w.value();
                     if (!survivesRoulette(w,
                                           std::max({v.x, v.y, v.z}) /

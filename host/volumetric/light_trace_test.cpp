@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "mesh/builtin.h"
 #include "mesh/mesh.h"
@@ -19,16 +20,19 @@ namespace {
 // summed over the pixels inside the silhouette. They share the connection
 // through the boundary but in opposite roles (a light's beam spreading into
 // the medium, the eye's importance leaving it), so a wrong spreading,
-// Fresnel or η² factor on either side shows.
-TEST(LightTrace, AgreesWithTheCameraWalkOnASphere) {
+// Fresnel or η² factor on either side shows. With maxScatterings both end
+// their paths at that scattering (--max-scatterings): 1, single scattering
+// alone, an eighth of the sum here.
+void expectTheEstimatorsAgree(int maxScatterings) {
     Mesh mesh = builtinSphere();
     normalizeMesh(mesh, 4.0 * std::sqrt(3.0));  // radius 2 mm
     const MeshBoundary boundary(mesh);
     Light light;
     light.vec = glm::vec3(6.0f, 7.0f, 5.0f);
     light.rgb = glm::vec3(100.0f);
-    const WalkScene scene{
+    WalkScene scene{
         &boundary, testMedium({1.5, 2.0, 2.5}, {0.02, 0.05, 0.1}, 1.5), {light}, glm::dvec3(0.0)};
+    scene.maxScatterings = maxScatterings;
     Pinhole camera;
     camera.eye = {0.0, 1.0, 12.0};
     camera.fovYDegrees = 22.0;
@@ -89,6 +93,14 @@ TEST(LightTrace, AgreesWithTheCameraWalkOnASphere) {
         << "light tracer " << lightSum << " ± " << lightErr << ", camera walk " << cameraSum
         << " ± " << std::sqrt(cameraVar) << " over " << pixels << " pixels";
     EXPECT_LT(sigma, 0.02 * cameraSum);
+}
+
+TEST(LightTrace, AgreesWithTheCameraWalkOnASphere) {
+    expectTheEstimatorsAgree(std::numeric_limits<int>::max());
+}
+
+TEST(LightTrace, AgreesWithTheCameraWalkInSingleScatteringAlone) {
+    expectTheEstimatorsAgree(1);
 }
 
 }  // namespace

@@ -123,6 +123,10 @@ struct RenderSettings {
     // frame (offsets 0, N, 2N, … of spp N each) draw the passes the whole frame
     // draws: their spp-weighted mean is its image.
     int sppOffset = 0;
+    // max-scatterings: volumetric's paths end at their N-th scattering (after
+    // its connection to the lights or the eye); 0 = none (all orders), 1 =
+    // single scattering alone.
+    int maxScatterings = 0;
     // Renderer::render always keeps the AOVs (Frame's images); the CLI keeps
     // them only for --aov.
     bool keepAovs = false;

@@ -160,6 +160,7 @@ class RenderSettings:
     tsm_radius: float
     spp: int
     spp_offset: int
+    max_scatterings: int
     estimator: str
     time: float
     atlas_res: int
