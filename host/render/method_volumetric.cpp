@@ -44,6 +44,7 @@ void VolumetricMethod::render(const FrameContext& ctx, const SurfacePoints& poin
     }
     WalkScene walk{boundary_.get(), Medium(*ctx.material), scene.lights, glm::dvec3(0.0)};
     if (ctx.options->maxScatterings > 0) walk.maxScatterings = ctx.options->maxScatterings;
+    walk.minScatterings = ctx.options->minScatterings;
     // --env: its sun is among the lights; paths that leave read the rest.
     if (scene.env)
         walk.environment = [&scene](const glm::dvec3& d) { return scene.env.radiance(d); };

@@ -157,6 +157,9 @@ void validateRenderOptions(const RenderOptions& o) {
         RenderOptions copy = o;
         p.set(copy, p.text(o));
     }
+    if (o.maxScatterings > 0 && o.minScatterings > o.maxScatterings)
+        fail("--min-scatterings ", o.minScatterings, " exceeds --max-scatterings ",
+             o.maxScatterings, ": no scattering order is left to sum");
 }
 
 }  // namespace tsis

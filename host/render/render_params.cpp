@@ -225,10 +225,17 @@ std::vector<RenderParam> makeParams() {
                 M{"volumetric"}, kRadiosity},
                &O::sppOffset, {0, 1 << 19}),
         number({"max-scatterings",
-                "N  end each path at its N-th scattering (1: single scattering alone, the "
-                "term --single-scatter models; 0 = every order)",
+                "N  sum each path's scattering orders up to N (its N-th scattering's "
+                "connection and, with --env, its leaving into the map; 1: single scattering "
+                "alone, the term --single-scatter models; 0 = every order)",
                 M{"volumetric"}, kRadiosity},
                &O::maxScatterings, {1, 1 << 20, false, "every order"}),
+        number({"min-scatterings",
+                "N  sum each path from its N-th scattering on (1: without the environment seen "
+                "straight through the object, which no subsurface model makes; 2: multiple "
+                "scattering alone)",
+                M{"volumetric"}, kRadiosity},
+               &O::minScatterings, {0, 1 << 20}),
         choice({"estimator",
                 "E  camera (paths from each pixel, connected to the lights) or light (photons "
                 "from the lights, connected to the pinhole; --spp N: N × the covered pixels "

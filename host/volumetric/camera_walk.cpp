@@ -43,12 +43,15 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
     glm::dvec3 pos = hit.position - hit.normal * eps;
     glm::dvec3 radiance(0.0);
     constexpr double kPhase = 1.0 / (4.0 * M_PI);
+    const bool escapes = scene.environment || scene.sky != glm::dvec3(0.0);
     int scatterings = 0;
     for (int event = 0; event < kMaxEvents; ++event) {
         SurfaceHit surface;
         const bool bounded = boundary.intersect(pos, dir, kInfinity, surface);
         const FreeFlight flight = sampleFreeFlight(m, bounded ? surface.t : kInfinity, w, rng);
         if (flight.scattered) {
+            // Past the last order summed: the rest of the path is of higher ones.
+            if (scatterings == scene.maxScatterings) break;
             pos += dir * flight.t;
             ++counters.vertices;
             for (const Light& light : scene.lights) {
@@ -61,6 +64,9 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
                 const double q =
                     neeProbability(m, glm::dot(straight.position - pos, straight.normal));
                 if (rng.uniform() >= q) continue;
+                // An order below the first summed draws what it would have
+                // (a path's orders split exactly between two ranges).
+                if (scatterings + 1 < scene.minScatterings) continue;
                 ++counters.nee;
                 RefractedLights in;
                 const LightPath path = refractedLights(boundary, light, m.eta, pos, in, &straight);
@@ -69,7 +75,8 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
                     radiance += w.value() * kPhase * in.paths[k].irradiance *
                                 transmittance(m, in.paths[k].distance) / q;
             }
-            if (++scatterings == scene.maxScatterings) break;
+            // The last order summed also leaves into the sky; with none, it ends here.
+            if (++scatterings == scene.maxScatterings && !escapes) break;
             const glm::dvec3 v = w.value();
             if (!survivesRoulette(w, std::max({v.x, v.y, v.z}), rng)) break;
             const double u1 = rng.uniform(), u2 = rng.uniform();
@@ -78,6 +85,7 @@ glm::dvec3 exitantRadiance(const WalkScene& scene, const SurfaceHit& hit, const 
         }
         if (!bounded) break;  // an open mesh: the walk left through a hole
         if (reflectsInside(m, surface, eps, dir, pos, rng)) continue;
+        if (scatterings < scene.minScatterings) break;
         glm::dvec3 sky = scene.sky;
         if (scene.environment) {
             glm::dvec3 out;

@@ -27,8 +27,14 @@ struct WalkScene {
     // does not hide it (the sky is not hidden); empty for none.
     std::function<glm::dvec3(const glm::dvec3& d)> environment;
     // Scattering orders summed: paths end after this many scatterings (after
-    // the last one's next-event estimation); 1 = single scattering.
+    // the last one's next-event estimation, and its leaving into the sky or
+    // the environment); 1 = single scattering.
     int maxScatterings = std::numeric_limits<int>::max();
+    // The first order summed: a scattering below it connects to nothing and a
+    // path that leaves with fewer reads no sky (1: without the environment
+    // seen straight through the object, refracted, which no subsurface model
+    // makes; 2: multiple scattering alone).
+    int minScatterings = 0;
 };
 
 struct WalkCounters {

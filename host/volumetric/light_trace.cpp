@@ -135,10 +135,12 @@ void traceLight(const WalkScene& scene, const Pinhole& camera, double boundingRa
                 if (flight.scattered) {
                     pos += dir * flight.t;
                     ++counters.vertices;
-                    ++counters.nee;
-                    RefractedLights out;
-                    counters.neeUnsettled +=
-                        refractedLights(boundary, eye, m.eta, pos, out) == LightPath::Unsettled;
+                    RefractedLights out;  // empty below the first order summed
+                    if (scatterings + 1 >= scene.minScatterings) {
+                        ++counters.nee;
+                        counters.neeUnsettled +=
+                            refractedLights(boundary, eye, m.eta, pos, out) == LightPath::Unsettled;
+                    }
                     for (int k = 0; k < out.count; ++k) {
                         double solidAngle = 0;
                         const int p =

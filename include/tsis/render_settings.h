@@ -127,6 +127,10 @@ struct RenderSettings {
     // its connection to the lights or the eye); 0 = none (all orders), 1 =
     // single scattering alone.
     int maxScatterings = 0;
+    // min-scatterings: volumetric sums each path from its N-th scattering on
+    // (0: from none, the environment seen straight through the object
+    // counted; 1: without it; 2: multiple scattering alone).
+    int minScatterings = 0;
     // Renderer::render always keeps the AOVs (Frame's images); the CLI keeps
     // them only for --aov.
     bool keepAovs = false;

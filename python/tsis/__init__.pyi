@@ -161,6 +161,7 @@ class RenderSettings:
     spp: int
     spp_offset: int
     max_scatterings: int
+    min_scatterings: int
     estimator: str
     time: float
     atlas_res: int
