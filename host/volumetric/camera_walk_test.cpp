@@ -23,6 +23,15 @@ Mesh sphere(double diameterMm) {
     return mesh;
 }
 
+// skin1 (η = 1.3) inside `boundary`, lit by one point light at `at`.
+WalkScene skinLitBy(const MeshBoundary& boundary, const glm::vec3& at, float intensity,
+                    const glm::dvec3& sky = glm::dvec3(0.0)) {
+    Light light;
+    light.vec = at;
+    light.rgb = glm::vec3(intensity);
+    return {&boundary, testMedium({0.74, 0.88, 1.01}, {0.032, 0.17, 0.48}, 1.3), {light}, sky};
+}
+
 TEST(CameraWalk, WhiteFurnaceWithoutAbsorption) {
     // σa = 0 in a closed object under a unit sky: all light that enters
     // leaves, so the radiance leaving (without the specular reflection) is
@@ -212,13 +221,7 @@ TEST(CameraWalk, IndexMatchedSingleScatteringEqualsTheRayIntegral) {
 TEST(CameraWalk, ScatteringOrdersSplitEachPathExactly) {
     const Mesh mesh = sphere(3.0);
     const MeshBoundary boundary(mesh);
-    Light light;
-    light.vec = glm::vec3(-2.0f, 6.0f, -5.0f);
-    light.rgb = glm::vec3(200.0f);
-    WalkScene scene{&boundary,
-                    testMedium({0.74, 0.88, 1.01}, {0.032, 0.17, 0.48}, 1.3),
-                    {light},
-                    glm::dvec3(0.05)};
+    const WalkScene scene = skinLitBy(boundary, {-2.0f, 6.0f, -5.0f}, 200.0f, glm::dvec3(0.05));
     SurfaceHit hit;
     ASSERT_TRUE(boundary.intersect({0.4, 0.3, 10}, {0, 0, -1}, kInfinity, hit));
     auto sum = [&](int lo, int hi) {
@@ -271,13 +274,7 @@ TEST(CameraWalk, ScatteringOrdersSplitEachPathExactly) {
 TEST(CameraWalk, SameSeedSameRadiance) {
     const Mesh mesh = sphere(5.0);
     const MeshBoundary boundary(mesh);
-    Light light;
-    light.vec = glm::vec3(0.0f, 0.0f, 20.0f);
-    light.rgb = glm::vec3(400.0f);
-    WalkScene scene{&boundary,
-                    testMedium({0.74, 0.88, 1.01}, {0.032, 0.17, 0.48}, 1.3),
-                    {light},
-                    glm::dvec3(0.0)};
+    const WalkScene scene = skinLitBy(boundary, {0.0f, 0.0f, 20.0f}, 400.0f);
     SurfaceHit hit;
     ASSERT_TRUE(boundary.intersect({0, 0, 10}, {0, 0, -1}, kInfinity, hit));
     WalkCounters c;
