@@ -156,10 +156,10 @@ layout(location = 1) out vec4 o_edge;
 
 // A pixel whose 3×3 neighbourhood is not all one surface: a silhouette or a
 // depth jump passes through it or beside it.
-// (sameSurface against each neighbour, the centre's distance taken once and
-// the centre itself, always its own surface, not read again.)
-// u_framePosition is read here through a nearest, clamped sampler
-// (CompositePass): constant offsets, no per-read clamp.
+// (edgeTo against each neighbour, the centre's distance taken once and the
+// centre itself, always its own surface, not read again.) u_framePosition is
+// read here through a nearest, clamped sampler (CompositePass): constant
+// offsets, no per-read clamp.
 bool edgeTo(vec4 p, float dp, vec4 q) {
     if ((p.w > 0.0) != (q.w > 0.0)) return true;
     if (p.w == 0.0) return false;
@@ -167,7 +167,7 @@ bool edgeTo(vec4 p, float dp, vec4 q) {
     return !(abs(dp - dq) <= 0.02 * max(dp, dq));
 }
 
-bool edgePixel(ivec2 px, vec4 p) {
+bool edgePixel(vec4 p) {
     vec2 uv = gl_FragCoord.xy / vec2(textureSize(u_framePosition, 0));
     float dp = distance(p.xyz, u_eye);
     return edgeTo(p, dp, textureLodOffset(u_framePosition, uv, 0.0, ivec2(-1, -1))) ||
@@ -184,7 +184,7 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_framePosition, px, 0);
     // r: supersample; g: covered (the depth test lets only covered pixels here).
-    o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(px, p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
+    o_edge = vec4(TSIS_FIND_EDGES != 0 && edgePixel(p) ? 1.0 : 0.0, 1.0, 0.0, 0.0);
     vec4 l = p.w == 0.0 ? vec4(0.0) : vec4(shade(p, px, texelFetch(u_radiosity, px, 0).rgb), 1.0);
 #if TSIS_DISPLAY
     vec3 background = backgroundAt(gl_FragCoord.xy, u_scale);
