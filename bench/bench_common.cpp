@@ -29,7 +29,8 @@ BenchCase makeCase(const std::vector<std::string>& renderArgs) {
 }
 
 BenchCase makeThesisCase(std::vector<std::string> renderArgs) {
-    renderArgs.insert(renderArgs.begin(), {"--model", "thesis"});
+    // The thesis' atlas too: 512² whatever the object's size (not --atlas-res 0's choice).
+    renderArgs.insert(renderArgs.begin(), {"--model", "thesis", "--atlas-res", "512"});
     return makeCase(renderArgs);
 }
 

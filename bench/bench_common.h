@@ -18,8 +18,9 @@ struct BenchCase {
     RenderOptions options;
 };
 BenchCase makeCase(const std::vector<std::string>& renderArgs);
-// The same under the thesis' model (--model thesis): the benches that
-// reproduce the thesis' tables keep it, so the reproduction does not move.
+// The same under the thesis' model (--model thesis) and its 512² atlas: the
+// benches that reproduce the thesis' tables keep them, so the reproduction
+// does not move.
 BenchCase makeThesisCase(std::vector<std::string> renderArgs);
 
 struct Summary {

@@ -66,9 +66,8 @@ int run(const BenchArgs& a) {
         "(`build-bench/bench/bench_error`) on " +
         timestamp() + ".\nMachine: " + machine +
         ".\nRelative RMSE of radiance L against `--method reference` over its "
-        "covered pixels, 512×512, atlas " +
-        std::to_string(RenderOptions{}.atlasResolution) +
-        "², light maps at their default (1024² for these cases), default lights; "
+        "covered pixels, 512×512, atlas 512² (the thesis' model's, bench_common.h "
+        "makeThesisCase), light maps at their default (1024² for these cases), default lights; "
         "frame time = the "
         "whole frame (GL passes, hand-offs, kernels, composite), median of " +
         std::to_string(a.frames) +

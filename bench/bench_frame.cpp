@@ -242,9 +242,15 @@ int sideBySide(const BenchArgs& a) {
             for (const FrameStats::Stage& s : f.stages)
                 if (std::find(stageNames.begin(), stageNames.end(), s.name) == stageNames.end())
                     stageNames.push_back(s.name);
-        for (const std::string& name : stageNames)
-            std::fprintf(stderr, "%s %s %.2f\n", names[m], name.c_str(),
-                         summarize(stageSums(frames, {name})).median);
+        for (const std::string& name : stageNames) {
+            std::vector<double> cpu;
+            for (const FrameStats& f : frames)
+                for (const FrameStats::Stage& s : f.stages)
+                    if (s.name == name) cpu.push_back(s.cpuMs);
+            std::fprintf(stderr, "%s %s %.2f cpu %.2f\n", names[m], name.c_str(),
+                         summarize(stageSums(frames, {name})).median,
+                         cpu.empty() ? 0.0 : summarize(cpu).median);
+        }
     }
     std::printf("TSIS light_moving_ms=%.1f camera_moving_ms=%.1f", ms[0], ms[1]);
     if (ms[2] > 0) std::printf(" env_rotating_ms=%.1f", ms[2]);
@@ -274,8 +280,8 @@ int glFloors(const BenchArgs& a) {
     BenchCase c = makeCase({});
     const FrameStats first = renderer.render(c.scene, c.options).stats;
     const int lightRes = static_cast<int>(first.number("light_resolution"));
-    const int atlasRes = c.options.atlasResolution, w = c.options.width, h = c.options.height,
-              aa = c.options.aa;
+    const int atlasRes = static_cast<int>(first.number("atlas_resolution")), w = c.options.width,
+              h = c.options.height, aa = c.options.aa;
     const size_t lights = c.scene.lights.size();
     GlContext gl;
     const ShaderProgram depthOnly("mesh.vert", "depth.frag"), meshFloor("mesh.vert", "floor.frag"),

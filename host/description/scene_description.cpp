@@ -8,6 +8,7 @@
 #include "description/objects.h"
 #include "physics/material.h"
 #include "render/albedo_inversion.h"
+#include "render/renderer.h"
 #include "scene/environment.h"
 #include "util/error.h"
 #include "util/input_file.h"
@@ -68,7 +69,9 @@ MeshOptions meshOptionsOf(const MeshDescription& m) {
     o.zUp = m.zUp.value_or(o.zUp);
     o.creaseDegrees = m.creaseDegrees.value_or(o.creaseDegrees);
     o.atlasMode = m.atlasMode.value_or(o.atlasMode);
-    o.atlas.resolution = m.atlasResolution.value_or(RenderOptions().atlasResolution);
+    // --atlas-res 0 (automatic) renders at 256² or 512²: packed for the finer.
+    const int resolution = m.atlasResolution.value_or(0);
+    o.atlas.resolution = resolution > 0 ? resolution : kAtlasPackResolution;
     return o;
 }
 

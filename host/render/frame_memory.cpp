@@ -20,12 +20,14 @@ constexpr double kPerLightTexel = 16;  // the default scene's two lights
 // a normal, a depth and a radiance texel (GL targets, host memory on llvmpipe).
 constexpr double kPerExtraSample = 52;
 constexpr int kAutoLightResolution = 2048;  // --light-res 0: at most this (renderer.h)
+constexpr int kAutoAtlasResolution = 512;   // --atlas-res 0: at most this (renderer.h)
 
 }  // namespace
 
 uint64_t frameMemoryBytes(const RenderOptions& o) {
     const double pixels = double(o.width) * o.height;
-    const double atlas = double(o.atlasResolution) * o.atlasResolution;
+    const int atlasRes = o.atlasResolution > 0 ? o.atlasResolution : kAutoAtlasResolution;
+    const double atlas = double(atlasRes) * atlasRes;
     const int lightRes = o.lightResolution > 0 ? o.lightResolution : kAutoLightResolution;
     const double light = double(lightRes) * lightRes;
     const double extraSamples = double(o.aa) * o.aa - 1;

@@ -246,8 +246,12 @@ std::vector<RenderParam> makeParams() {
         number({"time", "S  stop after S seconds of paths (whole passes)", M{"volumetric"},
                 kRadiosity, false, false},
                &O::timeSeconds, {1e-3, 1e6}),
-        number({"atlas-res", "R  atlas resolution, a power of two", kEvery, kLighting},
-               &O::atlasResolution, {16, 4096, true}),
+        number({"atlas-res",
+                "R  atlas resolution, a power of two; 0 = 256 when a 256² atlas' texels are "
+                "within 1/8 of the shortest mean free path 1/σt' and no texture or surface map "
+                "is read, else 512",
+                kEvery, kLighting},
+               &O::atlasResolution, {16, 4096, true, "automatic"}),
         number({"light-res",
                 "R  shadow/light-view map resolution; 0 = 2048 when the object is over 100 "
                 "diffusion lengths 1/max σtr across, else 1024",

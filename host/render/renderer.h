@@ -138,4 +138,15 @@ class Renderer {
 // 1/σtr across (bounding diameter), else 1024².
 int autoLightResolution(const Scene& scene);
 
+// The atlas resolution RenderOptions::atlasResolution = 0 stands for, and
+// the one a mesh's atlas is packed for then (kAtlasPackResolution): 256²
+// when such an atlas' texels, √(area)/256 with every texel covered, are at
+// most 1/8 of the shortest mean free path 1/σt' of the object's media and
+// the scene reads no texture or surface map (their detail is the atlas'),
+// else 512². A texel that small integrates the profile as well as 512²
+// does (docs/guide/rendering.md) at a quarter of the flux atlas, pyramid and
+// fit texels.
+constexpr int kAtlasPackResolution = 512;
+int autoAtlasResolution(const Scene& scene);
+
 }  // namespace tsis

@@ -216,5 +216,34 @@ TEST(Renderer, LightResolutionFollowsTheObjectsSizeInDiffusionLengths) {
     EXPECT_EQ(test::renderWith(small, opt, "pyramid").stats.number("light_resolution"), 1024);
 }
 
+// A 256² atlas only where its texels are within 1/8 of the shortest mean
+// free path and no map needs the atlas' detail; the frame reports the one
+// it used.
+TEST(Renderer, AtlasResolutionFollowsTheObjectsSizeInMeanFreePaths) {
+    const Light light{Light::Type::Point, glm::vec3(-8, 10, -6), glm::vec3(200.0f)};
+    Scene scene = test::sphereScene("marble", light);
+    // marble's shortest mean free path 1/σt' is 0.33 mm (blue): a sphere of
+    // area A takes 256² up to √A/256 = 0.33/8 mm, a box diagonal of 10.3 mm.
+    normalizeMesh(scene.mesh, 9.0);
+    EXPECT_EQ(autoAtlasResolution(scene), 256);
+    normalizeMesh(scene.mesh, 11.5);
+    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    normalizeMesh(scene.mesh, 9.0);
+    // A file material of shorter mean free path than the scene's (cream, 0.14 mm).
+    ObjectMaterial cream;
+    cream.medium = presetMaterial("cream");
+    scene.objectMaterials.push_back(cream);
+    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    scene.objectMaterials.back().medium = scene.material;
+    EXPECT_EQ(autoAtlasResolution(scene), 256);
+    // Its albedo texture (or a surface map) keeps 512².
+    scene.objectMaterials.back().texture = std::make_shared<AlbedoTexture>();
+    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    scene.objectMaterials.clear();
+    RenderOptions opt = test::smallOptions(16, 64);
+    opt.atlasResolution = 0;
+    EXPECT_EQ(test::renderWith(scene, opt, "pyramid").stats.number("atlas_resolution"), 256);
+}
+
 }  // namespace
 }  // namespace tsis

@@ -105,7 +105,7 @@ void settings(ViewState& s, const PanelInfo& info) {
         s.options.roughness = std::clamp(roughness, float(kMinRoughness), 1.0f);
     ImGui::SliderFloat("exposure EV", &s.options.exposure, -10.0f, 10.0f, "%+.1f");
     s.options.exposure = std::clamp(s.options.exposure, -30.0f, 30.0f);
-    resolutionCombo("atlas res", s.options.atlasResolution, 64, 4096, nullptr);
+    resolutionCombo("atlas res", s.options.atlasResolution, 64, 4096, "auto");
     resolutionCombo("light res", s.options.lightResolution, 256, 4096, "auto");
     ImGui::Checkbox("auto-orbit light", &s.autoOrbit);
     ImGui::Checkbox("progressive", &s.progressive);

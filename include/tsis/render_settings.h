@@ -66,7 +66,9 @@ struct RenderSettings {
     // accurate per millisecond measured.
     std::string method = "pyramid";
     int width = 512, height = 512;  // width, height (pixels)
-    int atlasResolution = 512;      // atlas-res: the flux/position atlas (a power of two)
+    // atlas-res: the flux/position atlas (a power of two); 0 = from the
+    // object's size in mean free paths (autoAtlasResolution: 256 or 512)
+    int atlasResolution = 0;
     // light-res: shadow map and light-view flux map; 0 = from the object's
     // size in diffusion lengths.
     int lightResolution = 0;
