@@ -288,9 +288,9 @@ CompositePass::CompositePass()
       samplePrograms_("fullscreen.vert", "radiance.frag", {"TSIS_SPECULAR", "TSIS_ENV_REFLECT"},
                       "#define TSIS_COMPOSITE_SAMPLES 1\n"),
       resolveProgram_("fullscreen.vert", "resolve.frag"),
-      resolveEdgesProgram_("edge_points.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
+      resolveEdgesProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_RESOLVE_EDGES 1\n"),
       toneMapProgram_("fullscreen.vert", "resolve.frag", "#define TSIS_TONE_MAP 1\n"),
-      toneMapEdgesProgram_("edge_points.vert", "resolve.frag",
+      toneMapEdgesProgram_("fullscreen.vert", "resolve.frag",
                            "#define TSIS_TONE_MAP 1\n#define TSIS_RESOLVE_EDGES 1\n"),
       backgroundProgram_("fullscreen.vert", "resolve.frag",
                          "#define TSIS_TONE_MAP 1\n#define TSIS_BACKGROUND 1\n"),
@@ -500,13 +500,13 @@ void CompositePass::setToneMapScale(float scale, int width, int height) {
         setDisplayUniforms(*p, scale, width, height);
 }
 
-void CompositePass::drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
+void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
                                       const ShaderProgram& edges, uint64_t& backgroundKey) {
     const int w = target.width(), h = target.height();
     glBindVertexArray(emptyVao_);
     bindBackgroundMap();
     // The background stays from the frame before while the coverage and the
-    // supersampled pixels do (the edge points below draw over them again).
+    // supersampled pixels do (their averages below are stored over them again).
     // The environment's follows the camera and the exposure: drawn always.
     const uint64_t key = Hasher(coverageKey_).add(background_.mode).digest();
     if (background && (key != backgroundKey || background_.mode == 2)) {
@@ -514,15 +514,28 @@ void CompositePass::drawAroundCentres(const RenderTarget& target, const ShaderPr
         drawFullScreenWhere(GL_EQUAL);
         backgroundKey = key;
     }
-    // At 1× no pixel is marked and the samples are never read.
+    // At 1× no pixel is marked and the samples are never read. Packed, one
+    // fragment a supersampled pixel, each stored at its pixel of `target`'s
+    // colour and log luminance (resolve.frag); the packed target's own
+    // colour is not read.
     if (aa_ > 1 && edgeCount_ > 0) {
+        ensureTarget(edgesPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
+        edgesPacked_->bind();
         edges.use();
         edges.set("u_aa", aa_);
         edges.set("u_frameSize", glm::vec2(w, h));
         bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
         bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
+        glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                           target.format(0));
+        glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        edges.set("u_outColor", 0);
+        edges.set("u_outLogLuminance", 1);
         glBindVertexArray(emptyVao_);
-        glDrawArrays(GL_POINTS, 0, edgeCount_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                        GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        target.bind();
     }
 }
 

@@ -298,14 +298,14 @@ class CompositePass {
   private:
     // resolve.frag into `target` (its attachment 1: the log luminance).
     // The covered pixels' centres, the others' `background` (none: left 0),
-    // then the supersampled pixels' averages (a point each) over them.
+    // then the supersampled pixels' averages (packed, stored) over them.
     void resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
                      const ShaderProgram& edges, std::unique_ptr<RenderTarget>& target,
                      std::vector<GLenum> formats);
     // The part after the centres, into the bound target: the background,
     // drawn again only when the coverage changed since `backgroundKey`, and
     // the supersampled pixels' averages.
-    void drawAroundCentres(const RenderTarget& target, const ShaderProgram* background,
+    void drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
                            const ShaderProgram& edges, uint64_t& backgroundKey);
     void setToneMapScale(float scale, int width, int height);
 
@@ -320,7 +320,7 @@ class CompositePass {
     // direct: the display colour, the log luminance and the mask, of
     // radiance() with a display scale.
     std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
-        colorTarget_, fxaaTarget_, fxaaPacked_;
+        colorTarget_, fxaaTarget_, fxaaPacked_, edgesPacked_;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1

@@ -30,6 +30,7 @@ class RenderTarget {
     int width() const { return width_; }
     int height() const { return height_; }
     GLuint color(int i) const { return colors_[static_cast<size_t>(i)]; }
+    GLenum format(int i) const { return formats_[static_cast<size_t>(i)]; }
     int colorCount() const { return static_cast<int>(colors_.size()); }
     GLuint depth() const { return depth_; }
 

@@ -14,19 +14,29 @@
 // Three variants: a full-screen pass of the centres at the covered pixels
 // (CompositePass: by the G-buffer's depth), with TSIS_BACKGROUND one at the
 // others (the tone map's background; the resolve leaves them 0), then, with
-// TSIS_RESOLVE_EDGES, a point on each supersampled pixel (edge_points.vert)
-// over them — llvmpipe runs both sides of a branch, so one pass with all
-// three would average samples and tone-map at every pixel.
+// TSIS_RESOLVE_EDGES, the supersampled pixels over them — llvmpipe runs both
+// sides of a branch, so one pass with all three would average samples and
+// tone-map at every pixel. The last is packed as the samples are: a
+// full-screen pass over one texel per supersampled pixel, its slot, that
+// stores its two results at its pixel of u_outColor and u_outLogLuminance
+// (llvmpipe shades whole 4×4 blocks: a point per pixel paid for sixteen).
 uniform sampler2D u_centre;   // alpha: 1 where the sample shows the object
 // The supersampled pixels' samples, packed (radiance.frag): a pixel's u_aa ×
-// u_aa block at its slot v_slot (edge_points.vert).
+// u_aa block at its slot.
 uniform sampler2D u_samples;
 uniform int u_aa;
 #ifdef TSIS_RESOLVE_EDGES
-flat in ivec2 v_slot;
+uniform sampler2D u_edgePixels;  // pixel e's (x, y) at slot (e mod width, e div width)
+#ifdef TSIS_TONE_MAP
+layout(rgba8) uniform writeonly image2D u_outColor;
+#else
+layout(rgba32f) uniform writeonly image2D u_outColor;
 #endif
+layout(rgba32f) uniform writeonly image2D u_outLogLuminance;
+#else
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_logLuminance;
+#endif
 
 #ifdef TSIS_TONE_MAP
 uniform float u_scale;
@@ -39,9 +49,14 @@ void main() {
 }
 #else
 void main() {
+#ifdef TSIS_RESOLVE_EDGES
+    ivec2 slot = ivec2(gl_FragCoord.xy);
+    ivec2 px = ivec2(texelFetch(u_edgePixels, slot, 0).xy);
+#else
     ivec2 px = ivec2(gl_FragCoord.xy);
+#endif
 #ifdef TSIS_TONE_MAP
-    vec3 background = backgroundAt(gl_FragCoord.xy, u_scale);
+    vec3 background = backgroundAt(vec2(px) + 0.5, u_scale);
     vec3 display = vec3(0.0);
 #endif
     vec4 radiance;
@@ -56,7 +71,7 @@ void main() {
         float covered = 0.0;
         for (int j = 0; j < u_aa; ++j)
             for (int i = 0; i < u_aa; ++i) {
-                vec4 l = texelFetch(u_samples, v_slot * u_aa + ivec2(i, j), 0);
+                vec4 l = texelFetch(u_samples, slot * u_aa + ivec2(i, j), 0);
                 sum += l.rgb * l.a;
                 covered += l.a;
 #ifdef TSIS_TONE_MAP
@@ -70,15 +85,23 @@ void main() {
 #endif
     }
 #endif
-    o_logLuminance = logLuminance(radiance);
+    vec4 logL = logLuminance(radiance);
 #ifdef TSIS_TONE_MAP
     // Transparent: alpha the fraction of the pixel's samples that show the
     // object, the colour theirs alone (straight alpha, as PNG stores it).
     float alpha = u_background == 1 ? radiance.a : 1.0;
     if (u_background == 1) display = alpha > 0.0 ? display / alpha : vec3(0.0);
-    o_color = vec4(srgb(display), alpha);
+    vec4 color = vec4(srgb(display), alpha);
 #else
-    o_color = radiance;
+    vec4 color = radiance;
+#endif
+#ifdef TSIS_RESOLVE_EDGES
+    // The slots past the list repeat its last pixel: the same values again.
+    imageStore(u_outColor, px, color);
+    imageStore(u_outLogLuminance, px, logL);
+#else
+    o_color = color;
+    o_logLuminance = logL;
 #endif
 }
 #endif
