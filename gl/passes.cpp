@@ -526,8 +526,7 @@ void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram*
         edges.set("u_frameSize", glm::vec2(w, h));
         bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
         bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
-        glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           target.format(0));
+        glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format(0));
         glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         edges.set("u_outColor", 0);
         edges.set("u_outLogLuminance", 1);
