@@ -519,23 +519,32 @@ void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram*
     // colour and log luminance (resolve.frag); the packed target's own
     // colour is not read.
     if (aa_ > 1 && edgeCount_ > 0) {
-        ensureTarget(edgesPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
-        edgesPacked_->bind();
-        edges.use();
-        edges.set("u_aa", aa_);
-        edges.set("u_frameSize", glm::vec2(w, h));
-        bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
-        bindTexture(edges, "u_edgePixels", 10, edgePixels_->id());
-        glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format(0));
-        glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        edges.set("u_outColor", 0);
-        edges.set("u_outLogLuminance", 1);
-        glBindVertexArray(emptyVao_);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                        GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        drawPackedEdges(edges, [&] {
+            edges.set("u_aa", aa_);
+            edges.set("u_frameSize", glm::vec2(w, h));
+            bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
+            glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format(0));
+            glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            edges.set("u_outColor", 0);
+            edges.set("u_outLogLuminance", 1);
+        });
         target.bind();
     }
+}
+
+void CompositePass::drawPackedEdges(const ShaderProgram& program,
+                                    const std::function<void()>& bindInputs) {
+    // Made before the inputs are bound: a new target's textures bind on the
+    // active unit.
+    ensureTarget(edgesPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
+    edgesPacked_->bind();
+    program.use();
+    bindTexture(program, "u_edgePixels", 10, edgePixels_->id());
+    bindInputs();
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
@@ -587,19 +596,13 @@ void CompositePass::fxaa() {
     // the search as far as its farthest pixel). Filtered packed, each edge
     // pixel stored into the copy (fxaa.frag).
     if (edgeCount_ > 0) {
-        glBindVertexArray(emptyVao_);
-        ensureTarget(fxaaPacked_, kEdgeColumns, edgePixels_->height(), {GL_RGBA8}, false);
-        fxaaPacked_->bind();
-        fxaaProgram_.use();
-        bindTexture(fxaaProgram_, "u_display", 0, display_->color(0));
-        glBindSampler(0, linearSampler_);
-        bindTexture(fxaaProgram_, "u_edgePixels", 10, edgePixels_->id());
-        glBindImageTexture(0, fxaaTarget_->color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        fxaaProgram_.set("u_out", 0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        drawPackedEdges(fxaaProgram_, [&] {
+            bindTexture(fxaaProgram_, "u_display", 0, display_->color(0));
+            glBindSampler(0, linearSampler_);
+            glBindImageTexture(0, fxaaTarget_->color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+            fxaaProgram_.set("u_out", 0);
+        });
         glBindSampler(0, 0);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                        GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     }
     display_ = fxaaTarget_.get();
     checkGl("CompositePass::fxaa");

@@ -4,6 +4,7 @@
 // schedules it (host/render/renderer.cpp).
 #pragma once
 
+#include <functional>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -308,6 +309,11 @@ class CompositePass {
     void drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
                            const ShaderProgram& edges, uint64_t& backgroundKey);
     void setToneMapScale(float scale, int width, int height);
+    // `program` once per listed edge pixel (its u_edgePixels bound, then
+    // `bindInputs`): a full-screen pass over edgesPacked_ (one texel a pixel,
+    // in u_edgePixels' slots; its colour is not read), whose fragments write
+    // with image stores; waits for them.
+    void drawPackedEdges(const ShaderProgram& program, const std::function<void()>& bindInputs);
 
     // radiance.frag's: with the lobe, the environment's reflection, (the
     // centres) marking the pixels to supersample
@@ -320,7 +326,7 @@ class CompositePass {
     // direct: the display colour, the log luminance and the mask, of
     // radiance() with a display scale.
     std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
-        colorTarget_, fxaaTarget_, fxaaPacked_, edgesPacked_;
+        colorTarget_, fxaaTarget_, edgesPacked_;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
@@ -334,7 +340,7 @@ class CompositePass {
     void bindBackgroundMap() const;  // the env map on its unit, for the next draws
     GLuint emptyVao_ = 0, depthSampler_ = 0, linearSampler_ = 0, clampSampler_ = 0;
     // The supersampled pixels, (x, y) in a texture of slots (the samples'
-    // packed layout; the resolve's points read it by gl_VertexID), listed
+    // packed layout, which the resolve and fxaa passes share), listed
     // again only when the G-buffer changed: the marks follow the camera, not
     // the lights.
     GLsizei edgeCount_ = 0;

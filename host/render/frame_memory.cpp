@@ -1,5 +1,6 @@
 #include "render/frame_memory.h"
 
+#include "render/renderer.h"
 #include "util/error.h"
 #include "util/memory.h"
 
@@ -20,13 +21,12 @@ constexpr double kPerLightTexel = 16;  // the default scene's two lights
 // a normal, a depth and a radiance texel (GL targets, host memory on llvmpipe).
 constexpr double kPerExtraSample = 52;
 constexpr int kAutoLightResolution = 2048;  // --light-res 0: at most this (renderer.h)
-constexpr int kAutoAtlasResolution = 512;   // --atlas-res 0: at most this (renderer.h)
 
 }  // namespace
 
 uint64_t frameMemoryBytes(const RenderOptions& o) {
     const double pixels = double(o.width) * o.height;
-    const int atlasRes = o.atlasResolution > 0 ? o.atlasResolution : kAutoAtlasResolution;
+    const int atlasRes = o.atlasResolution > 0 ? o.atlasResolution : kAtlasPackResolution;
     const double atlas = double(atlasRes) * atlasRes;
     const int lightRes = o.lightResolution > 0 ? o.lightResolution : kAutoLightResolution;
     const double light = double(lightRes) * lightRes;

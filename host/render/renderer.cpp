@@ -6,7 +6,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <glm/geometric.hpp>
 #include <limits>
 #include <string>
 
@@ -253,7 +252,7 @@ int autoLightResolution(const Scene& scene) {
     return across > 100.0 ? 2048 : 1024;
 }
 
-int autoAtlasResolution(const Scene& scene) {
+int autoAtlasResolution(const Scene& scene, double surfaceAreaMm2) {
     double mfp = std::numeric_limits<double>::infinity();
     bool maps = false;
     auto shorten = [&](const Material& m) {
@@ -267,16 +266,19 @@ int autoAtlasResolution(const Scene& scene) {
         maps = maps || o.texture || o.normalMap || o.roughnessMap || o.mfpMap;
     }
     if (maps) return kAtlasPackResolution;
-    double area = 0;
-    const std::vector<glm::vec3>& p = scene.mesh.positions;
-    for (const glm::uvec3& t : scene.mesh.triangles)
-        area +=
-            0.5 * glm::length(glm::cross(glm::dvec3(p[t.y] - p[t.x]), glm::dvec3(p[t.z] - p[t.x])));
-    // Measured against the reference (docs/guide/rendering.md): 1/8 keeps
+    // Measured against the reference (docs/guide/performance.md): 1/8 keeps
     // every 10 mm marble scene of the table within 1 %, and sends bunny00
     // and cow in skin1 at 30 mm (1/6–1/7: 0.5 → 1.3 %) to 512².
     constexpr int kSmall = 256;
-    return std::sqrt(area) / kSmall <= mfp / 8.0 ? kSmall : kAtlasPackResolution;
+    return std::sqrt(surfaceAreaMm2) / kSmall <= mfp / 8.0 ? kSmall : kAtlasPackResolution;
+}
+
+double Renderer::surfaceArea(const Mesh& mesh, uint64_t meshKey) {
+    if (meshKey != areaOf_) {
+        area_ = mesh.surfaceArea();
+        areaOf_ = meshKey;
+    }
+    return area_;
 }
 
 const AtlasRadiosity* Renderer::atlasRadiosity(const Scene& scene, const RenderOptions& opt,
@@ -315,8 +317,11 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     validateMaterial(scene.material);
     for (const ObjectMaterial& o : scene.objectMaterials) validateMaterial(o.medium);
     RenderOptions opt = requested;
+    // The key of every per-mesh cache (its area below, the media, the atlases).
+    const uint64_t mesh = meshHash(scene.mesh);
     if (opt.lightResolution == 0) opt.lightResolution = autoLightResolution(scene);
-    if (opt.atlasResolution == 0) opt.atlasResolution = autoAtlasResolution(scene);
+    if (opt.atlasResolution == 0)
+        opt.atlasResolution = autoAtlasResolution(scene, surfaceArea(scene.mesh, mesh));
     if (opt.aaMethod == AaMethod::Fxaa) opt.aa = 1;  // the pass over the display instead
     gl_.makeCurrent();  // another renderer on this thread may have drawn since
     if (scene.lights.empty()) fail("the scene has no light; add one with --light");
@@ -338,7 +343,6 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
 
     // A frame that moves only the camera (or changes σ, N, the method…) reuses
     // the light maps and the flux atlas: same lighting key.
-    const uint64_t mesh = meshHash(scene.mesh);
     const SceneMedia& sm = media(scene, mesh);
     ctx.media = &sm;
     ctx.albedo = &albedoAtlas(scene, sm, opt, mesh);

@@ -91,6 +91,9 @@ class Renderer {
     // The scene's media and their materials (made again when the mesh or a
     // material changed).
     const SceneMedia& media(const Scene& scene, uint64_t meshKey);
+    // Mesh::surfaceArea, summed again only when the mesh changed (not every
+    // frame: a triangle's square root each, on the frame's path).
+    double surfaceArea(const Mesh& mesh, uint64_t meshKey);
     // The albedo factors (baked again when the mesh, a material or the atlas changed).
     const AlbedoAtlas& albedoAtlas(const Scene& scene, const SceneMedia& media,
                                    const RenderOptions& opt, uint64_t meshKey);
@@ -125,6 +128,8 @@ class Renderer {
     bool backgroundFits_ = false;
     std::map<std::string, std::unique_ptr<Method>> methods_;
     uint64_t mediaOf_ = 0;  // the mesh and materials media_ was made for
+    uint64_t areaOf_ = 0;   // the mesh area_ was summed for
+    double area_ = 0;
     std::unique_ptr<SceneMedia> media_;
     AlbedoAtlas albedo_;
     uint64_t albedoOf_ = 0;
@@ -144,9 +149,10 @@ int autoLightResolution(const Scene& scene);
 // most 1/8 of the shortest mean free path 1/σt' of the object's media and
 // the scene reads no texture or surface map (their detail is the atlas'),
 // else 512². A texel that small integrates the profile as well as 512²
-// does (docs/guide/rendering.md) at a quarter of the flux atlas, pyramid and
-// fit texels.
+// does (docs/guide/performance.md "Atlas resolution") at a quarter of the
+// flux atlas, pyramid and fit texels. `surfaceAreaMm2`: scene.mesh's
+// (Mesh::surfaceArea).
 constexpr int kAtlasPackResolution = 512;
-int autoAtlasResolution(const Scene& scene);
+int autoAtlasResolution(const Scene& scene, double surfaceAreaMm2);
 
 }  // namespace tsis

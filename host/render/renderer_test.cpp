@@ -225,20 +225,20 @@ TEST(Renderer, AtlasResolutionFollowsTheObjectsSizeInMeanFreePaths) {
     // marble's shortest mean free path 1/σt' is 0.33 mm (blue): a sphere of
     // area A takes 256² up to √A/256 = 0.33/8 mm, a box diagonal of 10.3 mm.
     normalizeMesh(scene.mesh, 9.0);
-    EXPECT_EQ(autoAtlasResolution(scene), 256);
+    EXPECT_EQ(autoAtlasResolution(scene, scene.mesh.surfaceArea()), 256);
     normalizeMesh(scene.mesh, 11.5);
-    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    EXPECT_EQ(autoAtlasResolution(scene, scene.mesh.surfaceArea()), 512);
     normalizeMesh(scene.mesh, 9.0);
     // A file material of shorter mean free path than the scene's (cream, 0.14 mm).
     ObjectMaterial cream;
     cream.medium = presetMaterial("cream");
     scene.objectMaterials.push_back(cream);
-    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    EXPECT_EQ(autoAtlasResolution(scene, scene.mesh.surfaceArea()), 512);
     scene.objectMaterials.back().medium = scene.material;
-    EXPECT_EQ(autoAtlasResolution(scene), 256);
+    EXPECT_EQ(autoAtlasResolution(scene, scene.mesh.surfaceArea()), 256);
     // Its albedo texture (or a surface map) keeps 512².
     scene.objectMaterials.back().texture = std::make_shared<AlbedoTexture>();
-    EXPECT_EQ(autoAtlasResolution(scene), 512);
+    EXPECT_EQ(autoAtlasResolution(scene, scene.mesh.surfaceArea()), 512);
     scene.objectMaterials.clear();
     RenderOptions opt = test::smallOptions(16, 64);
     opt.atlasResolution = 0;
