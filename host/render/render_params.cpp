@@ -33,12 +33,13 @@ RenderParam number(RenderParam p, T RenderOptions::*field, Range r) {
         if (!(r.zero && v == 0)) {
             const bool inRange = v >= r.lo && v <= r.hi;
             const auto i = static_cast<int64_t>(v);
+            const std::string zero = r.zero ? std::string(" (0: ") + r.zero + ")" : std::string();
             if (r.powerOfTwo && (!inRange || (i & (i - 1))))
                 fail(what, " ", value, " must be a power of two from ", exactText(r.lo), " to ",
-                     exactText(r.hi));
+                     exactText(r.hi), zero);
             if (!inRange)
                 fail(what, " ", value, " is out of range [", exactText(r.lo), ", ", exactText(r.hi),
-                     "]", r.zero ? std::string(" (0: ") + r.zero + ")" : std::string());
+                     "]", zero);
         }
         o.*field = static_cast<T>(v);
     };
