@@ -50,22 +50,40 @@ std::vector<float> lightTable(const Scene& scene) {
 
 }  // namespace
 
-glm::vec3 TransportGrid::at(const glm::vec3& x) const {
-    glm::vec3 f = (x - origin) / cell;
+TransportGrid::Read TransportGrid::read(const glm::vec3& x) const {
+    Read r;
+    r.f = (x - origin) / cell;
     glm::ivec3 i0;
     for (int a = 0; a < 3; ++a) {
-        f[a] = std::clamp(f[a], 0.0f, static_cast<float>(dims[a] - 1));
-        i0[a] = std::min(static_cast<int>(f[a]), std::max(dims[a] - 2, 0));
-        f[a] -= static_cast<float>(i0[a]);
+        r.f[a] = std::clamp(r.f[a], 0.0f, static_cast<float>(dims[a] - 1));
+        i0[a] = std::min(static_cast<int>(r.f[a]), std::max(dims[a] - 2, 0));
+        r.f[a] -= static_cast<float>(i0[a]);
     }
-    glm::vec3 sum(0.0f);
     for (int c = 0; c < 8; ++c) {
         const glm::ivec3 q = glm::min(i0 + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1), dims - 1);
+        r.node[c] = static_cast<uint32_t>((static_cast<size_t>(q.z) * dims.y + q.y) * dims.x + q.x);
+    }
+    return r;
+}
+
+glm::vec3 TransportGrid::blend(const Read& r) const {
+    const glm::vec3& f = r.f;
+    glm::vec3 sum(0.0f);
+    for (int c = 0; c < 8; ++c) {
         const float w = ((c & 1) ? f.x : 1 - f.x) * (((c >> 1) & 1) ? f.y : 1 - f.y) *
                         (((c >> 2) & 1) ? f.z : 1 - f.z);
-        sum += w * value[(static_cast<size_t>(q.z) * dims.y + q.y) * dims.x + q.x];
+        sum += w * value[r.node[c]];
     }
     return sum;
+}
+
+void TransportGrid::setNode(size_t n, const std::vector<glm::vec3>& correction, int first) {
+    glm::vec3 v(0.0f);
+    for (size_t k = 0; k < kTaps; ++k) {
+        const int p = patch[n * kTaps + k];
+        if (p >= 0) v += weight[n * kTaps + k] * correction[static_cast<size_t>(p - first)];
+    }
+    value[n] = v;
 }
 
 TransportGrid transportGrid(const PatchTransfer& t, int m) {
@@ -91,6 +109,7 @@ TransportGrid transportGrid(const PatchTransfer& t, int m) {
     g.patch.assign(g.nodes() * TransportGrid::kTaps, -1);
     g.weight.assign(g.nodes() * TransportGrid::kTaps, 0.0f);
     g.value.assign(g.nodes(), glm::vec3(0.0f));
+    g.made.assign(g.nodes(), 0);
     // Gaussian weights of width r over the nearest kTaps centres; each node
     // on its own (a 64³ grid over a few hundred patches: the threads share it).
     const float inv = 1.0f / (r * r);
@@ -172,12 +191,62 @@ std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
     return out;
 }
 
-const TransportGrid* ObjectTransport::gridOfTag(float tag) const {
+int ObjectTransport::gridIndexOfTag(float tag) const {
     const int m = static_cast<int>(std::lround(tag)) - 1;
     if (m < 0 || static_cast<size_t>(m) >= grids_.size() ||
         grids_[static_cast<size_t>(m)].value.empty())
-        return nullptr;
-    return &grids_[static_cast<size_t>(m)];
+        return -1;
+    return m;
+}
+
+const ObjectTransport::PointReads& ObjectTransport::readsOf(PointReads& cache,
+                                                            const std::vector<float>& points,
+                                                            size_t count) {
+    const auto end = points.begin() + static_cast<std::ptrdiff_t>(count * 4);
+    if (cache.installed == installs_ && cache.points.size() == count * 4 &&
+        std::equal(points.begin(), end, cache.points.begin()))
+        return cache;
+    cache.points.assign(points.begin(), end);
+    cache.installed = installs_;
+    cache.grid.assign(count, -1);
+    cache.reads.resize(count);
+    parallelFor(count, 8192, [&](size_t begin, size_t last) {
+        for (size_t k = begin; k < last; ++k) {
+            const int g = gridIndexOfTag(points[k * 4 + 3]);
+            cache.grid[k] = g;
+            if (g >= 0)
+                cache.reads[k] = grids_[static_cast<size_t>(g)].read(
+                    glm::vec3(points[k * 4], points[k * 4 + 1], points[k * 4 + 2]));
+        }
+    });
+    // Each node once, in node order.
+    cache.nodes.assign(grids_.size(), {});
+    std::vector<std::vector<uint8_t>> read(grids_.size());
+    for (size_t g = 0; g < grids_.size(); ++g) read[g].assign(grids_[g].value.size(), 0);
+    for (size_t k = 0; k < count; ++k)
+        if (cache.grid[k] >= 0)
+            for (uint32_t n : cache.reads[k].node) read[static_cast<size_t>(cache.grid[k])][n] = 1;
+    for (size_t g = 0; g < grids_.size(); ++g)
+        for (size_t n = 0; n < read[g].size(); ++n)
+            if (read[g][n]) cache.nodes[g].push_back(static_cast<uint32_t>(n));
+    return cache;
+}
+
+void ObjectTransport::fillNodes(const PointReads& r) {
+    for (size_t g = 0; g < grids_.size(); ++g) {
+        TransportGrid& grid = grids_[g];
+        const std::vector<uint32_t>& nodes = r.nodes[g];
+        if (g >= corrections_.size() || corrections_[g].empty()) continue;
+        const int first = transfer_.mediumStart[g];
+        parallelFor(nodes.size(), 4096, [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) {
+                const uint32_t n = nodes[i];
+                if (grid.made[n] == gridsMade_) continue;
+                grid.setNode(n, corrections_[g], first);
+                grid.made[n] = gridsMade_;
+            }
+        });
+    }
 }
 
 const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uint64_t lighting) {
@@ -186,13 +255,13 @@ const AtlasRadiosity* ObjectTransport::corrected(const AtlasRadiosity& copy, uin
     const uint64_t key = Hasher(copy.radiosityKey).add(copy.positionsKey).add(gridsMade_).digest();
     madeCopy_ = key != correctedOf_;
     if (madeCopy_) {
-        const std::vector<float>& pos = *copy.positions;
         correctedB_ = *copy.radiosity;
+        const PointReads& r = readsOf(copyReads_, *copy.positions, correctedB_.size() / 4);
+        fillNodes(r);
         parallelFor(correctedB_.size() / 4, 16384, [&](size_t begin, size_t end) {
             for (size_t t = begin; t < end; ++t) {
-                const TransportGrid* g = gridOfTag(pos[t * 4 + 3]);
-                if (!g) continue;
-                const glm::vec3 add = g->at(glm::vec3(pos[t * 4], pos[t * 4 + 1], pos[t * 4 + 2]));
+                if (r.grid[t] < 0) continue;
+                const glm::vec3 add = grids_[static_cast<size_t>(r.grid[t])].blend(r.reads[t]);
                 // Not clamped here: the composite clamps B after the
                 // lookup's interpolation, as the CL side does at the point.
                 for (size_t c = 0; c < 3; ++c) correctedB_[t * 4 + c] += add[c];
@@ -248,6 +317,7 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     // No correction of other inputs while this frame's is made.
     fitted_ = false;
     grids_.clear();
+    ++installs_;
     std::shared_ptr<FitRequest> request = waiting_;
     if (!request || request->geometry != geometry || request->inputs != inputs.digest()) {
         const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
@@ -311,6 +381,7 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
     // The patches' texels for the device's sums (CSR by patch).
     const auto patches = static_cast<size_t>(transfer_.patches());
     grids_.clear();
+    ++installs_;
     if (patches == 0) return;  // nothing covered: no correction
     std::vector<int> start(patches + 1, 0), list(tx.size());
     std::vector<size_t> of(tx.size());  // each list entry's SurfaceTexels index
@@ -374,6 +445,8 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
         }
         grids_.push_back(cached->second);
     }
+    ++installs_;  // the points' reads name these grids' nodes
+    corrections_.clear();
     res.stats().set("transport_grids_made", made);
 }
 
@@ -475,39 +548,25 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                     dir[p] =
                         glm::vec4(dirs[p * 4], dirs[p * 4 + 1], dirs[p * 4 + 2], dirs[p * 4 + 3]);
                 }
-                for (size_t m = 0; m < grids_.size(); ++m) {
-                    TransportGrid& g = grids_[m];
-                    if (g.value.empty()) continue;
-                    const std::vector<glm::vec3> c =
-                        patchCorrection(transfer_, static_cast<int>(m), phi, dir, exitancePerB_[m]);
-                    const int first = transfer_.mediumStart[m];
-                    parallelFor(g.nodes(), 8192, [&](size_t begin, size_t end) {
-                        for (size_t n = begin; n < end; ++n) {
-                            glm::vec3 v(0.0f);
-                            for (int k = 0; k < TransportGrid::kTaps; ++k) {
-                                const int p =
-                                    g.patch[n * TransportGrid::kTaps + static_cast<size_t>(k)];
-                                if (p >= 0)
-                                    v += g.weight[n * TransportGrid::kTaps +
-                                                  static_cast<size_t>(k)] *
-                                         c[static_cast<size_t>(p - first)];
-                            }
-                            g.value[n] = v;
-                        }
-                    });
-                }
+                // The grids' nodes are filled when a frame reads them (fillNodes).
+                corrections_.assign(grids_.size(), {});
+                for (size_t m = 0; m < grids_.size(); ++m)
+                    if (!grids_[m].value.empty())
+                        corrections_[m] = patchCorrection(transfer_, static_cast<int>(m), phi, dir,
+                                                          exitancePerB_[m]);
                 fluxOf_ = flux.version;
                 ++gridsMade_;
             }
             lightingOf_ = ctx.lighting;
             const SurfacePoints& points = res.read(ctx.points);
+            const PointReads& r =
+                readsOf(pointReads_, points.host, static_cast<size_t>(points.count));
+            fillNodes(r);
             std::vector<float>& rgba = res.write(radiosity).rgba;
             parallelFor(static_cast<size_t>(points.count), 8192, [&](size_t begin, size_t end) {
                 for (size_t k = begin; k < end; ++k) {
-                    const TransportGrid* g = gridOfTag(points.host[k * 4 + 3]);
-                    if (!g) continue;
-                    glm::vec3 add = g->at(glm::vec3(points.host[k * 4], points.host[k * 4 + 1],
-                                                    points.host[k * 4 + 2]));
+                    if (r.grid[k] < 0) continue;
+                    glm::vec3 add = grids_[static_cast<size_t>(r.grid[k])].blend(r.reads[k]);
                     if (!points.exitAlbedo.empty())
                         add *= glm::vec3(points.exitAlbedo[k * 3], points.exitAlbedo[k * 3 + 1],
                                          points.exitAlbedo[k * 3 + 2]);

@@ -39,9 +39,23 @@ struct TransportGrid {
     std::vector<int> patch;     // kTaps per node, −1 unused
     std::vector<float> weight;  // kTaps per node
     std::vector<glm::vec3> value;
+    // Per node: which correction its value holds (ObjectTransport's count;
+    // 0 none). A frame fills only the nodes its points read.
+    std::vector<uint64_t> made;
     size_t nodes() const { return static_cast<size_t>(dims.x) * dims.y * dims.z; }
-    // The trilinear value at x (clamped to the grid).
-    glm::vec3 at(const glm::vec3& x) const;
+
+    // A trilinear read: its 8 nodes and the fractions between them.
+    struct Read {
+        uint32_t node[8];
+        glm::vec3 f;
+    };
+    // The read at x (clamped to the grid).
+    Read read(const glm::vec3& x) const;
+    glm::vec3 blend(const Read& r) const;
+    glm::vec3 at(const glm::vec3& x) const { return blend(read(x)); }
+    // Node n's value from the corrections of the medium's patches, the first
+    // of them patch `first`.
+    void setNode(size_t n, const std::vector<glm::vec3>& correction, int first);
 };
 
 // The grid of medium m over its patches (cell: half the largest patch radius,
@@ -107,9 +121,23 @@ class ObjectTransport {
     void startBackgroundFit(std::shared_ptr<FitRequest> request);
     // transfer_ fitted for `request`: the patches' texel lists and the grids.
     void install(const FitRequest& request, FrameGraph::Resources& res);
-    // The grid of the medium a point's tag (1 + medium) names; null for
-    // none, or a medium without a correction.
-    const TransportGrid* gridOfTag(float tag) const;
+    // The index in grids_ of the medium a point's tag (1 + medium) names
+    // (−1 for none, or a medium without a correction).
+    int gridIndexOfTag(float tag) const;
+
+    // The grid reads of a set of points (xyz, w the medium tag), made again
+    // only when the points or the grids change: a frame that moves only the
+    // light reads the same nodes, and only those need this lighting's values.
+    struct PointReads {
+        std::vector<float> points;  // what they were made for
+        uint64_t installed = 0;
+        std::vector<int> grid;  // per point: its grid (−1: none)
+        std::vector<TransportGrid::Read> reads;
+        std::vector<std::vector<uint32_t>> nodes;  // per grid: the nodes read, each once
+    };
+    const PointReads& readsOf(PointReads& cache, const std::vector<float>& points, size_t count);
+    // The nodes `r` reads given this lighting's values (gridsMade_).
+    void fillNodes(const PointReads& r);
 
     ClRuntime& cl_;
     cl::Kernel kernel_;
@@ -122,6 +150,10 @@ class ObjectTransport {
     static constexpr size_t kCachedGrids = 8;
     std::vector<std::pair<uint64_t, TransportGrid>> gridCache_;
     std::vector<double> exitancePerB_;  // per medium
+    // Per medium, the patches' corrections of this lighting (gridsMade_).
+    std::vector<std::vector<glm::vec3>> corrections_;
+    PointReads pointReads_, copyReads_;
+    uint64_t installs_ = 0;  // grids_ installed so far
     // The lighting the grids hold the correction of (0: none), and a count
     // of their updates; the corrected copy and what it was made from.
     uint64_t lightingOf_ = 0, gridsMade_ = 0, correctedOf_ = 0;

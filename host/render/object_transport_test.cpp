@@ -101,5 +101,34 @@ TEST(ObjectTransportBackground, TheNewestRequestRunsNext) {
     EXPECT_EQ(waits.render(scene, opt).stats.number("transport_loaded"), 1);
 }
 
+// A frame fills only the grid nodes its points read: nodes a view read under
+// an earlier lighting are filled again when a later view reads them. The
+// camera goes back to a view after the light moved elsewhere, and the frame
+// is a fresh renderer's; both on the CL side (the points) and through the
+// copy a frame that only moved the camera reads (pyramid's camera cache).
+TEST(ObjectTransport, NodesReadAgainHoldTheNewLighting) {
+    const test::ScratchDir cache;
+    const test::ScopedEnv env("TSIS_CACHE_DIR", cache.path().string());
+    for (const PyramidCache where : {PyramidCache::Pixels, PyramidCache::Camera}) {
+        Scene scene = test::torusScene("skin1", 10.0);
+        RenderOptions opt = transportOptions();
+        opt.pyramidCache = where;
+        const glm::vec3 eye = scene.camera.eye, light = scene.lights[0].vec;
+        Renderer moving;
+        moving.render(scene, opt);
+        scene.lights[0].vec = glm::vec3(-light.x, light.y, light.z);
+        scene.camera.eye = glm::vec3(eye.y, eye.x, eye.z);
+        moving.render(scene, opt);
+        scene.camera.eye = eye;
+        const FrameResult back = moving.render(scene, opt);
+        // The same two frames without the first lighting before them.
+        Renderer fresh;
+        scene.camera.eye = glm::vec3(eye.y, eye.x, eye.z);
+        fresh.render(scene, opt);
+        scene.camera.eye = eye;
+        EXPECT_EQ(back.rgb8, fresh.render(scene, opt).rgb8);
+    }
+}
+
 }  // namespace
 }  // namespace tsis
