@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <string>
 
@@ -199,12 +200,20 @@ int ObjectTransport::gridIndexOfTag(float tag) const {
     return m;
 }
 
+void ObjectTransport::clearGrids() {
+    grids_.clear();
+    corrections_.clear();
+    ++installs_;
+}
+
 const ObjectTransport::PointReads& ObjectTransport::readsOf(PointReads& cache,
                                                             const std::vector<float>& points,
                                                             size_t count) {
     const auto end = points.begin() + static_cast<std::ptrdiff_t>(count * 4);
+    // Bytewise: the same bits give the same reads.
     if (cache.installed == installs_ && cache.points.size() == count * 4 &&
-        std::equal(points.begin(), end, cache.points.begin()))
+        (count == 0 ||
+         std::memcmp(points.data(), cache.points.data(), count * 4 * sizeof(float)) == 0))
         return cache;
     cache.points.assign(points.begin(), end);
     cache.installed = installs_;
@@ -316,8 +325,7 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return true;
     // No correction of other inputs while this frame's is made.
     fitted_ = false;
-    grids_.clear();
-    ++installs_;
+    clearGrids();
     std::shared_ptr<FitRequest> request = waiting_;
     if (!request || request->geometry != geometry || request->inputs != inputs.digest()) {
         const size_t texels = static_cast<size_t>(ctx.atlasResolution) * ctx.atlasResolution;
@@ -380,8 +388,7 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
     cl::CommandQueue& q = cl_.queue();
     // The patches' texels for the device's sums (CSR by patch).
     const auto patches = static_cast<size_t>(transfer_.patches());
-    grids_.clear();
-    ++installs_;
+    clearGrids();
     if (patches == 0) return;  // nothing covered: no correction
     std::vector<int> start(patches + 1, 0), list(tx.size());
     std::vector<size_t> of(tx.size());  // each list entry's SurfaceTexels index
@@ -426,7 +433,6 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
         sampleGeometry.size() * sizeof(float), sampleGeometry.data());
     // The grids follow the patches alone (not the materials): a switch back
     // and forth between materials finds them made.
-    grids_.clear();
     int made = 0;
     for (size_t m = 0; m < media; ++m) {
         const auto first = static_cast<size_t>(transfer_.mediumStart[m]);
@@ -445,8 +451,6 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
         }
         grids_.push_back(cached->second);
     }
-    ++installs_;  // the points' reads name these grids' nodes
-    corrections_.clear();
     res.stats().set("transport_grids_made", made);
 }
 

@@ -51,8 +51,8 @@ struct TransportGrid {
     };
     // The read at x (clamped to the grid).
     Read read(const glm::vec3& x) const;
+    // The trilinear value of a read.
     glm::vec3 blend(const Read& r) const;
-    glm::vec3 at(const glm::vec3& x) const { return blend(read(x)); }
     // Node n's value from the corrections of the medium's patches, the first
     // of them patch `first`.
     void setNode(size_t n, const std::vector<glm::vec3>& correction, int first);
@@ -124,6 +124,9 @@ class ObjectTransport {
     // The index in grids_ of the medium a point's tag (1 + medium) names
     // (−1 for none, or a medium without a correction).
     int gridIndexOfTag(float tag) const;
+    // No grids (and no corrections): the points' reads made for the old ones
+    // are made again.
+    void clearGrids();
 
     // The grid reads of a set of points (xyz, w the medium tag), made again
     // only when the points or the grids change: a frame that moves only the
