@@ -397,7 +397,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
     std::unique_ptr<RenderTarget>& target = direct ? directTarget_ : centreTarget_;
     const int markIndex = direct ? 2 : 1;
     ensureTarget(target, w, h,
-                 direct ? std::vector<GLenum>{GL_RGBA8, GL_RGBA32F, GL_RGBA8}
+                 direct ? std::vector<GLenum>{GL_RGBA8, GL_RG32F, GL_RGBA8}
                         : std::vector<GLenum>{GL_RGBA32F, GL_RGBA8},
                  true);
     target->bind();
@@ -524,7 +524,7 @@ void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram*
             edges.set("u_frameSize", glm::vec2(w, h));
             bindTexture(edges, "u_samples", 1, sampleTarget_->color(0));
             glBindImageTexture(0, target.color(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.format(0));
-            glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            glBindImageTexture(1, target.color(1), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
             edges.set("u_outColor", 0);
             edges.set("u_outLogLuminance", 1);
         });
@@ -568,7 +568,7 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
 
 void CompositePass::resolve() {
     resolveInto(resolveProgram_, nullptr, resolveEdgesProgram_, frameTarget_,
-                {GL_RGBA32F, GL_RGBA32F});
+                {GL_RGBA32F, GL_RG32F});
     checkGl("CompositePass::resolve");
 }
 
@@ -580,7 +580,7 @@ std::vector<float> CompositePass::frameRadiance() const {
 void CompositePass::toneMap(float scale) {
     setToneMapScale(scale, centreTarget_->width(), centreTarget_->height());
     resolveInto(toneMapProgram_, &backgroundProgram_, toneMapEdgesProgram_, colorTarget_,
-                {GL_RGBA8, GL_RGBA32F});
+                {GL_RGBA8, GL_RG32F});
     display_ = colorTarget_.get();
     checkGl("CompositePass::toneMap");
 }
@@ -610,7 +610,7 @@ void CompositePass::fxaa() {
 
 float CompositePass::logAverageLuminance() {
     TSIS_CHECK(logLuminance_ != nullptr);
-    // Blocks of 4² a pass until at most 64² sums are left (16 KiB at 512²):
+    // Blocks of 4² a pass until at most 64² sums are left (8 KiB at 512²):
     // llvmpipe shades a target's 64² tiles in parallel, so one pass into a
     // single tile of 16² blocks ran on one thread (1.3 ms at 512², 0.6 in
     // two passes).
@@ -625,7 +625,7 @@ float CompositePass::logAverageLuminance() {
         w = (w + kBlock - 1) / kBlock;
         h = (h + kBlock - 1) / kBlock;
         if (sumTargets_.size() <= level) sumTargets_.emplace_back();
-        ensureTarget(sumTargets_[level], w, h, {GL_RGBA32F}, false);
+        ensureTarget(sumTargets_[level], w, h, {GL_RG32F}, false);
         sumTargets_[level]->bind();
         bindTexture(reduceProgram_, "u_logLuminance", 0, from);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -633,9 +633,9 @@ float CompositePass::logAverageLuminance() {
         from = last->color(0);
     }
     checkGl("CompositePass::logAverageLuminance");
-    const std::vector<float> sums = last->readRGBA(0);
+    const std::vector<float> sums = last->readRG(0);
     double sum = 0, count = 0;
-    for (size_t i = 0; i + 1 < sums.size(); i += 4) {
+    for (size_t i = 0; i + 1 < sums.size(); i += 2) {
         sum += sums[i];
         count += sums[i + 1];
     }

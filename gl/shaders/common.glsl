@@ -99,9 +99,10 @@ vec3 toLight(int i, vec3 p, out float falloff) {
 // such texels are left out of the mean — counted lit, they let light into
 // the shadowed solid. Elsewhere (a convex terminator, whose own surface
 // bulges a little in front, a penumbra on a receiver that goes on) V is the
-// tent's mean as it was. The two more compares run only where the taps
-// disagree (a tent all lit is 1 either way, all shadowed 0: a loop of 4 or
-// 0 trips, as above).
+// tent's mean as it was. The two more compares, and their projections, run
+// only where the taps disagree (a tent all lit is 1 either way, all shadowed
+// 0: a loop of 4 or 0 trips, as above; the projections inside it, redone per
+// trip, since a block whose taps all agree then skips them).
 float visibility(int i, vec3 p, vec3 n, vec3 l) {
     if (u_lightShadows[i] == 0) return 1.0;
     float cosT = clamp(dot(n, l), 0.0, 1.0);
@@ -117,12 +118,12 @@ float visibility(int i, vec3 p, vec3 n, vec3 l) {
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
         lit += texture(u_shadowMaps, vec4(s.xy + o, float(i), s.z - 2e-5));
     }
-    vec3 beyond = l * (u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0)));
-    vec4 f = u_lightViewProj[i] * vec4(q - beyond, 1.0);
-    vec4 m = u_lightViewProj[i] * vec4(q + beyond, 1.0);
     float past = 0.0, near = 0.0;
     int edge = lit > 0.0 && lit < 4.0 ? 4 : 0;
     for (int k = 0; k < edge; ++k) {
+        vec3 beyond = l * (u_shadowTexelMm[i] * (2.0 + 2.0 * min(sinT / max(cosT, 0.05), 20.0)));
+        vec4 f = u_lightViewProj[i] * vec4(q - beyond, 1.0);
+        vec4 m = u_lightViewProj[i] * vec4(q + beyond, 1.0);
         vec2 o = vec2((k & 1) == 0 ? -0.5 : 0.5, k < 2 ? -0.5 : 0.5) * texel;
         past += texture(u_shadowMaps, vec4(s.xy + o, float(i), f.z / f.w * 0.5 + 0.5));
         near += 1.0 - texture(u_shadowMaps, vec4(s.xy + o, float(i), m.z / m.w * 0.5 + 0.5));

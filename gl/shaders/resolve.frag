@@ -32,7 +32,7 @@ layout(rgba8) uniform writeonly image2D u_outColor;
 #else
 layout(rgba32f) uniform writeonly image2D u_outColor;
 #endif
-layout(rgba32f) uniform writeonly image2D u_outLogLuminance;
+layout(rg32f) uniform writeonly image2D u_outLogLuminance;
 #else
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_logLuminance;

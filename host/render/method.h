@@ -44,6 +44,7 @@ struct FrameContext {
     ClRuntime* cl = nullptr;
     FrameStats* stats = nullptr;  // setup-time values; passes report through Resources
     float boundingRadius = 0;     // the object fits in a sphere of this radius at the origin
+    uint64_t meshKey = 0;         // render/frame_keys.h meshHash, taken once a frame
     int atlasResolution = 0;
     int width = 0, height = 0;  // the camera image
     glm::mat4 viewProj{1.0f};

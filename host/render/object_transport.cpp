@@ -319,7 +319,7 @@ bool ObjectTransport::fit(const FrameContext& ctx, const std::vector<KeyedProfil
     // The mesh's own hash too: a view that resizes the object keeps its atlas.
     const uint64_t geometry = Hasher(position.version)
                                   .add(normal.version)
-                                  .add(meshHash(ctx.scene->mesh))
+                                  .add(ctx.meshKey)
                                   .add(ctx.atlasResolution)
                                   .digest();
     if (fitted_ && geometry == geometryOf_ && inputs.digest() == inputsKey_) return true;

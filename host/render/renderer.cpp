@@ -24,10 +24,11 @@ ImageF toImage(const std::vector<float>& rgba, int w, int h, int channels, int f
     return ImageF{w, h, channels, fromGlRgba(rgba, w, h, channels, first)};
 }
 
-FrameContext frameContext(const Scene& scene, const RenderOptions& opt, ClRuntime& cl,
-                          FrameStats& stats) {
+FrameContext frameContext(const Scene& scene, uint64_t meshKey, const RenderOptions& opt,
+                          ClRuntime& cl, FrameStats& stats) {
     FrameContext ctx;
     ctx.scene = &scene;
+    ctx.meshKey = meshKey;
     ctx.material = &scene.material;
     ctx.options = &opt;
     ctx.cl = &cl;
@@ -338,7 +339,7 @@ FrameResult Renderer::render(const Scene& scene, const RenderOptions& requested,
     CpuTimer totalCpu;
     FrameResult result;
     FrameStats& stats = result.stats;
-    FrameContext ctx = frameContext(scene, opt, cl_, stats);
+    FrameContext ctx = frameContext(scene, mesh, opt, cl_, stats);
     ctx.cancel = cancel;
 
     // A frame that moves only the camera (or changes σ, N, the method…) reuses
