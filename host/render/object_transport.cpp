@@ -148,42 +148,87 @@ TransportGrid transportGrid(const PatchTransfer& t, int m) {
     return g;
 }
 
-std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
+namespace {
+
+// bfloat16: a float's top 16 bits, rounded to nearest even.
+uint16_t toBfloat16(float v) {
+    uint32_t u = 0;
+    std::memcpy(&u, &v, sizeof u);
+    u += 0x7fffu + ((u >> 16) & 1u);
+    return static_cast<uint16_t>(u >> 16);
+}
+
+float fromBfloat16(uint16_t h) {
+    const uint32_t u = static_cast<uint32_t>(h) << 16;
+    float v = 0;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
+}
+
+}  // namespace
+
+PackedTransfer packTransfer(const PatchTransfer& t) {
+    PackedTransfer p;
+    const size_t media = t.mediumStart.empty() ? 0 : t.mediumStart.size() - 1;
+    for (size_t m = 0; m < media; ++m) {
+        const int first = t.mediumStart[m];
+        const auto k = static_cast<size_t>(t.mediumStart[m + 1] - first);
+        p.first.push_back(first);
+        p.count.push_back(static_cast<int>(k));
+        std::vector<uint16_t>& out = p.pairs.emplace_back(k * k * PackedTransfer::kPerPair, 0);
+        for (size_t pair = 0; pair < k * k; ++pair) {
+            const size_t at = t.blockStart[m] + pair;
+            uint16_t* o = &out[pair * PackedTransfer::kPerPair];
+            const glm::vec3 d = t.delta[at], h = t.angular[at];
+            for (int c = 0; c < 3; ++c) {
+                o[c] = toBfloat16(d[c]);
+                o[3 + c] = toBfloat16(h[c]);
+                // G's rows are per channel, its columns the axes.
+                for (int axis = 0; axis < 3; ++axis)
+                    o[6 + 3 * axis + c] = toBfloat16(t.gradient[at * 3 + size_t(c)][axis]);
+            }
+        }
+    }
+    return p;
+}
+
+std::vector<glm::vec3> patchCorrection(const PackedTransfer& t, int m,
                                        const std::vector<glm::vec3>& flux,
                                        const std::vector<glm::vec4>& direction,
                                        double exitancePerB) {
-    const int first = t.mediumStart[static_cast<size_t>(m)];
-    const int last = t.mediumStart[static_cast<size_t>(m) + 1];
-    const auto k = static_cast<size_t>(last - first);
+    const auto first = static_cast<size_t>(t.first[static_cast<size_t>(m)]);
+    const auto k = static_cast<size_t>(t.count[static_cast<size_t>(m)]);
+    const std::vector<uint16_t>& pairs = t.pairs[static_cast<size_t>(m)];
     // Per entry patch: its flux, the mean tangential direction of the light
     // entering it and that direction's mean square less the walks' (w).
     struct Entry {
-        glm::dvec3 phi, s;
-        double dq = 0;
+        glm::vec3 phi, s;
+        float dq = 0;
         size_t i = 0;
     };
     std::vector<Entry> entries;
     for (size_t i = 0; i < k; ++i) {
-        const glm::dvec3 phi(flux[static_cast<size_t>(first) + i]);
-        if (phi == glm::dvec3(0.0)) continue;
+        const glm::vec3 phi = flux[first + i];
+        if (phi == glm::vec3(0.0f)) continue;
         const double y = kLuma.x * phi.x + kLuma.y * phi.y + kLuma.z * phi.z;
-        const glm::dvec4 dir(direction[static_cast<size_t>(first) + i]);
-        entries.push_back(
-            {phi, y > 0 ? glm::dvec3(dir) / y : glm::dvec3(0.0), y > 0 ? dir.w / y : 0.0, i});
+        const glm::dvec4 dir(direction[first + i]);
+        entries.push_back({phi, y > 0 ? glm::vec3(glm::dvec3(dir) / y) : glm::vec3(0.0f),
+                           y > 0 ? static_cast<float>(dir.w / y) : 0.0f, i});
     }
     // Columns in chunks over the cores, each summed over the entries in order
     // (the same bytes for any thread count).
     std::vector<glm::dvec3> sum(k, glm::dvec3(0.0));
     parallelFor(k, 64, [&](size_t begin, size_t end) {
         for (const Entry& e : entries) {
-            const size_t row = t.blockStart[static_cast<size_t>(m)] + e.i * k;
+            const uint16_t* row = &pairs[e.i * k * PackedTransfer::kPerPair];
             for (size_t j = begin; j < end; ++j) {
-                const glm::vec3* g = &t.gradient[(row + j) * 3];
-                const glm::dvec3 d =
-                    glm::dvec3(t.delta[row + j]) + glm::dvec3(t.angular[row + j]) * e.dq;
-                sum[j] += e.phi * glm::dvec3(d.x + glm::dot(glm::dvec3(g[0]), e.s),
-                                             d.y + glm::dot(glm::dvec3(g[1]), e.s),
-                                             d.z + glm::dot(glm::dvec3(g[2]), e.s));
+                const uint16_t* c = row + j * PackedTransfer::kPerPair;
+                glm::vec3 v;
+                for (int ch = 0; ch < 3; ++ch)
+                    v[ch] = fromBfloat16(c[ch]) + fromBfloat16(c[3 + ch]) * e.dq +
+                            fromBfloat16(c[6 + ch]) * e.s.x + fromBfloat16(c[9 + ch]) * e.s.y +
+                            fromBfloat16(c[12 + ch]) * e.s.z;
+                sum[j] += glm::dvec3(e.phi * v);
             }
         }
     });
@@ -389,6 +434,7 @@ void ObjectTransport::install(const FitRequest& request, FrameGraph::Resources& 
     // The patches' texels for the device's sums (CSR by patch).
     const auto patches = static_cast<size_t>(transfer_.patches());
     clearGrids();
+    packed_ = packTransfer(transfer_);
     if (patches == 0) return;  // nothing covered: no correction
     std::vector<int> start(patches + 1, 0), list(tx.size());
     std::vector<size_t> of(tx.size());  // each list entry's SurfaceTexels index
@@ -556,7 +602,7 @@ void ObjectTransport::addPass(FrameGraph& graph, const FrameContext& ctx,
                 corrections_.assign(grids_.size(), {});
                 for (size_t m = 0; m < grids_.size(); ++m)
                     if (!grids_[m].value.empty())
-                        corrections_[m] = patchCorrection(transfer_, static_cast<int>(m), phi, dir,
+                        corrections_[m] = patchCorrection(packed_, static_cast<int>(m), phi, dir,
                                                           exitancePerB_[m]);
                 fluxOf_ = flux.version;
                 ++gridsMade_;

@@ -68,7 +68,17 @@ TransportGrid transportGrid(const PatchTransfer& t, int m);
 // luminance-weighted mean tangential direction of the light entering patch i
 // and q_i − μ its mean square less the walks' (`direction`: xyz and w, their
 // sums over the patch's texels, weighted by their flux's luminance).
-std::vector<glm::vec3> patchCorrection(const PatchTransfer& t, int m,
+// The coefficients it reads, per medium m and patch pair (i, j): Δ, H and
+// the three rows of G (rgb each) in bfloat16, 16 to a pair (one spare):
+// the product reads the whole K×K block every frame the light moves, and
+// memory bounds it, not arithmetic (8.8 MB of floats on the default scene).
+struct PackedTransfer {
+    static constexpr size_t kPerPair = 16;
+    std::vector<int> first, count;             // per medium: its first patch, how many
+    std::vector<std::vector<uint16_t>> pairs;  // per medium: count² × kPerPair
+};
+PackedTransfer packTransfer(const PatchTransfer& t);
+std::vector<glm::vec3> patchCorrection(const PackedTransfer& t, int m,
                                        const std::vector<glm::vec3>& flux,
                                        const std::vector<glm::vec4>& direction,
                                        double exitancePerB);
@@ -147,6 +157,7 @@ class ObjectTransport {
     GrowingBuffer start_, texels_, sampleTexels_, sampleGeometry_, flux_, direction_, lights_,
         etas_;
     PatchTransfer transfer_;
+    PackedTransfer packed_;  // transfer_'s coefficients for the frame's product
     bool fitted_ = false;
     std::vector<TransportGrid> grids_;
     // Grids made before, by their patches' hash (the last kCachedGrids).

@@ -13,6 +13,7 @@
 #include "support/render.h"
 #include "support/scoped_env.h"
 #include "support/scratch_dir.h"
+#include "tsis_shared.h"
 
 namespace tsis {
 namespace {
@@ -22,6 +23,59 @@ RenderOptions transportOptions() {
     opt.transport = Transport::Object;
     opt.method = "pyramid";
     return opt;
+}
+
+// The frame's product reads the coefficients packed in bfloat16: two media
+// of different sizes, every coefficient distinct (a Δ, H or G row read for
+// another, or one pair's for its neighbour's, shows), against the sum in
+// double from the transfer's own accessors; within bfloat16's 2^-8.
+TEST(PatchCorrection, PackedProductMatchesTheTransfersSums) {
+    PatchTransfer t;
+    t.mediumStart = {0, 3, 5};
+    t.blockStart = {0, 9};
+    const size_t pairs = 9 + 4;
+    for (size_t n = 0; n < pairs; ++n) {
+        const auto f = static_cast<float>(n);
+        t.delta.emplace_back(0.01f * (f + 1), 0.02f * (f + 2), -0.005f * (f + 3));
+        t.angular.emplace_back(0.3f - 0.01f * f, 0.1f + 0.02f * f, -0.2f);
+        for (int c = 0; c < 3; ++c)
+            t.gradient.emplace_back(0.05f * float(c + 1) + 0.001f * f, -0.03f * float(c + 1),
+                                    0.02f - 0.004f * f * float(c));
+    }
+    const std::vector<glm::vec3> flux = {
+        {1, 2, 3}, {0, 0, 0}, {0.5f, 0.2f, 0.1f}, {2, 1, 1}, {0.3f, 0.6f, 0.9f}};
+    const std::vector<glm::vec4> direction = {{0.1f, -0.2f, 0.3f, 0.05f},
+                                              {0, 0, 0, 0},
+                                              {-0.04f, 0.01f, 0.02f, -0.01f},
+                                              {0.2f, 0.2f, -0.1f, 0.3f},
+                                              {0.0f, 0.1f, 0.05f, 0.02f}};
+    const PackedTransfer packed = packTransfer(t);
+    const double exitancePerB = 0.8;
+    for (int m = 0; m < 2; ++m) {
+        const std::vector<glm::vec3> got =
+            patchCorrection(packed, m, flux, direction, exitancePerB);
+        const int first = t.mediumStart[size_t(m)], last = t.mediumStart[size_t(m) + 1];
+        ASSERT_EQ(got.size(), size_t(last - first));
+        for (int j = first; j < last; ++j)
+            for (int c = 0; c < 3; ++c) {
+                double want = 0, scale = 0;
+                for (int i = first; i < last; ++i) {
+                    const glm::dvec3 phi(flux[size_t(i)]);
+                    const double y =
+                        TSIS_LUMA_R * phi.x + TSIS_LUMA_G * phi.y + TSIS_LUMA_B * phi.z;
+                    if (y <= 0) continue;
+                    const glm::dvec4 d(direction[size_t(i)]);
+                    const double term =
+                        t.at(m, i, j)[c] + t.angularAt(m, i, j)[c] * d.w / y +
+                        glm::dot(glm::dvec3(t.gradientAt(m, i, j, c)), glm::dvec3(d) / y);
+                    want += phi[c] * term;
+                    scale += std::abs(phi[c]) * (std::abs(t.at(m, i, j)[c]) + 1.0);
+                }
+                EXPECT_NEAR(got[size_t(j - first)][c], want / exitancePerB,
+                            scale / exitancePerB / 256)
+                    << "medium " << m << " patch " << j << " channel " << c;
+            }
+    }
 }
 
 // An empty cache, so that the fit is made (not read from disk).
