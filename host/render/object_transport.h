@@ -62,22 +62,24 @@ struct TransportGrid {
 // at most kMaxGridCells a side).
 TransportGrid transportGrid(const PatchTransfer& t, int m);
 
-// Per patch of medium m, the flux to add as radiosity:
-// Σ_i (Δ(i, j) + G(i, j)·s_i + H(i, j)·(q_i − μ))·flux_i over the exitance per
-// unit B of the medium (the grid divides by the patches' areas), s_i the
-// luminance-weighted mean tangential direction of the light entering patch i
-// and q_i − μ its mean square less the walks' (`direction`: xyz and w, their
-// sums over the patch's texels, weighted by their flux's luminance).
-// The coefficients it reads, per medium m and patch pair (i, j): Δ, H and
-// the three rows of G (rgb each) in bfloat16, 16 to a pair (one spare):
-// the product reads the whole K×K block every frame the light moves, and
-// memory bounds it, not arithmetic (8.8 MB of floats on the default scene).
+// The coefficients patchCorrection reads, per medium m and patch pair (i, j):
+// Δ (rgb), H (rgb) and G's x, y and z components (rgb each) in bfloat16, 16
+// to a pair (one spare). The product reads the whole K×K block every frame
+// the light moves, and memory bounds it, not arithmetic (8.8 MB of floats on
+// the default scene).
 struct PackedTransfer {
     static constexpr size_t kPerPair = 16;
     std::vector<int> first, count;             // per medium: its first patch, how many
     std::vector<std::vector<uint16_t>> pairs;  // per medium: count² × kPerPair
 };
 PackedTransfer packTransfer(const PatchTransfer& t);
+
+// Per patch of medium m, the flux to add as radiosity:
+// Σ_i (Δ(i, j) + G(i, j)·s_i + H(i, j)·(q_i − μ))·flux_i over the exitance per
+// unit B of the medium (the grid divides by the patches' areas), s_i the
+// luminance-weighted mean tangential direction of the light entering patch i
+// and q_i − μ its mean square less the walks' (`direction`: xyz and w, their
+// sums over the patch's texels, weighted by their flux's luminance).
 std::vector<glm::vec3> patchCorrection(const PackedTransfer& t, int m,
                                        const std::vector<glm::vec3>& flux,
                                        const std::vector<glm::vec4>& direction,
