@@ -406,6 +406,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         const float zero[4] = {0, 0, 0, 0};
         glClearBufferfv(GL_COLOR, markIndex, zero);
     }
+
     const unsigned features = (specular ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
     const ShaderProgram& centre =
         centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
@@ -425,7 +426,10 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         bindTexture(*p, "u_envPrefiltered", 8, env.prefiltered);
         bindTexture(*p, "u_envAlbedo", 9, env.albedo);
     }
-    if (direct) setToneMapScale(*displayScale, w, h);
+    if (direct) {
+        setToneMapScale(*displayScale, w, h);
+        copyStaticBackground(*target, directBackgroundKey_);
+    }
     centre.use();
     if (direct) setDisplayUniforms(centre, *displayScale, w, h);
     bindTexture(centre, "u_radiosity", 0, radiosityTexture);
@@ -500,6 +504,33 @@ void CompositePass::setToneMapScale(float scale, int width, int height) {
         setDisplayUniforms(*p, scale, width, height);
 }
 
+bool CompositePass::copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey) {
+    if (background_.mode == 2) return false;
+    const uint64_t key = Hasher(coverageKey_).add(background_.mode).digest();
+    if (key == backgroundKey) return true;
+    // The shader's pass over every uncovered pixel (three sRGB powers each)
+    // cost llvmpipe ~3.5 ms at 512² in each frame whose coverage changed (the
+    // camera moved); a copy of the frame's 1 MiB and a clear cost ~0.1.
+    const int w = target.width(), h = target.height();
+    const uint64_t cacheKey = Hasher(w).add(h).add(background_.mode).digest();
+    if (!backgroundCache_ || cacheKey != backgroundCacheKey_) {
+        ensureTarget(backgroundCache_, w, h, {GL_RGBA8}, false);
+        backgroundCache_->bind();
+        backgroundProgram_.use();
+        glBindVertexArray(emptyVao_);
+        bindBackgroundMap();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        backgroundCacheKey_ = cacheKey;
+        target.bind();
+    }
+    glCopyImageSubData(backgroundCache_->color(0), GL_TEXTURE_2D, 0, 0, 0, 0, target.color(0),
+                       GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 1, zero);
+    backgroundKey = key;
+    return true;
+}
+
 void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
                                       const ShaderProgram& edges, uint64_t& backgroundKey) {
     const int w = target.width(), h = target.height();
@@ -558,6 +589,7 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
     else
         target->bindAndClear();
     copyDepth(*centreTarget_, *target);  // the G-buffer's
+    if (background) copyStaticBackground(*target, backgroundKey_);
     centres.use();
     bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);

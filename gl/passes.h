@@ -303,6 +303,12 @@ class CompositePass {
     void resolveInto(const ShaderProgram& centres, const ShaderProgram* background,
                      const ShaderProgram& edges, std::unique_ptr<RenderTarget>& target,
                      std::vector<GLenum> formats);
+    // Before the centres, into the bound `target` whose coverage changed
+    // since `backgroundKey`: a background that does not follow the camera
+    // (the gradient, transparent) copied whole from backgroundCache_, the
+    // log luminance (attachment 1) cleared; the centres then cover their
+    // pixels. False for the environment's (drawn around the centres).
+    bool copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey);
     // The part after the centres, into the bound target: the background,
     // drawn again only when the coverage changed since `backgroundKey`, and
     // the supersampled pixels' averages.
@@ -325,8 +331,11 @@ class CompositePass {
     // depth the frame G-buffer's, so that only covered pixels are shaded.
     // direct: the display colour, the log luminance and the mask, of
     // radiance() with a display scale.
+    // backgroundCache_: the gradient or transparent background of the whole
+    // frame, drawn once per size and mode (backgroundCacheKey_).
     std::unique_ptr<RenderTarget> centreTarget_, directTarget_, sampleTarget_, frameTarget_,
-        colorTarget_, fxaaTarget_, edgesPacked_;
+        colorTarget_, fxaaTarget_, edgesPacked_, backgroundCache_;
+    uint64_t backgroundCacheKey_ = 0;
     // The log-average's sums, a level each pass; the last one's read.
     std::vector<std::unique_ptr<RenderTarget>> sumTargets_;
     const RenderTarget* logLuminance_ = nullptr;  // the last resolve's, attachment 1
