@@ -32,15 +32,15 @@
 // Bias. None for the paths it samples; it misses light reflected inside the
 // object between entering and its first scattering (Fr ≈ 2–4% of light that
 // crossed the object unscattered, e^(−σt·thickness) of it), entry points
-// the facet iteration does not settle on (`volumetric_nee_unsettled` of
-// `volumetric_nee` in --stats) and, of the facets whose refracted beams
-// overlap at a point, those not connected to the settled one through
-// facets that reach it too (a lens' caustic near the far side: light that
-// crossed the object unscattered). Before every overlapping facet was
-// summed (the focusing of a curved surface), it was 5–8% dark on a 10 mm
-// marble sphere and the tests' cone-lit sphere 9–14%. It excludes, like
-// every method, the specular reflection of the lights at the camera's point
-// and light transmitted without scattering. Both vanish on optically thick
+// neither the facet iteration nor the search around its cycle finds
+// (`volumetric_nee_unsettled` of `volumetric_nee` in --stats) and, of the
+// facets whose refracted beams overlap at a point, those not connected to
+// the settled one through facets that reach it too (a lens' caustic near the
+// far side: light that crossed the object unscattered). Before every
+// overlapping facet was summed (the focusing of a curved surface), it was
+// 5–8% dark on a 10 mm marble sphere and the tests' cone-lit sphere 9–14%.
+// It excludes, like every method, the specular reflection of the lights at
+// the camera's point and light transmitted without scattering. Both vanish on optically thick
 // objects; the semi-infinite slab is exact (volumetric_test.cpp checks it
 // against an independent light tracer and closed forms).
 //

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <unordered_set>
+#include <vector>
 
 #include "physics/fresnel.h"
 #include "volumetric/dielectric.h"
@@ -90,6 +92,33 @@ bool inTriangle(const glm::dvec3& y, const glm::dvec3 (&v)[3], const glm::dvec3&
     return true;
 }
 
+// Where the iteration cycles (a facet's solution lies on another whose
+// solution lies back on the first: at grazing entry, where a small turn of
+// the normal moves the solution far), the facets around `from` are searched
+// breadth-first, nearest rings first, for one whose own solution lies on it
+// and is seen from x.
+constexpr size_t kMaxFacetsRescued = 256;
+bool searchConnection(const Boundary& boundary, const Light& light, double eta, const glm::dvec3& x,
+                      int from, PlaneEntry& entry, SurfaceHit& settled) {
+    std::vector<int> queue{from};
+    std::unordered_set<int> searched{from};
+    for (size_t head = 0; head < queue.size() && queue.size() < kMaxFacetsRescued; ++head)
+        for (int g : boundary.facetNeighbours(queue[head])) {
+            if (!searched.insert(g).second) continue;
+            queue.push_back(g);
+            glm::dvec3 v[3], n;
+            if (!boundary.facet(g, v, n)) continue;
+            SurfaceHit plane;
+            plane.position = v[0];
+            plane.normal = n;
+            plane.facet = g;
+            if (entryOnPlane(light, eta, x, v[0], n, entry) && inTriangle(entry.y, v, n) &&
+                leavesAt(boundary, x, entry, plane, settled))
+                return true;
+        }
+    return false;
+}
+
 }  // namespace
 
 double solveRefractionSine(double h1, double h2, double d, double eta) {
@@ -149,7 +178,8 @@ LightPath refractedLights(const Boundary& boundary, const Light& light, double e
             return LightPath::Unsettled;
         facet = next;
     }
-    if (!found) return LightPath::Unsettled;
+    if (!found && !searchConnection(boundary, light, eta, x, facet.facet, entry, settled))
+        return LightPath::Unsettled;
     if (lightAlong(boundary, light, eta, x, entry, settled, out.paths[0])) out.count = 1;
 
     // Other facets whose refracted beams reach x too: on a convex part the

@@ -10,8 +10,11 @@
 // straight line towards the light. On a mesh this is exact for flat facets
 // (the transport of the faceted mesh) once every facet whose beam covers x is
 // found: from the settled facet the search walks the facets around it (below).
-// It misses entry points whose iteration does not settle within a few facets
-// and light reflected inside before x: see method_volumetric.h.
+// Where the iteration cycles between facets (behind thin, curved parts lit
+// near grazing), the 256 facets around the last one are searched for one that
+// connects. It misses entry points that no iteration reaches nor search finds
+// (a facet farther away, or none: a gap between facets' beams) and light
+// reflected inside before x: see method_volumetric.h.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -187,5 +187,39 @@ TEST(RefractedLight, FindsEveryFacetWhoseBeamReachesThePoint) {
     EXPECT_GT(overlapping, 20);  // the case is there
 }
 
+TEST(RefractedLight, ReachesThePointWhereTheIterationCycles) {
+    // Behind thin, curved parts lit near grazing, the iteration from the
+    // straight line can cycle between facets whose solutions lie on each
+    // other (5 % of the default scene's next-event estimations, 22 % of cow's):
+    // where a facet nearby connects, the connection must be found, not
+    // reported unsettled (light missed: the volumetric truth too dark there).
+    Mesh mesh = builtinDefault();
+    normalizeMesh(mesh, 10.0);
+    const MeshBoundary boundary(mesh);
+    Light light;
+    light.vec = glm::vec3(-5.85f, 9.75f, -13.0f);
+    light.rgb = glm::vec3(300.0f);
+    int connected = 0, missed = 0;
+    for (size_t k = 0; k < 600; ++k) {
+        // Points 0.05–1.5 mm below facets spread over the mesh.
+        const int f = static_cast<int>((k * 7919) % mesh.triangles.size());
+        glm::dvec3 v[3], n;
+        boundary.facet(f, v, n);
+        const glm::dvec3 x = (v[0] + v[1] + v[2]) / 3.0 -
+                             n * (0.05 + 1.45 * static_cast<double>((k * 37) % 100) / 100.0);
+        SurfaceHit above;
+        if (!boundary.intersect(x, n, kInfinity, above) || above.facet != f) continue;
+        const double brute = irradianceThroughEveryFacet(mesh, boundary, light, 1.3, x);
+        if (brute <= 0) continue;
+        ++connected;
+        RefractedLights in;
+        missed += refractedLights(boundary, light, 1.3, x, in) == LightPath::Unsettled;
+    }
+    EXPECT_GT(connected, 300);  // the case is there
+    // 8 of 415 before the search around the cycle; 1 now (its facet beyond
+    // the 256 searched).
+    EXPECT_LE(missed, 2) << "of " << connected << " points some facet connects to";
+}
+
 }  // namespace
 }  // namespace tsis
