@@ -514,6 +514,9 @@ bool CompositePass::copyStaticBackground(RenderTarget& target, uint64_t& backgro
     const int w = target.width(), h = target.height();
     const uint64_t cacheKey = Hasher(w).add(h).add(background_.mode).digest();
     if (!backgroundCache_ || cacheKey != backgroundCacheKey_) {
+        // A new target's texture binds on the active unit: unit 0, which the
+        // centres bind again, not the environment's tables just bound.
+        glActiveTexture(GL_TEXTURE0);
         ensureTarget(backgroundCache_, w, h, {GL_RGBA8}, false);
         backgroundCache_->bind();
         backgroundProgram_.use();
