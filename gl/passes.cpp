@@ -406,7 +406,6 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         const float zero[4] = {0, 0, 0, 0};
         glClearBufferfv(GL_COLOR, markIndex, zero);
     }
-
     const unsigned features = (specular ? 1u : 0u) | (env.prefiltered != 0 ? 2u : 0u);
     const ShaderProgram& centre =
         centrePrograms_.get(features | (findEdges ? 4u : 0u) | (direct ? 8u : 0u));
@@ -470,7 +469,7 @@ void CompositePass::radiance(const float* radiosityRGBA, GLuint radiosityTexture
         target->bind();
         const GLenum drawn[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE};
         glDrawBuffers(3, drawn);
-        drawAroundCentres(*target, &backgroundProgram_, toneMapEdgesProgram_, directBackgroundKey_);
+        drawAroundCentres(*target, &backgroundProgram_, toneMapEdgesProgram_);
         const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
         glDrawBuffers(3, all);
         logLuminance_ = display_ = target.get();
@@ -504,10 +503,9 @@ void CompositePass::setToneMapScale(float scale, int width, int height) {
         setDisplayUniforms(*p, scale, width, height);
 }
 
-bool CompositePass::copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey) {
-    if (background_.mode == 2) return false;
+void CompositePass::copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey) {
     const uint64_t key = Hasher(coverageKey_).add(background_.mode).digest();
-    if (key == backgroundKey) return true;
+    if (background_.mode == 2 || key == backgroundKey) return;
     // The shader's pass over every uncovered pixel (three sRGB powers each)
     // cost llvmpipe ~3.5 ms at 512² in each frame whose coverage changed (the
     // camera moved); a copy of the frame's 1 MiB and a clear cost ~0.1.
@@ -531,22 +529,18 @@ bool CompositePass::copyStaticBackground(RenderTarget& target, uint64_t& backgro
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 1, zero);
     backgroundKey = key;
-    return true;
 }
 
 void CompositePass::drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
-                                      const ShaderProgram& edges, uint64_t& backgroundKey) {
+                                      const ShaderProgram& edges) {
     const int w = target.width(), h = target.height();
     glBindVertexArray(emptyVao_);
     bindBackgroundMap();
-    // The background stays from the frame before while the coverage and the
-    // supersampled pixels do (their averages below are stored over them again).
-    // The environment's follows the camera and the exposure: drawn always.
-    const uint64_t key = Hasher(coverageKey_).add(background_.mode).digest();
-    if (background && (key != backgroundKey || background_.mode == 2)) {
+    // The environment's background follows the camera and the exposure: drawn
+    // every frame (the others were copied before the centres).
+    if (background && background_.mode == 2) {
         background->use();
         drawFullScreenWhere(GL_EQUAL);
-        backgroundKey = key;
     }
     // At 1× no pixel is marked and the samples are never read. Packed, one
     // fragment a supersampled pixel, each stored at its pixel of `target`'s
@@ -597,7 +591,7 @@ void CompositePass::resolveInto(const ShaderProgram& centres, const ShaderProgra
     bindTexture(centres, "u_centre", 0, centreTarget_->color(0));
     glBindVertexArray(emptyVao_);
     drawFullScreenWhere(GL_GREATER);
-    drawAroundCentres(*target, background, edges, backgroundKey_);
+    drawAroundCentres(*target, background, edges);
     logLuminance_ = target.get();
 }
 

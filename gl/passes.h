@@ -307,13 +307,13 @@ class CompositePass {
     // since `backgroundKey`: a background that does not follow the camera
     // (the gradient, transparent) copied whole from backgroundCache_, the
     // log luminance (attachment 1) cleared; the centres then cover their
-    // pixels. False for the environment's (drawn around the centres).
-    bool copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey);
-    // The part after the centres, into the bound target: the background,
-    // drawn again only when the coverage changed since `backgroundKey`, and
-    // the supersampled pixels' averages.
+    // pixels, and the background stays while the coverage does. Nothing for
+    // the environment's (drawAroundCentres draws it).
+    void copyStaticBackground(RenderTarget& target, uint64_t& backgroundKey);
+    // The part after the centres, into the bound target: the environment's
+    // background, and the supersampled pixels' averages.
     void drawAroundCentres(RenderTarget& target, const ShaderProgram* background,
-                           const ShaderProgram& edges, uint64_t& backgroundKey);
+                           const ShaderProgram& edges);
     void setToneMapScale(float scale, int width, int height);
     // `program` once per listed edge pixel (its u_edgePixels bound, then
     // `bindInputs`): a full-screen pass over edgesPacked_ (one texel a pixel,
@@ -356,7 +356,7 @@ class CompositePass {
     std::unique_ptr<FloatTexture> edgePixels_;
     uint64_t edgesKey_ = 0;
     // The G-buffer's coverage and supersampled pixels this frame (edgesKey_'s
-    // key), and those the tone map's background was drawn for.
+    // key), and those the tone map's background was copied for.
     uint64_t coverageKey_ = 0, backgroundKey_ = 0, directBackgroundKey_ = 0;
     // The marks to list: `target`'s attachment `index`.
     void updateEdgePoints(uint64_t key, const RenderTarget& target, int index);

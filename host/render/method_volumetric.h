@@ -40,9 +40,10 @@
 // overlapping facet was summed (the focusing of a curved surface), it was
 // 5–8% dark on a 10 mm marble sphere and the tests' cone-lit sphere 9–14%.
 // It excludes, like every method, the specular reflection of the lights at
-// the camera's point and light transmitted without scattering. Both vanish on optically thick
-// objects; the semi-infinite slab is exact (volumetric_test.cpp checks it
-// against an independent light tracer and closed forms).
+// the camera's point and light transmitted without scattering. Both vanish
+// on optically thick objects; the semi-infinite slab is exact
+// (volumetric_test.cpp checks it against an independent light tracer and
+// closed forms).
 //
 // Variance falls as 1/√spp (tested). The output: B_eq = π·L / (Ft(η, cos θo)·s)
 // with cos θo at the interpolated normal and s the --exit term's scale, the

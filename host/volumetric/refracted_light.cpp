@@ -92,6 +92,20 @@ bool inTriangle(const glm::dvec3& y, const glm::dvec3 (&v)[3], const glm::dvec3&
     return true;
 }
 
+// Whether facet g's own plane solution lies on it and is seen from x: its
+// plane (`plane`), the solution (`entry`) and where the ray towards it
+// leaves (`hit`).
+bool facetConnects(const Boundary& boundary, const Light& light, double eta, const glm::dvec3& x,
+                   int g, SurfaceHit& plane, PlaneEntry& entry, SurfaceHit& hit) {
+    glm::dvec3 v[3], n;
+    if (!boundary.facet(g, v, n)) return false;
+    plane.position = v[0];
+    plane.normal = n;
+    plane.facet = g;
+    return entryOnPlane(light, eta, x, v[0], n, entry) && inTriangle(entry.y, v, n) &&
+           leavesAt(boundary, x, entry, plane, hit);
+}
+
 // Where the iteration cycles (a facet's solution lies on another whose
 // solution lies back on the first: at grazing entry, where a small turn of
 // the normal moves the solution far), the facets around `from` are searched
@@ -106,15 +120,8 @@ bool searchConnection(const Boundary& boundary, const Light& light, double eta, 
         for (int g : boundary.facetNeighbours(queue[head])) {
             if (!searched.insert(g).second) continue;
             queue.push_back(g);
-            glm::dvec3 v[3], n;
-            if (!boundary.facet(g, v, n)) continue;
             SurfaceHit plane;
-            plane.position = v[0];
-            plane.normal = n;
-            plane.facet = g;
-            if (entryOnPlane(light, eta, x, v[0], n, entry) && inTriangle(entry.y, v, n) &&
-                leavesAt(boundary, x, entry, plane, settled))
-                return true;
+            if (facetConnects(boundary, light, eta, x, g, plane, entry, settled)) return true;
         }
     return false;
 }
@@ -206,16 +213,9 @@ LightPath refractedLights(const Boundary& boundary, const Light& light, double e
             if (seen(g)) continue;
             if (nSearched == kMaxFacetsSearched) return LightPath::Reached;
             searched[nSearched++] = g;
-            boundary.facet(g, v, n);
-            SurfaceHit plane;
-            plane.position = v[0];
-            plane.normal = n;
-            plane.facet = g;
+            SurfaceHit plane, hit;
             PlaneEntry e;
-            SurfaceHit hit;
-            const bool connects = entryOnPlane(light, eta, x, v[0], n, e) &&
-                                  inTriangle(e.y, v, n) && leavesAt(boundary, x, e, plane, hit);
-            if (!connects) continue;
+            if (!facetConnects(boundary, light, eta, x, g, plane, e, hit)) continue;
             if (tail < kMaxFacetsSearched) queue[tail++] = g;
             // Coplanar facets share one solution: one connection per plane.
             if (std::any_of(planes, planes + nPlanes,
