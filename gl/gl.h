@@ -16,6 +16,7 @@
 #define glBindSampler (::tsis::tCurrentGl->BindSampler)
 #define glBindTexture (::tsis::tCurrentGl->BindTexture)
 #define glBindVertexArray (::tsis::tCurrentGl->BindVertexArray)
+#define glBlitFramebuffer (::tsis::tCurrentGl->BlitFramebuffer)
 #define glBufferData (::tsis::tCurrentGl->BufferData)
 #define glBufferSubData (::tsis::tCurrentGl->BufferSubData)
 #define glCheckFramebufferStatus (::tsis::tCurrentGl->CheckFramebufferStatus)

@@ -22,6 +22,7 @@ namespace tsis {
     X(BindSampler, BINDSAMPLER)                         \
     X(BindTexture, BINDTEXTURE)                         \
     X(BindVertexArray, BINDVERTEXARRAY)                 \
+    X(BlitFramebuffer, BLITFRAMEBUFFER)                 \
     X(BufferData, BUFFERDATA)                           \
     X(BufferSubData, BUFFERSUBDATA)                     \
     X(CheckFramebufferStatus, CHECKFRAMEBUFFERSTATUS)   \

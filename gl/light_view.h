@@ -51,6 +51,7 @@ class ShadowMapArray {
     // shape; true then (every layer to draw again).
     bool ensure(int resolution, int layers);
     GLuint id() const { return id_; }
+    int resolution() const { return resolution_; }
 
   private:
     GLuint id_ = 0;

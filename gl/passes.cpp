@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 
 #include "gl/gl_context.h"
 #include "util/error.h"
@@ -20,10 +21,24 @@ constexpr int kBackgroundUnit = 12;
 // The supersampled pixels' slots a row (CompositePass::edgePixels_).
 constexpr int kEdgeColumns = 64;
 
-void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex) {
+void bindTexture(const ShaderProgram& p, const char* name, int unit, GLuint tex,
+                 GLenum target = GL_TEXTURE_2D) {
     p.set(name, unit);
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D, tex);
+    glBindTexture(target, tex);
+}
+
+// A sampler that reads depth as a value (a RenderTarget's depth and the
+// shadow maps compare, as a shadow map does), texel by texel.
+GLuint rawDepthSampler() {
+    GLuint sampler = 0;
+    glGenSamplers(1, &sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return sampler;
 }
 
 // (Re)creates a target when missing or of another size.
@@ -170,7 +185,48 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
         "LightViewPass");
 }
 
-ScatterViewPass::ScatterViewPass() : program_("mesh.vert", "scatter_view.frag") {}
+ScatterViewPass::ScatterViewPass()
+    : program_("mesh.vert", "scatter_view.frag"),
+      deriveProgram_("fullscreen.vert", "scatter_from_depth.frag") {
+    glGenVertexArrays(1, &emptyVao_);
+    glGenFramebuffers(1, &readFramebuffer_);
+    depthSampler_ = rawDepthSampler();
+}
+
+ScatterViewPass::~ScatterViewPass() {
+    if (readFramebuffer_) glDeleteFramebuffers(1, &readFramebuffer_);
+    if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
+    if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
+}
+
+void ScatterViewPass::derive(const ShadowMapArray& shadows, const std::vector<LightView>& views,
+                             float tag, const std::vector<size_t>& changed) {
+    deriveProgram_.use();
+    bindTexture(deriveProgram_, "u_depth", 0, shadows.id(), GL_TEXTURE_2D_ARRAY);
+    glBindSampler(0, depthSampler_);
+    deriveProgram_.set("u_tag", tag);
+    glBindVertexArray(emptyVao_);
+    for (size_t i : changed) {
+        const LightView& view = views[i];
+        view.target->bindAndClear();
+        // The map's depth at this view's texels as the target's: the depth
+        // test then drops llvmpipe's blocks of texels that hold no surface
+        // before the shader (drawFullScreenWhere).
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer_);
+        glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadows.id(), 0,
+                                  static_cast<GLint>(i));
+        const int from = shadows.resolution(), to = view.resolution;
+        glBlitFramebuffer(0, 0, from, from, 0, 0, to, to, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        deriveProgram_.set("u_layer", static_cast<int>(i));
+        deriveProgram_.set("u_lightToWorld", glm::inverse(view.viewProj));
+        deriveProgram_.set("u_lightAt", view.light.vec);
+        deriveProgram_.set("u_lightPoint", view.light.type == Light::Type::Point);
+        deriveProgram_.set("u_resolution", view.resolution);
+        drawFullScreenWhere(GL_GREATER);
+    }
+    glBindSampler(0, 0);
+    checkGl("ScatterViewPass::derive");
+}
 
 void ScatterViewPass::draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,
                            const ShaderProgram& program, GLuint framebuffer,
@@ -297,11 +353,7 @@ CompositePass::CompositePass()
       reduceProgram_("fullscreen.vert", "reduce.frag"),
       fxaaProgram_("fullscreen.vert", "fxaa.frag") {
     glGenVertexArrays(1, &emptyVao_);
-    // Depth read as a value (RenderTarget's depth compares, as a shadow map).
-    glGenSamplers(1, &depthSampler_);
-    glSamplerParameteri(depthSampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(depthSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(depthSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    depthSampler_ = rawDepthSampler();
     // The display read between texels (fxaa.frag).
     glGenSamplers(1, &linearSampler_);
     glSamplerParameteri(linearSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -65,6 +65,9 @@ class LightViewPass {
 class ScatterViewPass {
   public:
     ScatterViewPass();
+    ~ScatterViewPass();
+    ScatterViewPass(const ScatterViewPass&) = delete;
+    ScatterViewPass& operator=(const ScatterViewPass&) = delete;
     // As LightViewPass's: every other view on `worker`'s thread.
     void setWorker(GlWorker* worker, size_t minTriangles = kWorkerMinTriangles) {
         side_.setWorker(worker, minTriangles);
@@ -72,12 +75,18 @@ class ScatterViewPass {
     // Draws views[i] for each i in `changed`.
     void run(const GpuMesh& mesh, const std::vector<LightView>& views, const MaterialTables& media,
              const std::vector<size_t>& changed);
+    // The same views made from the lights' shadow maps (layer i for view i),
+    // no draw of the mesh: the facets' normals (not a normal map's) and one
+    // medium, tag `tag`, for every surface (scatter_from_depth.frag).
+    void derive(const ShadowMapArray& shadows, const std::vector<LightView>& views, float tag,
+                const std::vector<size_t>& changed);
 
   private:
     void draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,
               const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray) const;
 
-    ShaderProgram program_;
+    ShaderProgram program_, deriveProgram_;
+    GLuint emptyVao_ = 0, depthSampler_ = 0, readFramebuffer_ = 0;
     WorkerSide side_{"mesh.vert", "scatter_view.frag"};
 };
 

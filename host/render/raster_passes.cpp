@@ -223,29 +223,40 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             "gl_scatter_views",
             [&](FrameGraph::Builder& b) {
                 b.read(h.mesh);
+                b.read(h.lights);
                 b.write(h.scatterViews);
             },
             [this, &ctx, h](FrameGraph::Resources& res) {
+                // From the shadow maps where they hold what a draw would:
+                // one medium, no normal map, the mesh's own depth.
+                const bool derived =
+                    ctx.media->etaOfMedium.size() == 1 && ctx.surface->normal.empty() && !lodMesh_;
                 // As the light views: each redrawn when its own key changed.
                 const std::vector<Light>& lights = ctx.scene->lights;
                 const int resolution = scatterViewResolution(ctx);
+                const uint64_t source =
+                    Hasher(ctx.surface->key).add(derived ? ctx.lightResolution : 0).digest();
                 scatterViews_.resize(lights.size());
                 const std::vector<size_t> changed = changedViews(
                     lights.size(), scatterKeys_,
                     [&](size_t i) {
-                        return lightViewKey(lights[i], meshHash_, resolution, true,
-                                            ctx.surface->key, 0);
+                        return lightViewKey(lights[i], meshHash_, resolution, true, source, 0);
                     },
                     [&](size_t i) {
                         updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius,
                                           resolution);
                     });
                 if (!changed.empty()) {
-                    scatterPass_.run(*res.read(h.mesh), scatterViews_, materials_, changed);
+                    if (derived)
+                        scatterPass_.derive(*res.read(h.lights).shadows, scatterViews_, 1.0f,
+                                            changed);
+                    else
+                        scatterPass_.run(*res.read(h.mesh), scatterViews_, materials_, changed);
                     glFinish();
                     ++scatterVersion_;
                 }
                 res.stats().set("scatter_view_resolution", resolution);
+                res.stats().set("scatter_views_derived", derived ? 1 : 0);
                 res.write(h.scatterViews) = {&scatterViews_, nullptr, scatterVersion_};
             });
     }
