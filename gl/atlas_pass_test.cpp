@@ -8,6 +8,7 @@
 #include "mesh/builtin.h"
 #include "mesh/uv_texels.h"
 #include "support/flux_reference.h"
+#include "support/plain_materials.h"
 
 namespace tsis {
 namespace {
@@ -40,13 +41,7 @@ class AtlasPassTest : public ::testing::Test {
         double got = channelSum(atlas.target(), 1);
         return std::abs(got - expected) / expected;
     }
-    // η = 1.3 everywhere, no albedo atlas.
-    const MaterialTables& materials() {
-        tables.updateMedia({{1.3f, 1.0f}});
-        tables.updateAlbedo({}, 0, 0);
-        tables.updateSurface({}, {}, 0, 0);
-        return tables;
-    }
+    const MaterialTables& materials() { return test::plainMaterials(tables, 1.3f); }
     GlContext gl;
     Mesh mesh;
     MaterialTables tables;

@@ -17,6 +17,7 @@
 #include "gl/passes.h"
 #include "mesh/builtin.h"
 #include "mesh/mesh.h"
+#include "support/plain_materials.h"
 
 namespace tsis {
 namespace {
@@ -74,12 +75,7 @@ class ScatterViewTest : public ::testing::Test {
         a.angle95 = percentile(angle, 0.95);
         return a;
     }
-    const MaterialTables& materials() {
-        tables.updateMedia({{1.4f, 1.0f}});
-        tables.updateAlbedo({}, 0, 0);
-        tables.updateSurface({}, {}, 0, 0);
-        return tables;
-    }
+    const MaterialTables& materials() { return test::plainMaterials(tables, 1.4f); }
     GlContext gl;
     MaterialTables tables;
 };
