@@ -219,8 +219,6 @@ void ScatterViewPass::derive(const ShadowMapArray& shadows, const std::vector<Li
         glBlitFramebuffer(0, 0, from, from, 0, 0, to, to, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         deriveProgram_.set("u_layer", static_cast<int>(i));
         deriveProgram_.set("u_lightToWorld", glm::inverse(view.viewProj));
-        deriveProgram_.set("u_lightAt", view.light.vec);
-        deriveProgram_.set("u_lightPoint", view.light.type == Light::Type::Point);
         deriveProgram_.set("u_resolution", view.resolution);
         drawFullScreenWhere(GL_GREATER);
     }

@@ -76,8 +76,9 @@ class ScatterViewPass {
     void run(const GpuMesh& mesh, const std::vector<LightView>& views, const MaterialTables& media,
              const std::vector<size_t>& changed);
     // The same views made from the lights' shadow maps (layer i for view i),
-    // no draw of the mesh: the facets' normals (not a normal map's) and one
-    // medium, tag `tag`, for every surface (scatter_from_depth.frag).
+    // no draw of the mesh: the facets' normals (not a normal map's), facing
+    // the light (a closed, outward mesh's), and one medium, tag `tag`, for
+    // every surface (scatter_from_depth.frag).
     void derive(const ShadowMapArray& shadows, const std::vector<LightView>& views, float tag,
                 const std::vector<size_t>& changed);
 

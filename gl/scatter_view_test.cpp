@@ -4,7 +4,9 @@
 // normals against the interpolated ones, the same normals, over two meshes
 // (a round one; the default scene's thick body and thin parts, which occlude
 // themselves from the light) and point and directional lights from several
-// sides.
+// sides. Both are closed solids, so the light sees only faces towards it,
+// derive's premise (their seams read open to closedOutward here, so the
+// drawn views cull nothing).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -4,13 +4,14 @@
 // surface point unprojected from the depth of the shadow texel under its
 // centre, and the facet's normal from the neighbouring depths, one-sided
 // towards the neighbour whose depth continues the surface's (a silhouette
-// or an occluding edge on the other side), turned to the light;
-// w = u_tag. (0) where the map holds no surface.
+// or an occluding edge on the other side); w = u_tag. (0) where the map
+// holds no surface. The cross product of the steps along the view's x and y
+// faces the light (clip space is left-handed): the map's surface is the one
+// the light sees, so its normal is never turned away, as a drawn view's
+// would be on a back face: only closed, outward meshes are made this way.
 uniform sampler2DArray u_depth;  // raw depth: a sampler without the compare
 uniform int u_layer;
 uniform mat4 u_lightToWorld;
-uniform vec3 u_lightAt;  // a point light's position, a directional one's direction
-uniform bool u_lightPoint;
 uniform float u_tag;
 uniform int u_resolution;  // this view's texels a side
 layout(location = 0) out vec4 o_position;
@@ -42,7 +43,6 @@ void main() {
     vec3 p = unproject(t, z);
     vec3 n = normalize(cross(tangent(t, vec2(1.0, 0.0), z, up.z, down.x, p),
                              tangent(t, vec2(0.0, 1.0), z, up.x, down.z, p)));
-    vec3 toLight = u_lightPoint ? u_lightAt - p : -u_lightAt;
     o_position = surface ? vec4(p, 1.0) : vec4(0.0);
-    o_normal = surface ? vec4(dot(n, toLight) < 0.0 ? -n : n, u_tag) : vec4(0.0);
+    o_normal = surface ? vec4(n, u_tag) : vec4(0.0);
 }

@@ -228,9 +228,11 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
             },
             [this, &ctx, h](FrameGraph::Resources& res) {
                 // From the shadow maps where they hold what a draw would:
-                // one medium, no normal map, the mesh's own depth.
-                const bool derived =
-                    ctx.media->etaOfMedium.size() == 1 && ctx.surface->normal.empty() && !lodMesh_;
+                // one medium, no normal map, the mesh's own depth, and only
+                // faces towards the light (a closed, outward mesh).
+                const bool derived = ctx.media->etaOfMedium.size() == 1 &&
+                                     ctx.surface->normal.empty() && !lodMesh_ &&
+                                     res.read(h.mesh)->closedOutward();
                 // As the light views: each redrawn when its own key changed.
                 const std::vector<Light>& lights = ctx.scene->lights;
                 const int resolution = scatterViewResolution(ctx);
