@@ -185,45 +185,26 @@ size_t LightViewPass::run(const GpuMesh& mesh, std::vector<LightView>& lights,
         "LightViewPass");
 }
 
-ScatterViewPass::ScatterViewPass()
-    : program_("mesh.vert", "scatter_view.frag"),
-      deriveProgram_("fullscreen.vert", "scatter_from_depth.frag") {
-    glGenVertexArrays(1, &emptyVao_);
+ScatterViewPass::ScatterViewPass() : program_("mesh.vert", "scatter_view.frag") {
     glGenFramebuffers(1, &readFramebuffer_);
-    depthSampler_ = rawDepthSampler();
 }
 
 ScatterViewPass::~ScatterViewPass() {
     if (readFramebuffer_) glDeleteFramebuffers(1, &readFramebuffer_);
-    if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
-    if (depthSampler_) glDeleteSamplers(1, &depthSampler_);
 }
 
-void ScatterViewPass::derive(const ShadowMapArray& shadows, const std::vector<LightView>& views,
-                             float tag, const std::vector<size_t>& changed) {
-    deriveProgram_.use();
-    bindTexture(deriveProgram_, "u_depth", 0, shadows.id(), GL_TEXTURE_2D_ARRAY);
-    glBindSampler(0, depthSampler_);
-    deriveProgram_.set("u_tag", tag);
-    glBindVertexArray(emptyVao_);
+void ScatterViewPass::copyDepth(const ShadowMapArray& shadows, const std::vector<LightView>& views,
+                                const std::vector<size_t>& changed) {
     for (size_t i : changed) {
         const LightView& view = views[i];
-        view.target->bindAndClear();
-        // The map's depth at this view's texels as the target's: the depth
-        // test then drops llvmpipe's blocks of texels that hold no surface
-        // before the shader (drawFullScreenWhere).
+        view.target->bind();  // the blit writes every texel: no clear
         glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer_);
         glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadows.id(), 0,
                                   static_cast<GLint>(i));
         const int from = shadows.resolution(), to = view.resolution;
         glBlitFramebuffer(0, 0, from, from, 0, 0, to, to, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-        deriveProgram_.set("u_layer", static_cast<int>(i));
-        deriveProgram_.set("u_lightToWorld", glm::inverse(view.viewProj));
-        deriveProgram_.set("u_resolution", view.resolution);
-        drawFullScreenWhere(GL_GREATER);
     }
-    glBindSampler(0, 0);
-    checkGl("ScatterViewPass::derive");
+    checkGl("ScatterViewPass::copyDepth");
 }
 
 void ScatterViewPass::draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,

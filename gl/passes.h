@@ -75,19 +75,20 @@ class ScatterViewPass {
     // Draws views[i] for each i in `changed`.
     void run(const GpuMesh& mesh, const std::vector<LightView>& views, const MaterialTables& media,
              const std::vector<size_t>& changed);
-    // The same views made from the lights' shadow maps (layer i for view i),
-    // no draw of the mesh: the facets' normals (not a normal map's), facing
-    // the light (a closed, outward mesh's), and one medium, tag `tag`, for
-    // every surface (scatter_from_depth.frag).
-    void derive(const ShadowMapArray& shadows, const std::vector<LightView>& views, float tag,
-                const std::vector<size_t>& changed);
+    // In place of a draw: each view's depth, the map's (layer i for view i)
+    // at the view's texels. The term's kernel makes the surface point and
+    // the facet's normal from it (kernels/single_scatter.cl), where the map
+    // holds what a draw would: one medium, no normal map, a closed, outward
+    // mesh (render/raster_passes.cpp).
+    void copyDepth(const ShadowMapArray& shadows, const std::vector<LightView>& views,
+                   const std::vector<size_t>& changed);
 
   private:
     void draw(const GpuMesh& mesh, const LightView& view, const MaterialTables& media,
               const ShaderProgram& program, GLuint framebuffer, GLuint vertexArray) const;
 
-    ShaderProgram program_, deriveProgram_;
-    GLuint emptyVao_ = 0, depthSampler_ = 0, readFramebuffer_ = 0;
+    ShaderProgram program_;
+    GLuint readFramebuffer_ = 0;
     WorkerSide side_{"mesh.vert", "scatter_view.frag"};
 };
 

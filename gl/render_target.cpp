@@ -113,6 +113,15 @@ std::vector<float> RenderTarget::readRGBA(int i) const {
     return out;
 }
 
+std::vector<float> RenderTarget::readDepth() const {
+    std::vector<float> out(static_cast<size_t>(width_) * height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+    checkGl("RenderTarget::readDepth");
+    return out;
+}
+
 std::vector<float> RenderTarget::readRG(int i) const {
     std::vector<float> out(static_cast<size_t>(width_) * height_ * 2);
     read(i, GL_RG, GL_FLOAT, out.data());

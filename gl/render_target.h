@@ -43,6 +43,9 @@ class RenderTarget {
     void readRG(int i, float* out) const { read(i, GL_RG, GL_FLOAT, out); }
     // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
     std::vector<unsigned char> readRGBA8(int i) const;
+    // The depth texture as window depths in [0, 1] (1: nothing drawn), GL
+    // order; a target made with depth only.
+    std::vector<float> readDepth() const;
 
     size_t bytesPerTexel(int i) const;
 

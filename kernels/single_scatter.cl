@@ -21,22 +21,63 @@
 #include "light_map.h"
 #include "single_scatter_shared.h"
 
+#ifdef TSIS_SCATTER_FROM_DEPTH
+/* View texel (x, y) at depth z (window, [0, 1]) back in the world. */
+static inline float3 tsis_unproject(const float16 to_world, const int res, const float x,
+                                    const float y, const float z) {
+    const float4 c = (float4)((x + 0.5f) / (float)res * 2.0f - 1.0f,
+                              (y + 0.5f) / (float)res * 2.0f - 1.0f, z * 2.0f - 1.0f, 1.0f);
+    const float4 w =
+        to_world.s0123 * c.x + to_world.s4567 * c.y + to_world.s89ab * c.z + to_world.scdef;
+    return w.xyz / w.w;
+}
+
+/* The step from texel (x, y) at p to its neighbour d (one of the axes) or
+ * -d: towards the side whose depth is nearer z and holds a surface. */
+static inline float3 tsis_depth_tangent(const float16 to_world, const int res, const float x,
+                                        const float y, const float2 d, const float z,
+                                        const float zp, const float zm, const float3 p) {
+    const float side = zp < 1.0f && (!(zm < 1.0f) || fabs(zp - z) <= fabs(z - zm)) ? 1.0f : -1.0f;
+    return side *
+           (tsis_unproject(to_world, res, x + side * d.x, y + side * d.y, side > 0.0f ? zp : zm) -
+            p);
+}
+#endif
+
 /* The surface point the light sees at p's texel and its normal (false: no
- * surface of medium `tag` there: the normal map's w is the tag, as the flux
- * map's); *clip_w: p's clip w. */
-static inline bool tsis_scatter_surface(const TsisLightMapInfo* map,
-                                        const __global float4* position,
-                                        const __global float4* normal, const float tag,
-                                        const float3 p, float3* y, float3* n, float* clip_w) {
+ * surface of medium `tag` there); *clip_w: p's clip w. A drawn view holds
+ * res^2 positions then res^2 normals (w the medium tag, as the flux map's);
+ * one made from the shadow map (TSIS_SCATTER_FROM_DEPTH, one medium) its
+ * depth only: the point unprojected, the facet's normal from the
+ * neighbours' depths, one-sided towards the neighbour that continues the
+ * surface (render/single_scatter.h depthViewTexel, in double). */
+static inline bool tsis_scatter_surface(const TsisLightMapInfo* map, const __global float* view,
+                                        const float16 to_world, const float tag, const float3 p,
+                                        float3* y, float3* n, float* clip_w) {
     const float3 q = tsis_light_project(map, p);
     const int t = tsis_light_texel(map, q.x, q.y);
     if (t < 0) return false;
-    const float4 nt = normal[t];
-    if (nt.w != tag) return false;
-    *y = position[t].xyz;
-    *n = normalize(nt.xyz);
     *clip_w = q.z;
+#ifdef TSIS_SCATTER_FROM_DEPTH
+    const int res = map->res;
+    const int tx = t % res, ty = t / res;
+    const float z = view[t];
+    const float zxp = tx + 1 < res ? view[t + 1] : 1.0f, zxm = tx > 0 ? view[t - 1] : 1.0f;
+    const float zyp = ty + 1 < res ? view[t + res] : 1.0f, zym = ty > 0 ? view[t - res] : 1.0f;
+    if (!(z < 1.0f && (zxp < 1.0f || zxm < 1.0f) && (zyp < 1.0f || zym < 1.0f))) return false;
+    const float fx = (float)tx, fy = (float)ty;
+    *y = tsis_unproject(to_world, res, fx, fy, z);
+    *n = normalize(
+        cross(tsis_depth_tangent(to_world, res, fx, fy, (float2)(1.0f, 0.0f), z, zxp, zxm, *y),
+              tsis_depth_tangent(to_world, res, fx, fy, (float2)(0.0f, 1.0f), z, zyp, zym, *y)));
     return true;
+#else
+    const float4 nt = vload4(map->res * map->res + t, view);
+    if (nt.w != tag) return false;
+    *y = vload4(t, view).xyz;
+    *n = normalize(nt.xyz);
+    return true;
+#endif
 }
 
 /* (1 - e^-x)/x, 1 at 0. */
@@ -77,9 +118,8 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
                                 const __global int* order, const int count, const float4 eye,
                                 const __global TsisScatterMedium* media, const int media_count,
                                 const TsisLightMapInfo map, const TsisScatterLight light,
-                                const __global float4* position,
-                                const __global float4* light_normal, const int strata,
-                                const int accumulate, __global float4* out) {
+                                const __global float* view, const float16 to_world,
+                                const int strata, const int accumulate, __global float4* out) {
     const int i = get_global_id(0);
     if (i >= count) return;
     const int j = order[i];
@@ -123,7 +163,7 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
         const float3 x = xo + sm * wt;
         float3 y, ny;
         float clip_w;
-        if (!tsis_scatter_surface(&map, position, light_normal, tag, x, &y, &ny, &clip_w)) continue;
+        if (!tsis_scatter_surface(&map, view, to_world, tag, x, &y, &ny, &clip_w)) continue;
         /* x in front of the light's first surface: outside the object. */
         const float3 toward = light.type == 0 ? normalize(light_vec - x) : -normalize(light_vec);
         if (dot(y - x, toward) < -map.tau_per_w * clip_w) continue;
@@ -155,8 +195,8 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
             const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
             /* Past what the light sees: the entry would be at grazing
              * incidence, where Ft cos theta_i -> 0. */
-            if (!tsis_scatter_surface(&map, position, light_normal, tag,
-                                      x - refracted * (h2 / cos_t), &y, &ny, &clip_w)) {
+            if (!tsis_scatter_surface(&map, view, to_world, tag, x - refracted * (h2 / cos_t), &y,
+                                      &ny, &clip_w)) {
                 cos_i = 0.0f;
                 break;
             }

@@ -250,8 +250,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     });
                 if (!changed.empty()) {
                     if (derived)
-                        scatterPass_.derive(*res.read(h.lights).shadows, scatterViews_, 1.0f,
-                                            changed);
+                        scatterPass_.copyDepth(*res.read(h.lights).shadows, scatterViews_, changed);
                     else
                         scatterPass_.run(*res.read(h.mesh), scatterViews_, materials_, changed);
                     glFinish();
@@ -259,7 +258,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                 }
                 res.stats().set("scatter_view_resolution", resolution);
                 res.stats().set("scatter_views_derived", derived ? 1 : 0);
-                res.write(h.scatterViews) = {&scatterViews_, nullptr, scatterVersion_};
+                res.write(h.scatterViews) = {&scatterViews_, nullptr, scatterVersion_, derived};
             });
     }
     // The geometry atlas depends on the mesh and resolution only: made once.

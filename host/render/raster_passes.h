@@ -29,6 +29,9 @@ struct GlLights {
     const std::vector<LightView>* views = nullptr;
     const ShadowMapArray* shadows = nullptr;
     uint64_t version = 0;  // changes whenever the views are drawn again
+    // Scatter views only: the views hold the shadow maps' depth alone
+    // (ScatterViewPass::copyDepth), not a draw's position and normal.
+    bool depthOnly = false;
 };
 
 // The tone-mapped frame and the radiance it was made from.

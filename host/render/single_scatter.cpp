@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "cl/launch.h"
 #include "physics/fresnel.h"
@@ -76,6 +78,40 @@ glm::dvec3 stratum(const glm::dvec3& sigmaT, double a, double b, double sm, doub
 
 }  // namespace
 
+ScatterEntry depthViewTexel(const DepthView& view, int x, int y) {
+    const int res = view.resolution;
+    const std::vector<float>& depth = *view.depth;
+    auto at = [&](int i, int j) {
+        return i >= 0 && j >= 0 && i < res && j < res
+                   ? double(depth[static_cast<size_t>(j) * size_t(res) + size_t(i)])
+                   : 1.0;
+    };
+    const glm::dmat4 toWorld = glm::inverse(view.viewProj);
+    auto unproject = [&](int i, int j, double z) {
+        const glm::dvec4 w = toWorld * glm::dvec4((i + 0.5) / res * 2.0 - 1.0,
+                                                  (j + 0.5) / res * 2.0 - 1.0, z * 2.0 - 1.0, 1.0);
+        return glm::dvec3(w) / w.w;
+    };
+    const double z = at(x, y);
+    const double xp = at(x + 1, y), xm = at(x - 1, y), yp = at(x, y + 1), ym = at(x, y - 1);
+    if (!(z < 1.0 && (xp < 1.0 || xm < 1.0) && (yp < 1.0 || ym < 1.0))) return {};
+    const glm::dvec3 p = unproject(x, y, z);
+    auto tangent = [&](int dx, int dy, double zp, double zm) {
+        const int side = zp < 1.0 && (!(zm < 1.0) || std::abs(zp - z) <= std::abs(z - zm)) ? 1 : -1;
+        return double(side) * (unproject(x + side * dx, y + side * dy, side > 0 ? zp : zm) - p);
+    };
+    return {true, p, glm::normalize(glm::cross(tangent(1, 0, xp, xm), tangent(0, 1, yp, ym)))};
+}
+
+ScatterEntry depthViewEntry(const DepthView& view, const glm::dvec3& x) {
+    const glm::dvec4 c = view.viewProj * glm::dvec4(x, 1.0);
+    const double res = view.resolution;
+    const double tx = std::floor((c.x / c.w * 0.5 + 0.5) * res);
+    const double ty = std::floor((c.y / c.w * 0.5 + 0.5) * res);
+    if (!(tx >= 0 && ty >= 0 && tx < res && ty < res)) return {};
+    return depthViewTexel(view, static_cast<int>(tx), static_cast<int>(ty));
+}
+
 glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, const glm::dvec3& eye,
                              const TsisScatterMedium& md, const Light& light, const EntryOf& entry,
                              int strata) {
@@ -143,7 +179,11 @@ glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& normal, con
 }
 
 SingleScatter::SingleScatter(ClRuntime& cl)
-    : cl_(cl), kernel_(cl.kernel("single_scatter.cl", "tsis_single_scatter")), interpolation_(cl) {}
+    : cl_(cl),
+      drawn_(cl.kernel("single_scatter.cl", "tsis_single_scatter")),
+      fromDepth_(
+          cl.kernel("single_scatter.cl", "tsis_single_scatter", "-DTSIS_SCATTER_FROM_DEPTH")),
+      interpolation_(cl) {}
 
 void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const RasterHandles& gl,
                             FrameGraphId<RadiosityImage> radiosity) {
@@ -174,19 +214,24 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                                          count * 16, normals.data());
                 normalsOf_ = gbuffer.version;
             }
-            // The scatter views' positions and normals, with the views.
+            // The scatter views, with the views: a drawn one's positions
+            // then normals, one from the shadow map its depth alone.
             const std::vector<LightView>& views = *scatter.views;
-            if (scatter.version != viewsOf_ || viewNormals_.size() != views.size()) {
-                viewPositions_.resize(views.size());
-                viewNormals_.resize(views.size());
-                for (size_t l = 0; l < views.size(); ++l)
-                    for (int i = 0; i < 2; ++i) {
-                        const std::vector<float> map = views[l].target->readRGBA(i);
-                        const size_t bytes = map.size() * sizeof(float);
-                        GrowingBuffer& to = (i == 0 ? viewPositions_ : viewNormals_)[l];
-                        queue.enqueueWriteBuffer(to.reserve(cl_.context(), bytes), CL_TRUE, 0,
-                                                 bytes, map.data());
+            if (scatter.version != viewsOf_ || views_.size() != views.size()) {
+                views_.resize(views.size());
+                for (size_t l = 0; l < views.size(); ++l) {
+                    std::vector<float> view;
+                    if (scatter.depthOnly) {
+                        view = views[l].target->readDepth();
+                    } else {
+                        view = views[l].target->readRGBA(0);
+                        const std::vector<float> normals = views[l].target->readRGBA(1);
+                        view.insert(view.end(), normals.begin(), normals.end());
                     }
+                    const size_t bytes = view.size() * sizeof(float);
+                    queue.enqueueWriteBuffer(views_[l].reserve(cl_.context(), bytes), CL_TRUE, 0,
+                                             bytes, view.data());
+                }
                 viewsOf_ = scatter.version;
             }
             // The points evaluated, the rest interpolated: a plan per view of
@@ -218,12 +263,15 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                 const TsisScatterLight sl = {
                     light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
                     light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
-                setKernelArgs(kernel_, points.xyz, normals_.buffer, interpolation_.order(),
+                const glm::mat4 toWorld = glm::inverse(views[l].viewProj);
+                cl_float16 to;
+                std::copy_n(glm::value_ptr(toWorld), 16, to.s);
+                cl::Kernel& kernel = scatter.depthOnly ? fromDepth_ : drawn_;
+                setKernelArgs(kernel, points.xyz, normals_.buffer, interpolation_.order(),
                               evaluated, eye, mediaBuffer, static_cast<int>(media.size()),
-                              lightMapInfo(views[l], views[l].resolution), sl,
-                              viewPositions_[l].buffer, viewNormals_[l].buffer,
+                              lightMapInfo(views[l], views[l].resolution), sl, views_[l].buffer, to,
                               kSingleScatterStrata, l > 0 ? 1 : 0, out);
-                enqueue1D(queue, kernel_, static_cast<size_t>(evaluated), kLocalSize, nullptr);
+                enqueue1D(queue, kernel, static_cast<size_t>(evaluated), kLocalSize, nullptr);
             }
             interpolation_.run(out);
             std::vector<float> b1(count * 4);

@@ -21,8 +21,10 @@ namespace tsis {
 
 // Strata of each refracted camera ray's depth per light, each integrated in
 // closed form over its middle's entry plane (single_scatter_test.cpp: two
-// overshoot the walk past the shadow line).
-constexpr int kSingleScatterStrata = 4;
+// overshoot the walk past the shadow line; against volumetric, three are
+// four's to 0.1 point on the skin1 scenes of bench/results/model_truth.md
+// and two cost up to 1.4 points).
+constexpr int kSingleScatterStrata = 3;
 
 // The scatter views' texels (scatterViewResolution): the term follows the
 // surface on the scale of a mean free path, finer than the shadow maps need.
@@ -57,6 +59,22 @@ struct ScatterEntry {
 };
 using EntryOf = std::function<ScatterEntry(const glm::dvec3& x)>;
 
+// A scatter view made from a shadow map (ScatterViewPass::copyDepth): the
+// window depth of each texel (GL order, 1 where no surface) and the light's
+// projection. The kernel's reading of it (TSIS_SCATTER_FROM_DEPTH) in
+// double: the texel's point unprojected, the facet's normal from the
+// neighbours' depths, one-sided towards the neighbour whose depth is nearer
+// (an occluding edge or the silhouette on the other side); a texel without
+// a neighbour holding a surface along either axis is none.
+struct DepthView {
+    const std::vector<float>* depth = nullptr;
+    int resolution = 0;
+    glm::dmat4 viewProj{1.0};
+};
+ScatterEntry depthViewTexel(const DepthView& view, int x, int y);
+// The texel under x's projection (lit = false outside the view).
+ScatterEntry depthViewEntry(const DepthView& view, const glm::dvec3& x);
+
 // The kernel's R = L⁽¹⁾/Ft(η, cos θo) at xo (normal n, seen from eye) for
 // one light, in double: the same strata, the entry points from `entry`.
 glm::dvec3 singleScatterHost(const glm::dvec3& xo, const glm::dvec3& n, const glm::dvec3& eye,
@@ -75,12 +93,12 @@ class SingleScatter {
 
   private:
     ClRuntime& cl_;
-    cl::Kernel kernel_;
+    cl::Kernel drawn_, fromDepth_;  // views drawn, or the shadow maps' depth
     SparseInterpolation interpolation_;
     SparsePixels plan_;
     uint64_t planKey_ = 0;
     GrowingBuffer normals_, media_, out_;
-    std::vector<GrowingBuffer> viewPositions_, viewNormals_;
+    std::vector<GrowingBuffer> views_;
     uint64_t normalsOf_ = 0, viewsOf_ = 0;  // G-buffer and scatter-view versions
 };
 

@@ -1,11 +1,12 @@
 // The single-scattering term's views made from the shadow maps
-// (ScatterViewPass::derive) against the same views drawn from the mesh
-// (ScatterViewPass::run): the same surface points and, up to the facets'
-// normals against the interpolated ones, the same normals, over two meshes
-// (a round one; the default scene's thick body and thin parts, which occlude
-// themselves from the light) and point and directional lights from several
-// sides. Both are closed solids, so the light sees only faces towards it,
-// derive's premise (their seams read open to closedOutward here, so the
+// (ScatterViewPass::copyDepth, read as the kernel reads them: depthViewTexel)
+// against the same views drawn from the mesh (ScatterViewPass::run): the
+// same surface points and, up to the facets' normals against the
+// interpolated ones, the same normals, over two meshes (a round one; the
+// default scene's thick body and thin parts, which occlude themselves from
+// the light) and point and directional lights from several sides. Both are
+// closed solids, so the light sees only faces towards it, the premise of
+// views from the maps (their seams read open to closedOutward here, so the
 // drawn views cull nothing).
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include "gl/passes.h"
 #include "mesh/builtin.h"
 #include "mesh/mesh.h"
+#include "render/single_scatter.h"
 #include "support/plain_materials.h"
 
 namespace tsis {
@@ -28,7 +30,6 @@ struct Agreement {
     double coveredBoth = 0;  // of the texels either covers
     double distance95 = 0;   // 95th percentile of |p_derived − p_drawn|, in drawn texels
     double angle95 = 0;      // 95th percentile of the normals' angle (degrees)
-    double worstTag = 0;     // largest |w_derived − w_drawn| where both cover
 };
 
 double percentile(std::vector<double> v, double q) {
@@ -52,26 +53,28 @@ class ScatterViewTest : public ::testing::Test {
         updateScatterView(derived[0], light, radius, resolution);
         ScatterViewPass pass;
         pass.run(gpu, drawn, materials(), {0});
-        pass.derive(lightPass.shadows(), derived, 1.0f, {0});
+        pass.copyDepth(lightPass.shadows(), derived, {0});
         const std::vector<float> p0 = drawn[0].target->readRGBA(0),
                                  n0 = drawn[0].target->readRGBA(1);
-        const std::vector<float> p1 = derived[0].target->readRGBA(0),
-                                 n1 = derived[0].target->readRGBA(1);
+        const std::vector<float> depth = derived[0].target->readDepth();
+        const DepthView view{&depth, resolution, glm::dmat4(derived[0].viewProj)};
         Agreement a;
         std::vector<double> distance, angle;
         size_t either = 0, both = 0;
-        for (size_t t = 0; t < p0.size(); t += 4) {
-            const bool c0 = n0[t + 3] > 0, c1 = n1[t + 3] > 0;
-            either += c0 || c1;
-            if (!(c0 && c1)) continue;
-            ++both;
-            const glm::vec3 a0(p0[t], p0[t + 1], p0[t + 2]), a1(p1[t], p1[t + 1], p1[t + 2]);
-            const glm::vec3 m0(n0[t], n0[t + 1], n0[t + 2]), m1(n1[t], n1[t + 1], n1[t + 2]);
-            distance.push_back(glm::length(a1 - a0) / drawn[0].texelMm);
-            const double c = glm::dot(glm::normalize(m0), glm::normalize(m1));
-            angle.push_back(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
-            a.worstTag = std::max(a.worstTag, double(std::abs(n1[t + 3] - n0[t + 3])));
-        }
+        for (int y = 0; y < resolution; ++y)
+            for (int x = 0; x < resolution; ++x) {
+                const size_t t = (size_t(y) * size_t(resolution) + size_t(x)) * 4;
+                const ScatterEntry e = depthViewTexel(view, x, y);
+                const bool c0 = n0[t + 3] > 0;
+                either += c0 || e.lit;
+                if (!(c0 && e.lit)) continue;
+                ++both;
+                const glm::dvec3 a0(p0[t], p0[t + 1], p0[t + 2]);
+                const glm::dvec3 m0(n0[t], n0[t + 1], n0[t + 2]);
+                distance.push_back(glm::length(e.point - a0) / drawn[0].texelMm);
+                const double c = glm::dot(glm::normalize(m0), e.normal);
+                angle.push_back(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
+            }
         a.coveredBoth = either ? double(both) / double(either) : 0;
         a.distance95 = percentile(distance, 0.95);
         a.angle95 = percentile(angle, 0.95);
@@ -105,11 +108,15 @@ TEST_F(ScatterViewTest, DerivedFromTheShadowMapAsDrawn) {
                 a.coveredBoth, a.distance95, a.angle95);
             // Only silhouette texels may differ in coverage; the points are
             // the surface under the same texel (the map's texel under its
-            // centre: within a texel of the view's); the normals the facets'.
+            // centre: within a texel of the view's); the normals the facets'
+            // (from neighbours a view's texel apart; measured 95th
+            // percentiles 1.7° on the sphere, 5.3-6.7° on the default
+            // scene, whose small facets a view's texel straddles: 3.2° with
+            // the shadow map's own texels, which the term gained nothing from
+            // against volumetric, bench/results/model_truth.md).
             EXPECT_GT(a.coveredBoth, 0.97);
             EXPECT_LT(a.distance95, 1.0);
-            EXPECT_LT(a.angle95, 4.0);
-            EXPECT_EQ(a.worstTag, 0.0);
+            EXPECT_LT(a.angle95, 7.5);
         }
 }
 
