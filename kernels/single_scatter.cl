@@ -16,195 +16,307 @@
  * there; s_i' = (depth below the tangent plane) / cos theta_ti, the refracted
  * path. E (cos theta_i / cos theta_ti) is the beam's irradiance inside and
  * 1/eta^2 the radiance's change leaving the medium: Jensen 2001 leaves both
- * out, the volumetric truth has them. Phase p = 1/(4 pi). */
+ * out, the volumetric truth has them. Phase p = 1/(4 pi).
+ *
+ * Each work item evaluates TSIS_SCATTER_LANES points side by side, one to a
+ * lane of float vectors, every branch a select: PoCL runs a work group's
+ * items one after another and does not vectorise this control flow itself,
+ * so scalar code left the vector units idle (the views' reads are gathered
+ * lane by lane). */
 #include "fresnel.h"
 #include "light_map.h"
 #include "single_scatter_shared.h"
 
-#ifdef TSIS_SCATTER_FROM_DEPTH
-/* View texel (x, y) at depth z (window, [0, 1]) back in the world. */
-static inline float3 tsis_unproject(const float16 to_world, const int res, const float x,
-                                    const float y, const float z) {
-    const float4 c = (float4)((x + 0.5f) / (float)res * 2.0f - 1.0f,
-                              (y + 0.5f) / (float)res * 2.0f - 1.0f, z * 2.0f - 1.0f, 1.0f);
-    const float4 w =
-        to_world.s0123 * c.x + to_world.s4567 * c.y + to_world.s89ab * c.z + to_world.scdef;
-    return w.xyz / w.w;
+typedef float8 lf; /* one value a lane */
+typedef int8 li;   /* a lane mask: -1 true, 0 false */
+typedef struct {
+    lf x, y, z;
+} l3;
+
+static inline l3 l3_make(const lf x, const lf y, const lf z) {
+    l3 r;
+    r.x = x;
+    r.y = y;
+    r.z = z;
+    return r;
+}
+static inline l3 l3_splat(const float3 v) {
+    return l3_make((lf)(v.x), (lf)(v.y), (lf)(v.z));
+}
+static inline l3 l3_sub(const l3 a, const l3 b) {
+    return l3_make(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+/* a s + b */
+static inline l3 l3_mad(const l3 a, const lf s, const l3 b) {
+    return l3_make(mad(a.x, s, b.x), mad(a.y, s, b.y), mad(a.z, s, b.z));
+}
+static inline l3 l3_scale(const l3 a, const lf s) {
+    return l3_make(a.x * s, a.y * s, a.z * s);
+}
+static inline lf l3_dot(const l3 a, const l3 b) {
+    return mad(a.x, b.x, mad(a.y, b.y, a.z * b.z));
+}
+static inline l3 l3_cross(const l3 a, const l3 b) {
+    return l3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline l3 l3_normalize(const l3 a) {
+    return l3_scale(a, rsqrt(l3_dot(a, a)));
+}
+/* m ? b : a, lane by lane */
+static inline l3 l3_select(const l3 a, const l3 b, const li m) {
+    return l3_make(select(a.x, b.x, m), select(a.y, b.y, m), select(a.z, b.z, m));
 }
 
-/* The step from texel (x, y) at p to its neighbour d (one of the axes) or
- * -d: towards the side whose depth is nearer z and holds a surface. */
-static inline float3 tsis_depth_tangent(const float16 to_world, const int res, const float x,
-                                        const float y, const float2 d, const float z,
-                                        const float zp, const float zm, const float3 p) {
-    const float side = zp < 1.0f && (!(zm < 1.0f) || fabs(zp - z) <= fabs(z - zm)) ? 1.0f : -1.0f;
-    return side *
-           (tsis_unproject(to_world, res, x + side * d.x, y + side * d.y, side > 0.0f ? zp : zm) -
-            p);
+/* p[index] in each lane where ok, else `none`. */
+static inline lf tsis_gather(const __global float* p, const li index, const li ok,
+                             const float none) {
+    int at[8], use[8];
+    float v[8];
+    vstore8(index, 0, at);
+    vstore8(ok, 0, use);
+    for (int k = 0; k < 8; ++k) v[k] = use[k] ? p[at[k]] : none;
+    return vload8(0, v);
+}
+
+#ifdef TSIS_SCATTER_FROM_DEPTH
+/* View texel (x, y) at depth z (window, [0, 1]) back in the world. */
+static inline l3 tsis_unproject(const float16 to_world, const float res, const lf x, const lf y,
+                                const lf z) {
+    const lf cx = (x + 0.5f) / res * 2.0f - 1.0f, cy = (y + 0.5f) / res * 2.0f - 1.0f;
+    const lf cz = z * 2.0f - 1.0f;
+    const lf w = to_world.s3 * cx + to_world.s7 * cy + to_world.sb * cz + to_world.sf;
+    return l3_make((to_world.s0 * cx + to_world.s4 * cy + to_world.s8 * cz + to_world.sc) / w,
+                   (to_world.s1 * cx + to_world.s5 * cy + to_world.s9 * cz + to_world.sd) / w,
+                   (to_world.s2 * cx + to_world.s6 * cy + to_world.sa * cz + to_world.se) / w);
+}
+
+/* The step from texel (x, y) at p to its neighbour (x + dx, y + dy) or the
+ * opposite one: towards the side whose depth is nearer z and holds a
+ * surface. */
+static inline l3 tsis_depth_tangent(const float16 to_world, const float res, const lf x, const lf y,
+                                    const float dx, const float dy, const lf z, const lf zp,
+                                    const lf zm, const l3 p) {
+    const li plus = isless(zp, (lf)(1.0f)) &
+                    (~isless(zm, (lf)(1.0f)) | islessequal(fabs(zp - z), fabs(z - zm)));
+    const lf side = select((lf)(-1.0f), (lf)(1.0f), plus);
+    return l3_scale(
+        l3_sub(tsis_unproject(to_world, res, x + side * dx, y + side * dy, select(zm, zp, plus)),
+               p),
+        side);
 }
 #endif
 
-/* The surface point the light sees at p's texel and its normal (false: no
- * surface of medium `tag` there); *clip_w: p's clip w. A drawn view holds
- * res^2 positions then res^2 normals (w the medium tag, as the flux map's);
- * one made from the shadow map (TSIS_SCATTER_FROM_DEPTH, one medium) its
- * depth only: the point unprojected, the facet's normal from the
- * neighbours' depths, one-sided towards the neighbour that continues the
- * surface (render/single_scatter.h depthViewTexel, in double). */
-static inline bool tsis_scatter_surface(const TsisLightMapInfo* map, const __global float* view,
-                                        const float16 to_world, const float tag, const float3 p,
-                                        float3* y, float3* n, float* clip_w) {
-    const float3 q = tsis_light_project(map, p);
-    const int t = tsis_light_texel(map, q.x, q.y);
-    if (t < 0) return false;
-    *clip_w = q.z;
+/* The surface point the light sees at p's texel and its normal, in the
+ * lanes it returns true (none elsewhere: no surface of medium `tag`); *clip_w:
+ * p's clip w. A drawn view holds res^2 positions then res^2 normals (w the
+ * medium tag, as the flux map's); one made from the shadow map
+ * (TSIS_SCATTER_FROM_DEPTH, one medium) its depth only: the point
+ * unprojected, the facet's normal from the neighbours' depths, one-sided
+ * towards the neighbour that continues the surface (render/single_scatter.h
+ * depthViewTexel, in double). */
+static inline li tsis_scatter_surface(const TsisLightMapInfo* map, const __global float* view,
+                                      const float16 to_world, const lf tag, const l3 p, l3* y,
+                                      l3* n, lf* clip_w) {
+    const float* m = map->view_proj;
+    const lf cx = m[0] * p.x + m[4] * p.y + m[8] * p.z + m[12];
+    const lf cy = m[1] * p.x + m[5] * p.y + m[9] * p.z + m[13];
+    const lf cw = m[3] * p.x + m[7] * p.y + m[11] * p.z + m[15];
+    const float res = (float)map->res;
+    const lf s = 0.5f * res / cw;
+    const lf fx = floor(cx * s + 0.5f * res), fy = floor(cy * s + 0.5f * res);
+    const li inside = isgreaterequal(fx, (lf)(0.0f)) & isgreaterequal(fy, (lf)(0.0f)) &
+                      isless(fx, (lf)(res)) & isless(fy, (lf)(res));
+    const li tx = convert_int8(select((lf)(0.0f), fx, inside));
+    const li ty = convert_int8(select((lf)(0.0f), fy, inside));
+    const li t = ty * map->res + tx;
+    *clip_w = cw;
 #ifdef TSIS_SCATTER_FROM_DEPTH
-    const int res = map->res;
-    const int tx = t % res, ty = t / res;
-    const float z = view[t];
-    const float zxp = tx + 1 < res ? view[t + 1] : 1.0f, zxm = tx > 0 ? view[t - 1] : 1.0f;
-    const float zyp = ty + 1 < res ? view[t + res] : 1.0f, zym = ty > 0 ? view[t - res] : 1.0f;
-    if (!(z < 1.0f && (zxp < 1.0f || zxm < 1.0f) && (zyp < 1.0f || zym < 1.0f))) return false;
-    const float fx = (float)tx, fy = (float)ty;
+    const lf z = tsis_gather(view, t, inside, 1.0f);
+    const lf zxp = tsis_gather(view, t + 1, inside & (tx + 1 < map->res), 1.0f);
+    const lf zxm = tsis_gather(view, t - 1, inside & (tx > 0), 1.0f);
+    const lf zyp = tsis_gather(view, t + map->res, inside & (ty + 1 < map->res), 1.0f);
+    const lf zym = tsis_gather(view, t - map->res, inside & (ty > 0), 1.0f);
     *y = tsis_unproject(to_world, res, fx, fy, z);
-    *n = normalize(
-        cross(tsis_depth_tangent(to_world, res, fx, fy, (float2)(1.0f, 0.0f), z, zxp, zxm, *y),
-              tsis_depth_tangent(to_world, res, fx, fy, (float2)(0.0f, 1.0f), z, zyp, zym, *y)));
-    return true;
+    *n = l3_normalize(
+        l3_cross(tsis_depth_tangent(to_world, res, fx, fy, 1.0f, 0.0f, z, zxp, zxm, *y),
+                 tsis_depth_tangent(to_world, res, fx, fy, 0.0f, 1.0f, z, zyp, zym, *y)));
+    return inside & isless(z, (lf)(1.0f)) & (isless(zxp, (lf)(1.0f)) | isless(zxm, (lf)(1.0f))) &
+           (isless(zyp, (lf)(1.0f)) | isless(zym, (lf)(1.0f)));
 #else
-    const float4 nt = vload4(map->res * map->res + t, view);
-    if (nt.w != tag) return false;
-    *y = vload4(t, view).xyz;
-    *n = normalize(nt.xyz);
-    return true;
+    const li normals = (li)(4 * map->res * map->res);
+    *y = l3_make(tsis_gather(view, 4 * t, inside, 0.0f), tsis_gather(view, 4 * t + 1, inside, 0.0f),
+                 tsis_gather(view, 4 * t + 2, inside, 0.0f));
+    *n = l3_normalize(l3_make(tsis_gather(view, normals + 4 * t, inside, 0.0f),
+                              tsis_gather(view, normals + 4 * t + 1, inside, 0.0f),
+                              tsis_gather(view, normals + 4 * t + 2, inside, 0.0f)));
+    return inside & isequal(tsis_gather(view, normals + 4 * t + 3, inside, 0.0f), tag);
 #endif
 }
 
 /* (1 - e^-x)/x, 1 at 0. */
-static inline float3 tsis_scatter_phi(const float3 x) {
-    return select(-expm1(-x) / x, 1.0f - 0.5f * x, isless(fabs(x), (float3)(1e-4f)));
+static inline lf tsis_scatter_phi(const lf x) {
+    return select(-expm1(-x) / x, 1.0f - 0.5f * x, isless(fabs(x), (lf)(1e-4f)));
 }
 
 /* The stratum's integral over the camera ray's depth s in [a, b] of
- * e^(-sigma_t (s + h(s)/cos_t)), h(s) = h_m - (s - s_m) c the depth below
- * the entry's tangent plane, linear in s (c = wt . n_i). Where h < 0 the
- * point is above the plane: with c > 0 the ray has crossed the entry face
- * (out of the body: nothing), with c <= 0 it is within a texel of the
- * surface it entered below (h taken as 0, as the first step does). */
-static inline float3 tsis_scatter_stratum(const float3 sigma_t, const float a, const float b,
-                                          const float sm, const float hm, const float c,
-                                          const float cos_t) {
+ * e^(-sigma_t (s + h(s)/cos_t)), one channel, h(s) = h_m - (s - s_m) c the
+ * depth below the entry's tangent plane, linear in s (c = wt . n_i). Where
+ * h < 0 the point is above the plane: with c > 0 the ray has crossed the
+ * entry face (out of the body: nothing), with c <= 0 it is within a texel of
+ * the surface it entered below (h taken as 0, as the first step does). */
+static inline lf tsis_scatter_stratum(const lf sigma_t, const lf a, const lf b, const lf sm,
+                                      const lf hm, const lf c, const lf cos_t) {
     /* Where h = 0 (none when the ray runs along the plane). */
-    const float sz = c != 0.0f ? sm + hm / c : -INFINITY;
-    float3 sum = (float3)(0.0f);
-    float p = a, q = b;
-    if (c <= 0.0f && sz > a) {
-        const float z = fmin(sz, b);
-        sum += exp(-sigma_t * a) * (z - a) * tsis_scatter_phi(sigma_t * (z - a));
-        p = z;
-    }
-    if (c > 0.0f) q = fmin(b, sz);
-    if (q > p) {
-        const float hp = fmax(0.0f, hm - (p - sm) * c);
-        const float3 alpha = sigma_t * (1.0f - c / cos_t);
-        sum += exp(-sigma_t * (p + hp / cos_t)) * (q - p) * tsis_scatter_phi(alpha * (q - p));
-    }
+    const lf sz = select((lf)(-INFINITY), sm + hm / c, isnotequal(c, (lf)(0.0f)));
+    const li touch = islessequal(c, (lf)(0.0f)) & isgreater(sz, a);
+    const lf z = fmin(sz, b);
+    lf sum = select((lf)(0.0f), exp(-sigma_t * a) * (z - a) * tsis_scatter_phi(sigma_t * (z - a)),
+                    touch);
+    const lf p = select(a, z, touch);
+    const lf q = select(b, fmin(b, sz), isgreater(c, (lf)(0.0f)));
+    const lf hp = fmax(hm - (p - sm) * c, 0.0f);
+    const lf alpha = sigma_t * (1.0f - c / cos_t);
+    sum += select((lf)(0.0f),
+                  exp(-sigma_t * (p + hp / cos_t)) * (q - p) * tsis_scatter_phi(alpha * (q - p)),
+                  isgreater(q, p));
     return sum;
 }
 
 /* At the `count` points order[] names (the rest interpolated after:
- * render/sparse_pixels.h). */
+ * render/sparse_pixels.h), TSIS_SCATTER_LANES of them a work item. */
 kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
                                 const __global int* order, const int count, const float4 eye,
                                 const __global TsisScatterMedium* media, const int media_count,
                                 const TsisLightMapInfo map, const TsisScatterLight light,
                                 const __global float* view, const float16 to_world,
                                 const int strata, const int accumulate, __global float4* out) {
-    const int i = get_global_id(0);
-    if (i >= count) return;
-    const int j = order[i];
-    const float4 base = accumulate ? out[j] : (float4)(0.0f);
-    const float tag = points[j].w;
-    const int m = (int)(tag + 0.5f) - 1;
-    if (m < 0 || m >= media_count) {
-        out[j] = base;
-        return;
+    const int first = (int)get_global_id(0) * TSIS_SCATTER_LANES;
+    if (first >= count) return;
+    /* The lanes' points (a lane past the end repeats the first, unwritten). */
+    int j[8];
+    float px[8], py[8], pz[8], tg[8], nx[8], ny_[8], nz[8];
+    float ss[3][8], st[3][8], eta_[8], to_rad[8];
+    for (int k = 0; k < 8; ++k) {
+        j[k] = order[first + k < count ? first + k : first];
+        const float4 pt = points[j[k]], nm = normals[j[k]];
+        px[k] = pt.x;
+        py[k] = pt.y;
+        pz[k] = pt.z;
+        tg[k] = pt.w;
+        nx[k] = nm.x;
+        ny_[k] = nm.y;
+        nz[k] = nm.z;
+        const int m = clamp((int)(pt.w + 0.5f) - 1, 0, media_count - 1);
+        const TsisScatterMedium md = media[m];
+        ss[0][k] = md.ss_r;
+        ss[1][k] = md.ss_g;
+        ss[2][k] = md.ss_b;
+        st[0][k] = md.st_r;
+        st[1][k] = md.st_g;
+        st[2][k] = md.st_b;
+        eta_[k] = md.eta;
+        to_rad[k] = md.to_radiosity;
     }
-    const TsisScatterMedium md = media[m];
-    const float3 xo = points[j].xyz;
-    float3 n = normalize(normals[j].xyz);
-    const float3 v = normalize(eye.xyz - xo);
-    float cos_o = dot(n, v);
+    const lf tag = vload8(0, tg);
+    const li medium = convert_int8(tag + 0.5f) - 1;
+    const li valid = (medium >= 0) & (medium < media_count);
+    const l3 xo = l3_make(vload8(0, px), vload8(0, py), vload8(0, pz));
+    l3 n = l3_normalize(l3_make(vload8(0, nx), vload8(0, ny_), vload8(0, nz)));
+    const l3 v = l3_normalize(l3_sub(l3_splat(eye.xyz), xo));
+    lf cos_o = l3_dot(n, v);
     /* As the composite: the side that faces the eye. */
-    if (cos_o < 0.0f) {
-        n = -n;
-        cos_o = -cos_o;
-    }
-    const float inv_eta = 1.0f / md.eta;
-    const float cos_to = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_o * cos_o)));
+    n = l3_select(n, l3_scale(n, (lf)(-1.0f)), isless(cos_o, (lf)(0.0f)));
+    cos_o = fabs(cos_o);
+    const lf inv_eta = 1.0f / vload8(0, eta_);
+    const lf eta = vload8(0, eta_);
+    const lf cos_to = sqrt(fmax(1.0f - inv_eta * inv_eta * (1.0f - cos_o * cos_o), 0.0f));
     /* The camera ray refracted into the medium. */
-    const float3 wt = normalize(-v * inv_eta + n * (inv_eta * cos_o - cos_to));
-    const float3 sigma_s = (float3)(md.ss_r, md.ss_g, md.ss_b);
-    const float3 sigma_t = (float3)(md.st_r, md.st_g, md.st_b);
-    const float sigma = fmin(sigma_t.x, fmin(sigma_t.y, sigma_t.z));
-    const float3 e_light = (float3)(light.r, light.g, light.b);
+    const l3 wt = l3_normalize(l3_mad(n, inv_eta * cos_o - cos_to, l3_scale(v, -inv_eta)));
+    const lf sigma_t[3] = {vload8(0, st[0]), vload8(0, st[1]), vload8(0, st[2])};
+    const lf sigma = fmin(sigma_t[0], fmin(sigma_t[1], sigma_t[2]));
     const float3 light_vec = (float3)(light.x, light.y, light.z);
+    const float3 e_light = (float3)(light.r, light.g, light.b);
+    const l3 light_at = l3_splat(light_vec);
+    const l3 light_dir = l3_splat(-normalize(light_vec)); /* directional: towards it */
     /* The depth's range within TSIS_SCATTER_DEPTH mean free paths. */
     const float kept = 1.0f - exp(-(float)TSIS_SCATTER_DEPTH);
-    float3 sum = (float3)(0.0f);
-    float a = 0.0f;
+    lf sum[3] = {(lf)(0.0f), (lf)(0.0f), (lf)(0.0f)};
+    lf a = (lf)(0.0f);
     for (int k = 0; k < strata; ++k) {
         /* The stratum [a, b] (equal mass of sigma e^(-sigma s)) and its
          * middle, where its entry plane is found. */
-        const float b = -log(1.0f - (float)(k + 1) / (float)strata * kept) / sigma;
-        const float sm = -log(1.0f - ((float)k + 0.5f) / (float)strata * kept) / sigma;
-        const float a_k = a;
+        const lf b = -log(1.0f - (float)(k + 1) / (float)strata * kept) / sigma;
+        const lf sm = -log(1.0f - ((float)k + 0.5f) / (float)strata * kept) / sigma;
+        const lf a_k = a;
         a = b;
-        const float3 x = xo + sm * wt;
-        float3 y, ny;
-        float clip_w;
-        if (!tsis_scatter_surface(&map, view, to_world, tag, x, &y, &ny, &clip_w)) continue;
+        const l3 x = l3_mad(wt, sm, xo);
+        l3 y, ny;
+        lf clip_w;
+        li live = valid & tsis_scatter_surface(&map, view, to_world, tag, x, &y, &ny, &clip_w);
         /* x in front of the light's first surface: outside the object. */
-        const float3 toward = light.type == 0 ? normalize(light_vec - x) : -normalize(light_vec);
-        if (dot(y - x, toward) < -map.tau_per_w * clip_w) continue;
+        const l3 toward = light.type == 0 ? l3_normalize(l3_sub(light_at, x)) : light_dir;
+        live &= ~isless(l3_dot(l3_sub(y, x), toward), -map.tau_per_w * clip_w);
+        if (!any(live)) continue;
         /* The entry whose refracted ray reaches x: on y's tangent plane in
-         * closed form, then the surface the light sees there, again. */
-        float3 e, l;
-        float cos_i = 0.0f, cos_t = 1.0f, h2 = 0.0f;
+         * closed form, then the surface the light sees there, again. The
+         * lanes still stepping are `stepping`; each keeps the values of the
+         * step it stopped at. */
+        li stepping = live;
+        lf cos_i = (lf)(0.0f), cos_t = (lf)(1.0f), h2 = (lf)(0.0f), e_scale = (lf)(1.0f);
+        l3 n_i = ny;
         for (int it = 0;; ++it) {
-            e = e_light;
+            lf e_it = (lf)(1.0f);
+            l3 l = light_dir;
             if (light.type == 0) {
-                const float3 d = light_vec - y;
-                const float d2 = dot(d, d);
-                e /= d2;
-                l = d * rsqrt(d2);
-            } else {
-                l = -normalize(light_vec);
+                const l3 d = l3_sub(light_at, y);
+                const lf d2 = l3_dot(d, d);
+                e_it = 1.0f / d2;
+                l = l3_scale(d, rsqrt(d2));
             }
-            cos_i = dot(ny, l);
-            cos_t = sqrt(max(0.0f, 1.0f - inv_eta * inv_eta * (1.0f - cos_i * cos_i)));
-            h2 = dot(y - x, ny);
+            const lf ci = l3_dot(ny, l);
+            const lf ct = sqrt(fmax(1.0f - inv_eta * inv_eta * (1.0f - ci * ci), 0.0f));
+            const lf hh = l3_dot(l3_sub(y, x), ny);
+            cos_i = select(cos_i, ci, stepping);
+            cos_t = select(cos_t, ct, stepping);
+            h2 = select(h2, hh, stepping);
+            e_scale = select(e_scale, e_it, stepping);
+            n_i = l3_select(n_i, ny, stepping);
             /* x above a later step's tangent plane: no connection (at the
              * first, x within a texel of the surface: none to cross). */
-            if (!(h2 > 0.0f)) {
-                if (it > 0) cos_i = 0.0f;
-                h2 = 0.0f;
-                break;
-            }
-            if (!(cos_i > 0.0f) || it == TSIS_SCATTER_ENTRY_STEPS) break;
-            const float3 refracted = -l * inv_eta + ny * (inv_eta * cos_i - cos_t);
+            const li above = stepping & ~isgreater(hh, (lf)(0.0f));
+            if (it > 0) cos_i = select(cos_i, (lf)(0.0f), above);
+            h2 = select(h2, (lf)(0.0f), above);
+            stepping &= ~above & isgreater(ci, (lf)(0.0f));
+            if (it == TSIS_SCATTER_ENTRY_STEPS || !any(stepping)) break;
+            const l3 refracted = l3_mad(ny, inv_eta * ci - ct, l3_scale(l, -inv_eta));
+            l3 y2, n2;
+            lf w2;
             /* Past what the light sees: the entry would be at grazing
              * incidence, where Ft cos theta_i -> 0. */
-            if (!tsis_scatter_surface(&map, view, to_world, tag, x - refracted * (h2 / cos_t), &y,
-                                      &ny, &clip_w)) {
-                cos_i = 0.0f;
-                break;
-            }
+            const li seen = tsis_scatter_surface(&map, view, to_world, tag,
+                                                 l3_mad(refracted, -hh / ct, x), &y2, &n2, &w2);
+            cos_i = select(cos_i, (lf)(0.0f), stepping & ~seen);
+            stepping &= seen;
+            y = l3_select(y, y2, stepping);
+            ny = l3_select(ny, n2, stepping);
         }
-        if (!(cos_i > 0.0f)) continue;
-        const float3 w = tsis_scatter_stratum(sigma_t, a_k, b, sm, h2, dot(wt, ny), cos_t);
-        sum += w * (tsis_fresnel_t(md.eta, cos_i) * cos_i / cos_t) * e;
+        live &= isgreater(cos_i, (lf)(0.0f));
+        const lf c = l3_dot(wt, n_i);
+        const lf gain = tsis_fresnel_t8(eta, cos_i) * cos_i / cos_t * e_scale;
+        const float e_rgb[3] = {e_light.x, e_light.y, e_light.z};
+        for (int ch = 0; ch < 3; ++ch)
+            sum[ch] += select(
+                (lf)(0.0f),
+                tsis_scatter_stratum(sigma_t[ch], a_k, b, sm, h2, c, cos_t) * gain * e_rgb[ch],
+                live);
     }
-    const float3 r = sum * sigma_s * (inv_eta * inv_eta / (4.0f * M_PI_F));
-    out[j] = base + (float4)(md.to_radiosity * r, 0.0f);
+    const lf scale = inv_eta * inv_eta / (4.0f * M_PI_F) * vload8(0, to_rad);
+    float r[3][8];
+    for (int ch = 0; ch < 3; ++ch) vstore8(sum[ch] * vload8(0, ss[ch]) * scale, 0, r[ch]);
+    int use[8];
+    vstore8(valid, 0, use);
+    for (int k = 0; k < 8 && first + k < count; ++k) {
+        const float4 base = accumulate ? out[j[k]] : (float4)(0.0f);
+        out[j[k]] = use[k] ? base + (float4)(r[0][k], r[1][k], r[2][k], 0.0f) : base;
+    }
 }

@@ -15,6 +15,10 @@
  * each costs two more map reads per stratum. */
 #define TSIS_SCATTER_ENTRY_STEPS 2
 
+/* Points a work item of tsis_single_scatter evaluates side by side, one to a
+ * lane of float8s. */
+#define TSIS_SCATTER_LANES 8
+
 /* The camera ray's depth ends this many mean free paths 1/min sigma_t' in:
  * past it the camera's own attenuation leaves < e^-8 = 0.03% of what any
  * depth can add (the back of a back-lit 30 mm sphere, 23 mean free paths in,

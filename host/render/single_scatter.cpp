@@ -271,7 +271,12 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
                               evaluated, eye, mediaBuffer, static_cast<int>(media.size()),
                               lightMapInfo(views[l], views[l].resolution), sl, views_[l].buffer, to,
                               kSingleScatterStrata, l > 0 ? 1 : 0, out);
-                enqueue1D(queue, kernel, static_cast<size_t>(evaluated), kLocalSize, nullptr);
+                // TSIS_SCATTER_LANES points an item; small groups, so both
+                // cores get a share of a few thousand points.
+                enqueue1D(
+                    queue, kernel,
+                    static_cast<size_t>(evaluated + TSIS_SCATTER_LANES - 1) / TSIS_SCATTER_LANES,
+                    16, nullptr);
             }
             interpolation_.run(out);
             std::vector<float> b1(count * 4);
