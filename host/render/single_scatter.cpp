@@ -27,6 +27,11 @@ TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit) {
             static_cast<float>(M_PI / exitScale(exit, m.eta))};
 }
 
+TsisScatterLight scatterLight(const Light& light) {
+    return {light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
+            light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
+}
+
 namespace {
 
 // The smallest mean free path 1/max σt′ (mm) of the scene's media.
@@ -259,17 +264,14 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
             cl::Buffer& out = out_.reserve(cl_.context(), count * 16);
             const cl_float4 eye = {{ctx.eye.x, ctx.eye.y, ctx.eye.z, 0.0f}};
             for (size_t l = 0; l < views.size(); ++l) {
-                const Light& light = views[l].light;
-                const TsisScatterLight sl = {
-                    light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
-                    light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
                 const glm::mat4 toWorld = glm::inverse(views[l].viewProj);
                 cl_float16 to;
                 std::copy_n(glm::value_ptr(toWorld), 16, to.s);
                 cl::Kernel& kernel = scatter.depthOnly ? fromDepth_ : drawn_;
                 setKernelArgs(kernel, points.xyz, normals_.buffer, interpolation_.order(),
                               evaluated, eye, mediaBuffer, static_cast<int>(media.size()),
-                              lightMapInfo(views[l], views[l].resolution), sl, views_[l].buffer, to,
+                              lightMapInfo(views[l], views[l].resolution),
+                              scatterLight(views[l].light), views_[l].buffer, to,
                               kSingleScatterStrata, l > 0 ? 1 : 0, out);
                 // TSIS_SCATTER_LANES points an item; small groups, so both
                 // cores get a share of a few thousand points.

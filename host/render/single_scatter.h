@@ -49,6 +49,8 @@ int scatterViewResolution(const FrameContext& ctx);
 
 // The kernel's medium: σs′, σt′, η and π over the exit term's scale.
 TsisScatterMedium scatterMedium(const Material& m, ExitTerm exit);
+// The kernel's light.
+TsisScatterLight scatterLight(const Light& light);
 
 // Where the light's ray to an interior point enters: the surface point and
 // its outward normal, or lit = false where no light of the point's medium

@@ -196,6 +196,11 @@ TEST(SingleScatterHost, AddedForEveryProfileMethodButNotVolumetric) {
 class SingleScatterKernelTest : public test::ClTest {
   protected:
     cl::Kernel kernel = rt.kernel("single_scatter.cl", "tsis_single_scatter");
+    // Both tests' eye and lights: a directional and a point light.
+    const glm::vec3 eye{1.0f, 2.0f, 30.0f};
+    const Light lights[2] = {
+        {Light::Type::Directional, glm::vec3(-0.5f, 0.2f, -1.0f), glm::vec3(0.3f, 0.2f, 0.1f)},
+        {Light::Type::Point, glm::vec3(3.0f, 2.0f, 20.0f), glm::vec3(400.0f, 300.0f, 200.0f)}};
 };
 
 // Every output against the host double version on a plane lit from a
@@ -238,10 +243,6 @@ TEST_F(SingleScatterKernelTest, MatchesHostDoubleVersion) {
     }
     points.push_back({{0, 0, 0, 0}});  // no medium
     normals.push_back({{0, 0, 1, 0}});
-    const glm::vec3 eye(1.0f, 2.0f, 30.0f);
-    const Light lights[2] = {
-        {Light::Type::Directional, glm::vec3(-0.5f, 0.2f, -1.0f), glm::vec3(0.3f, 0.2f, 0.1f)},
-        {Light::Type::Point, glm::vec3(3.0f, 2.0f, 20.0f), glm::vec3(400.0f, 300.0f, 200.0f)}};
     const int n = int(points.size()), strata = 3;
     std::vector<cl_float4> base(points.size(), {{0.5f, 0.25f, 0.125f, 0.0f}});
     cl::Buffer out = upload(base);
@@ -258,9 +259,7 @@ TEST_F(SingleScatterKernelTest, MatchesHostDoubleVersion) {
     std::vector<glm::dvec3> want(points.size(), glm::dvec3(0.0));
     for (int l = 0; l < 2; ++l) {
         const Light& light = lights[l];
-        const TsisScatterLight sl = {
-            light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
-            light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
+        const TsisScatterLight sl = scatterLight(light);
         run(kernel, points.size(), pb, nb, ob, n, cl_float4{{eye.x, eye.y, eye.z, 0}}, mb,
             int(media.size()), map, sl, vb, toWorld, strata, 1, out);
         for (size_t k = 0; k < points.size(); ++k) {
@@ -319,10 +318,6 @@ TEST_F(SingleScatterKernelTest, FromDepthMatchesHostDoubleVersion) {
         points.push_back({{float(x), float(y), float(a * x + b * y), k % 8 == 7 ? 2.0f : 1.0f}});
         normals.push_back({{float(normal.x), float(normal.y), float(normal.z), 0.0f}});
     }
-    const glm::vec3 eye(1.0f, 2.0f, 30.0f);
-    const Light lights[2] = {
-        {Light::Type::Directional, glm::vec3(-0.5f, 0.2f, -1.0f), glm::vec3(0.3f, 0.2f, 0.1f)},
-        {Light::Type::Point, glm::vec3(3.0f, 2.0f, 20.0f), glm::vec3(400.0f, 300.0f, 200.0f)}};
     const int n = int(points.size()), strata = kSingleScatterStrata;
     cl::Buffer out = upload(std::vector<cl_float4>(points.size(), {{0, 0, 0, 0}}));
     const cl::Buffer pb = upload(points), nb = upload(normals), mb = upload(media);
@@ -336,9 +331,7 @@ TEST_F(SingleScatterKernelTest, FromDepthMatchesHostDoubleVersion) {
     std::vector<glm::dvec3> want(points.size(), glm::dvec3(0.0));
     for (int l = 0; l < 2; ++l) {
         const Light& light = lights[l];
-        const TsisScatterLight sl = {
-            light.vec.x, light.vec.y, light.vec.z, light.type == Light::Type::Point ? 0 : 1,
-            light.rgb.x, light.rgb.y, light.rgb.z, 0.0f};
+        const TsisScatterLight sl = scatterLight(light);
         run(fromDepth, points.size(), pb, nb, ob, n, cl_float4{{eye.x, eye.y, eye.z, 0}}, mb,
             int(media.size()), map, sl, vb, to, strata, l, out);
         for (size_t k = 0; k < points.size(); ++k) {
