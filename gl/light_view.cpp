@@ -17,11 +17,12 @@ void setProjection(LightView& lv, const Light& light, float radius, int resoluti
     lv.resolution = resolution;
 }
 
-// `lv`'s target as two RGBA32F maps of resolution², made when it has another shape.
-void ensureMaps(LightView& lv, int resolution, bool depth) {
-    if (!lv.target || lv.target->width() != resolution)
-        lv.target = std::make_unique<RenderTarget>(resolution, resolution,
-                                                   std::vector<GLenum>(2, GL_RGBA32F), depth);
+// `lv`'s target as `maps` RGBA32F maps of resolution², made when it has
+// another shape.
+void ensureMaps(LightView& lv, int resolution, int maps, bool depth) {
+    if (!lv.target || lv.target->width() != resolution || lv.target->colorCount() != maps)
+        lv.target = std::make_unique<RenderTarget>(
+            resolution, resolution, std::vector<GLenum>(size_t(maps), GL_RGBA32F), depth);
 }
 
 }  // namespace
@@ -35,14 +36,15 @@ LightView makeLightView(const Light& light, float radius, int resolution, bool m
 void updateLightView(LightView& lv, const Light& light, float radius, int resolution, bool maps) {
     setProjection(lv, light, radius, resolution);
     if (maps)
-        ensureMaps(lv, resolution, false);
+        ensureMaps(lv, resolution, 2, false);
     else
         lv.target.reset();
 }
 
-void updateScatterView(LightView& lv, const Light& light, float radius, int resolution) {
+void updateScatterView(LightView& lv, const Light& light, float radius, int resolution,
+                       bool drawn) {
     setProjection(lv, light, radius, resolution);
-    ensureMaps(lv, resolution, true);
+    ensureMaps(lv, resolution, drawn ? 2 : 0, true);
 }
 
 ShadowMapArray::~ShadowMapArray() {

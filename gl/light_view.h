@@ -21,7 +21,8 @@ struct LightView {
     int resolution = 0;     // texels a side
     // With maps: flux and position; no depth of its own, the shadow map is
     // drawn into the light's layer of ShadowMapArray. Null without. A
-    // scatter view's (updateScatterView): position and normal, with depth.
+    // scatter view's (updateScatterView): position and normal, with depth,
+    // or depth alone.
     std::unique_ptr<RenderTarget> target;
 };
 
@@ -36,8 +37,11 @@ void updateLightView(LightView& view, const Light& light, float boundingRadius, 
                      bool maps);
 // The single-scattering term's view of `light` (render/single_scatter.h):
 // the same projection at a resolution of its own, into a target of its own
-// with the surface's position and normal (w = the medium tag) and a depth.
-void updateScatterView(LightView& view, const Light& light, float boundingRadius, int resolution);
+// with a depth and, `drawn` (ScatterViewPass::run), the surface's position
+// and normal (w = the medium tag); without, the depth alone
+// (ScatterViewPass::copyDepth).
+void updateScatterView(LightView& view, const Light& light, float boundingRadius, int resolution,
+                       bool drawn);
 
 // The lights' shadow maps as one depth texture array (a layer per light), the
 // form the shaders sample; the light views draw into their layers.

@@ -44,7 +44,7 @@ class RenderTarget {
     // Attachment i as RGBA bytes (for GL_RGBA8), GL order.
     std::vector<unsigned char> readRGBA8(int i) const;
     // The depth texture as window depths in [0, 1] (1: nothing drawn), GL
-    // order; a target made with depth only.
+    // order; a target made with a depth.
     std::vector<float> readDepth() const;
 
     size_t bytesPerTexel(int i) const;

@@ -246,7 +246,7 @@ RasterHandles RasterPasses::addPasses(FrameGraph& graph, const FrameContext& ctx
                     },
                     [&](size_t i) {
                         updateScatterView(scatterViews_[i], lights[i], ctx.boundingRadius,
-                                          resolution);
+                                          resolution, !derived);
                     });
                 if (!changed.empty()) {
                     if (derived)

@@ -49,8 +49,8 @@ class ScatterViewTest : public ::testing::Test {
         LightViewPass lightPass;
         lightPass.run(gpu, shadows, materials());
         std::vector<LightView> drawn(1), derived(1);
-        updateScatterView(drawn[0], light, radius, resolution);
-        updateScatterView(derived[0], light, radius, resolution);
+        updateScatterView(drawn[0], light, radius, resolution, true);
+        updateScatterView(derived[0], light, radius, resolution, false);
         ScatterViewPass pass;
         pass.run(gpu, drawn, materials(), {0});
         pass.copyDepth(lightPass.shadows(), derived, {0});
