@@ -1,6 +1,7 @@
 /* Several output points in the lanes of one vector (float8 or float16), for
  * kernels that sum a tabulated profile over a list of weighted positions
- * (gather.cl: importance samples; flux_tree.cl: flux tree nodes). Define
+ * (gather.cl: importance samples; flux_tree.cl: flux tree nodes;
+ * single_scatter.cl: its points, each lane's own). Define
  * TSIS_LANE_WIDTH (8 or 16) before including. OpenCL C only.
  *
  * Vectors are built from, and split into, named per-lane values, never
@@ -19,6 +20,9 @@
 #define profile_indexW tsis_profile_index16
 #define TSIS_LANES(F) \
     F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7) F(8) F(9) F(a) F(b) F(c) F(d) F(e) F(f)
+#define TSIS_VEC_OF(P)                                                                            \
+    (float16)(P##0, P##1, P##2, P##3, P##4, P##5, P##6, P##7, P##8, P##9, P##a, P##b, P##c, P##d, \
+              P##e, P##f)
 #define TSIS_VEC(P, m)                                                                        \
     (float16)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), \
               TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m), \
@@ -29,13 +33,15 @@
 #define intW int8
 #define profile_indexW tsis_profile_index8
 #define TSIS_LANES(F) F(0) F(1) F(2) F(3) F(4) F(5) F(6) F(7)
+#define TSIS_VEC_OF(P) (float8)(P##0, P##1, P##2, P##3, P##4, P##5, P##6, P##7)
 #define TSIS_VEC(P, m)                                                                       \
     (float8)(TSIS_LANE(P, 0, m), TSIS_LANE(P, 1, m), TSIS_LANE(P, 2, m), TSIS_LANE(P, 3, m), \
              TSIS_LANE(P, 4, m), TSIS_LANE(P, 5, m), TSIS_LANE(P, 6, m), TSIS_LANE(P, 7, m))
 #else
 #error "TSIS_LANE_WIDTH must be 8 or 16"
 #endif
-/* (P, 0, x) -> P0.x; a helper because "P##0.x" would paste a number token. */
+/* TSIS_VEC_OF(P): the lanes' scalars P0, P1, ... as one vector.
+ * (P, 0, x) -> P0.x; a helper because "P##0.x" would paste a number token. */
 #define TSIS_LANE(P, k, m) P##k.m
 
 /* The lanes' points from `points` starting at `base`; past `count` lanes

@@ -27,6 +27,9 @@
 #include "light_map.h"
 #include "single_scatter_shared.h"
 
+#define TSIS_LANE_WIDTH TSIS_SCATTER_LANES
+#include "lanes.h"
+
 typedef float8 lf; /* one value a lane */
 typedef int8 li;   /* a lane mask: -1 true, 0 false */
 typedef struct {
@@ -67,15 +70,13 @@ static inline l3 l3_select(const l3 a, const l3 b, const li m) {
     return l3_make(select(a.x, b.x, m), select(a.y, b.y, m), select(a.z, b.z, m));
 }
 
-/* p[index] in each lane where ok, else `none`. */
+/* p[index] in each lane where ok, else `none` (named per-lane values, as
+ * lanes.h builds its vectors). */
+#define TSIS_SCATTER_GATHER(k) const float g##k = ok.s##k ? p[index.s##k] : none;
 static inline lf tsis_gather(const __global float* p, const li index, const li ok,
                              const float none) {
-    int at[8], use[8];
-    float v[8];
-    vstore8(index, 0, at);
-    vstore8(ok, 0, use);
-    for (int k = 0; k < 8; ++k) v[k] = use[k] ? p[at[k]] : none;
-    return vload8(0, v);
+    TSIS_LANES(TSIS_SCATTER_GATHER)
+    return TSIS_VEC_OF(g);
 }
 
 #ifdef TSIS_SCATTER_FROM_DEPTH
@@ -182,6 +183,16 @@ static inline lf tsis_scatter_stratum(const lf sigma_t, const lf a, const lf b, 
     return sum;
 }
 
+#define TSIS_SCATTER_LOAD(k)                               \
+    const int j##k = order[min(first + 0x##k, count - 1)]; \
+    const float4 q##k = points[j##k];                      \
+    const float4 m##k = normals[j##k];                     \
+    const TsisScatterMedium md##k = media[clamp((int)(q##k.w + 0.5f) - 1, 0, media_count - 1)];
+#define TSIS_SCATTER_STORE(k)                                   \
+    if (first + 0x##k < count)                                  \
+        out[j##k] = (accumulate ? out[j##k] : (float4)(0.0f)) + \
+                    (valid.s##k ? (float4)(r0.s##k, r1.s##k, r2.s##k, 0.0f) : (float4)(0.0f));
+
 /* At the `count` points order[] names (the rest interpolated after:
  * render/sparse_pixels.h), TSIS_SCATTER_LANES of them a work item. */
 kernel void tsis_single_scatter(const __global float4* points, const __global float4* normals,
@@ -192,47 +203,25 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
                                 const int strata, const int accumulate, __global float4* out) {
     const int first = (int)get_global_id(0) * TSIS_SCATTER_LANES;
     if (first >= count) return;
-    /* The lanes' points (a lane past the end repeats the first, unwritten). */
-    int j[8];
-    float px[8], py[8], pz[8], tg[8], nx[8], ny_[8], nz[8];
-    float ss[3][8], st[3][8], eta_[8], to_rad[8];
-    for (int k = 0; k < 8; ++k) {
-        j[k] = order[first + k < count ? first + k : first];
-        const float4 pt = points[j[k]], nm = normals[j[k]];
-        px[k] = pt.x;
-        py[k] = pt.y;
-        pz[k] = pt.z;
-        tg[k] = pt.w;
-        nx[k] = nm.x;
-        ny_[k] = nm.y;
-        nz[k] = nm.z;
-        const int m = clamp((int)(pt.w + 0.5f) - 1, 0, media_count - 1);
-        const TsisScatterMedium md = media[m];
-        ss[0][k] = md.ss_r;
-        ss[1][k] = md.ss_g;
-        ss[2][k] = md.ss_b;
-        st[0][k] = md.st_r;
-        st[1][k] = md.st_g;
-        st[2][k] = md.st_b;
-        eta_[k] = md.eta;
-        to_rad[k] = md.to_radiosity;
-    }
-    const lf tag = vload8(0, tg);
+    /* The lanes' points, normals and media (a lane past the end repeats the
+     * last point, unwritten). */
+    TSIS_LANES(TSIS_SCATTER_LOAD)
+    const lf tag = TSIS_VEC(q, w);
     const li medium = convert_int8(tag + 0.5f) - 1;
     const li valid = (medium >= 0) & (medium < media_count);
-    const l3 xo = l3_make(vload8(0, px), vload8(0, py), vload8(0, pz));
-    l3 n = l3_normalize(l3_make(vload8(0, nx), vload8(0, ny_), vload8(0, nz)));
+    const l3 xo = l3_make(TSIS_VEC(q, x), TSIS_VEC(q, y), TSIS_VEC(q, z));
+    l3 n = l3_normalize(l3_make(TSIS_VEC(m, x), TSIS_VEC(m, y), TSIS_VEC(m, z)));
     const l3 v = l3_normalize(l3_sub(l3_splat(eye.xyz), xo));
     lf cos_o = l3_dot(n, v);
     /* As the composite: the side that faces the eye. */
     n = l3_select(n, l3_scale(n, (lf)(-1.0f)), isless(cos_o, (lf)(0.0f)));
     cos_o = fabs(cos_o);
-    const lf inv_eta = 1.0f / vload8(0, eta_);
-    const lf eta = vload8(0, eta_);
+    const lf eta = TSIS_VEC(md, eta);
+    const lf inv_eta = 1.0f / eta;
     const lf cos_to = sqrt(fmax(1.0f - inv_eta * inv_eta * (1.0f - cos_o * cos_o), 0.0f));
     /* The camera ray refracted into the medium. */
     const l3 wt = l3_normalize(l3_mad(n, inv_eta * cos_o - cos_to, l3_scale(v, -inv_eta)));
-    const lf sigma_t[3] = {vload8(0, st[0]), vload8(0, st[1]), vload8(0, st[2])};
+    const lf sigma_t[3] = {TSIS_VEC(md, st_r), TSIS_VEC(md, st_g), TSIS_VEC(md, st_b)};
     const lf sigma = fmin(sigma_t[0], fmin(sigma_t[1], sigma_t[2]));
     const float3 light_vec = (float3)(light.x, light.y, light.z);
     const float3 e_light = (float3)(light.r, light.g, light.b);
@@ -310,13 +299,9 @@ kernel void tsis_single_scatter(const __global float4* points, const __global fl
                 tsis_scatter_stratum(sigma_t[ch], a_k, b, sm, h2, c, cos_t) * gain * e_rgb[ch],
                 live);
     }
-    const lf scale = inv_eta * inv_eta / (4.0f * M_PI_F) * vload8(0, to_rad);
-    float r[3][8];
-    for (int ch = 0; ch < 3; ++ch) vstore8(sum[ch] * vload8(0, ss[ch]) * scale, 0, r[ch]);
-    int use[8];
-    vstore8(valid, 0, use);
-    for (int k = 0; k < 8 && first + k < count; ++k) {
-        const float4 base = accumulate ? out[j[k]] : (float4)(0.0f);
-        out[j[k]] = use[k] ? base + (float4)(r[0][k], r[1][k], r[2][k], 0.0f) : base;
-    }
+    const lf scale = inv_eta * inv_eta / (4.0f * M_PI_F) * TSIS_VEC(md, to_radiosity);
+    const lf r0 = sum[0] * TSIS_VEC(md, ss_r) * scale;
+    const lf r1 = sum[1] * TSIS_VEC(md, ss_g) * scale;
+    const lf r2 = sum[2] * TSIS_VEC(md, ss_b) * scale;
+    TSIS_LANES(TSIS_SCATTER_STORE)
 }
