@@ -225,13 +225,15 @@ void SingleScatter::addPass(FrameGraph& graph, const FrameContext& ctx, const Ra
             if (scatter.version != viewsOf_ || views_.size() != views.size()) {
                 views_.resize(views.size());
                 for (size_t l = 0; l < views.size(); ++l) {
+                    const RenderTarget& target = *views[l].target;
                     std::vector<float> view;
                     if (scatter.depthOnly) {
-                        view = views[l].target->readDepth();
+                        view = target.readDepth();
                     } else {
-                        view = views[l].target->readRGBA(0);
-                        const std::vector<float> normals = views[l].target->readRGBA(1);
-                        view.insert(view.end(), normals.begin(), normals.end());
+                        const size_t texels = size_t(target.width()) * size_t(target.height());
+                        view.resize(texels * 8);
+                        target.readRGBA(0, view.data());
+                        target.readRGBA(1, view.data() + texels * 4);
                     }
                     const size_t bytes = view.size() * sizeof(float);
                     queue.enqueueWriteBuffer(views_[l].reserve(cl_.context(), bytes), CL_TRUE, 0,
